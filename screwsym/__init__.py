@@ -1,0 +1,82 @@
+r"""screwsym: symbolic screw theory on SymPy.
+
+Convention, used everywhere: a screw is written in the book's ray order,
+direction part first, dual (moment) part second, ``$ = (S; S0)``: a line
+vector ``(S; S_0)``, a twist ``(omega; v_O)``, a wrench ``(f; C_O)``.
+The reference is Chapter 1 of Huang, Li & Ding, *Theory of Parallel
+Mechanisms* (Springer 2013); docstrings cite its equation numbers.
+
+>>> from screwsym import Screw
+>>> s = Screw([1, 1, 0], [1, 0, 0])
+>>> s.pitch, s.axis
+(1/2, LineVector([1, 1, 0], [1/2, -1/2, 0]))
+"""
+
+import importlib
+
+from ._version import __version__
+from .line import (
+    CommonNormal,
+    LineVector,
+    common_normal,
+    contains,
+    is_coplanar,
+    mutual_moment,
+)
+from .printing import init_printing
+from .screw import (
+    Screw,
+    axis,
+    classify,
+    decompose,
+    direction_cosines,
+    distance_to_origin,
+    foot,
+    is_reciprocal,
+    pitch,
+    reciprocal_product,
+    shift_origin,
+)
+from .twist import Twist
+from .vectors import vector
+from .wrench import Wrench, power
+
+__all__ = [
+    "__version__",
+    "Screw",
+    "LineVector",
+    "Twist",
+    "Wrench",
+    "CommonNormal",
+    "vector",
+    "pitch",
+    "axis",
+    "foot",
+    "decompose",
+    "classify",
+    "shift_origin",
+    "reciprocal_product",
+    "is_reciprocal",
+    "distance_to_origin",
+    "direction_cosines",
+    "contains",
+    "mutual_moment",
+    "is_coplanar",
+    "common_normal",
+    "power",
+    "init_printing",
+]
+
+# Subpackages that pull in more (the book registry, code generation, plotting)
+# load on first use, so ``import screwsym`` stays light.
+_LAZY_MODULES = ("book", "cli", "codegen", "numeric", "plot")
+
+
+def __getattr__(name: str):
+    if name in _LAZY_MODULES:
+        return importlib.import_module(f".{name}", __name__)
+    if name == "lambdify":
+        from .codegen import lambdify
+
+        return lambdify
+    raise AttributeError(f"module 'screwsym' has no attribute {name!r}")
