@@ -31,7 +31,10 @@ __all__ = [
 
 def _describe(value: Any) -> str:
     """A short description of ``value`` for error messages."""
-    text = repr(value)
+    shape = getattr(value, "shape", None)
+    if shape is not None and not isinstance(value, Basic) or isinstance(value, MatrixBase):
+        return f"{type(value).__name__} of shape {tuple(shape)}"
+    text = " ".join(repr(value).split())
     if len(text) > 60:
         text = text[:57] + "..."
     return f"{type(value).__name__} {text}"
@@ -65,10 +68,14 @@ def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:
             f"{name}: expected a real number or SymPy expression, got {_describe(value)} "
             "(strings are never evaluated)"
         )
-    if isinstance(value, bool) or isinstance(value, (MatrixBase, list, tuple)) or (
-        _shape_of(value) not in (None, ())
+    if (
+        isinstance(value, bool)
+        or isinstance(value, (MatrixBase, list, tuple))
+        or (_shape_of(value) not in (None, ()))
     ):
-        raise TypeError(f"{name}: expected a real number or SymPy expression, got {_describe(value)}")
+        raise TypeError(
+            f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
+        )
     try:
         expr = sympify(value, strict=True)
     except SympifyError:
@@ -76,7 +83,9 @@ def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:
             f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
         ) from None
     if not isinstance(expr, Expr):
-        raise TypeError(f"{name}: expected a real number or SymPy expression, got {_describe(value)}")
+        raise TypeError(
+            f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
+        )
     if expr.is_extended_real is False:
         raise ValueError(f"{name}: expected a real value, got {expr}")
     if nonzero and is_zero(expr) is True:
@@ -97,8 +106,10 @@ def check_vector(value: Any, name: str) -> ImmutableMatrix:
     ...
     ValueError: r: expected a 3-vector, got shape (2,)
     """
-    if isinstance(value, (str, bytes)) or isinstance(value, Basic) and not isinstance(
-        value, MatrixBase
+    if (
+        isinstance(value, (str, bytes))
+        or isinstance(value, Basic)
+        and not isinstance(value, MatrixBase)
     ):
         raise TypeError(
             f"{name}: expected a 3-vector (list, tuple or SymPy Matrix), got {_describe(value)}"
@@ -170,8 +181,10 @@ def check_six(value: Any, name: str) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     shape = _shape_of(value)
     if shape not in ((6,), (6, 1), (1, 6)):
         raise ValueError(f"{name}: expected a 6-vector (S; S0), got shape {shape}")
-    items = list(value) if isinstance(value, MatrixBase) else list(
-        value.reshape(6) if hasattr(value, "reshape") else value
+    items = (
+        list(value)
+        if isinstance(value, MatrixBase)
+        else list(value.reshape(6) if hasattr(value, "reshape") else value)
     )
     entries = [check_scalar(item, f"{name}[{i}]") for i, item in enumerate(items)]
     return ImmutableMatrix(3, 1, entries[:3]), ImmutableMatrix(3, 1, entries[3:])

@@ -27,7 +27,6 @@ from __future__ import annotations
 from typing import Any
 
 from sympy import Basic, Expr, ImmutableMatrix, S, oo, sqrt, zeros
-from sympy.matrices import MatrixBase
 
 from ._decide import is_zero, is_zero_vector
 from ._validation import check_scalar, check_screw, check_six, check_vector
@@ -92,6 +91,11 @@ class Screw(Basic):
     """
 
     __slots__ = ()
+
+    # above Matrix's 10.01, so ``Matrix * screw`` defers to Screw.__rmul__ (which refuses)
+    _op_priority = 20.0
+    # NumPy defers to Screw.__rmul__ (which refuses arrays) instead of broadcasting over it
+    __array_ufunc__ = None
 
     #: names of the two parts, used in error messages and printing
     _part_names: tuple[str, str] = ("S", "S0")
@@ -235,8 +239,11 @@ class Screw(Basic):
 
     def __mul__(self, k):
         """``lambda $ = (lambda S; lambda S0)`` (1.44)."""
-        if isinstance(k, (Screw, MatrixBase)) or hasattr(k, "shape"):
-            return NotImplemented
+        if isinstance(k, Screw):
+            raise TypeError(
+                "cannot multiply two screws with '*'; for the reciprocal product (1.45) "
+                "use reciprocal_product(s1, s2)"
+            )
         k = check_scalar(k, "k")
         cls = type(self)
         if cls is not self._general_class() and is_zero(k) is True:
@@ -246,8 +253,6 @@ class Screw(Basic):
     __rmul__ = __mul__
 
     def __truediv__(self, k):
-        if isinstance(k, (Screw, MatrixBase)) or hasattr(k, "shape"):
-            return NotImplemented
         return self * (S.One / check_scalar(k, "k", nonzero=True))
 
     # ------------------------------------------------ SymPy integration
@@ -371,9 +376,7 @@ def _axis_moment(s: Screw) -> ImmutableMatrix:
 
 def _require_axis(s: Screw, what: str) -> None:
     if _decided_couple(s):
-        raise ValueError(
-            f"s: a couple (0; C) has no {what}: its axis lies at infinity; got {s}"
-        )
+        raise ValueError(f"s: a couple (0; C) has no {what}: its axis lies at infinity; got {s}")
 
 
 def axis(s: ScrewLike):

@@ -88,4 +88,4 @@ class Twist(Screw):
         >>> Twist.rotation(1, [0, 0, 1], [0, 0, 0]).velocity_at([1, 0, 0]).T
         Matrix([[0, 1, 0]])
         """
-        return shift_origin(self, point).S0
+        return shift_origin(self, check_vector(point, "point")).S0

@@ -70,7 +70,7 @@ class Wrench(Screw):
 
     def moment_about(self, point: VectorLike) -> ImmutableMatrix:
         r"""The moment of the wrench about ``point``: ``C_A = C_O - A x f`` (1.32)."""
-        return shift_origin(self, point).S0
+        return shift_origin(self, check_vector(point, "point")).S0
 
 
 def power(twist: ScrewLike, wrench: ScrewLike) -> Expr:
@@ -83,4 +83,6 @@ def power(twist: ScrewLike, wrench: ScrewLike) -> Expr:
     >>> power(Twist.translation([1, 0, 0]), Wrench.force([3, 0, 0], [0, 0, 0]))
     3
     """
-    return reciprocal_product(check_screw(twist, "twist", Twist), check_screw(wrench, "wrench", Wrench))
+    return reciprocal_product(
+        check_screw(twist, "twist", Twist), check_screw(wrench, "wrench", Wrench)
+    )
