@@ -212,6 +212,22 @@ class Screw(Basic):
         """Whether the reciprocal product vanishes; see :func:`is_reciprocal`."""
         return is_reciprocal(self, other)
 
+    def equals(self, other: ScrewLike) -> bool | None:
+        """Whether ``self`` and ``other`` are the same screw mathematically.
+
+        ``==`` compares structure, as everywhere in SymPy; ``equals`` decides
+        whether all six components of the difference vanish: True, False, or
+        None when the symbols do not decide.  The classes may differ.
+
+        >>> from sympy import symbols
+        >>> x = symbols("x", real=True)
+        >>> a, b = Screw([x*(x + 1), 0, 0], [0, 0, 0]), Screw([x**2 + x, 0, 0], [0, 0, 0])
+        >>> a == b, a.equals(b)
+        (False, True)
+        """
+        other = check_screw(other, "other")
+        return is_zero_vector(self.as_matrix() - other.as_matrix())
+
     # ------------------------------------------------------------ algebra
     def _general_class(self) -> type:
         """The class of a linear combination: a line vector's is the general screw."""

@@ -311,3 +311,11 @@ def test_arithmetic_refusals():
         s + 1
     with pytest.raises(TypeError):
         s + [1, 2, 3, 4, 5, 6]
+
+
+def test_equals_is_mathematical_equality():
+    a, b = Screw([x * (x + 1), 0, 0], [0, 0, 0]), Screw([x**2 + x, 0, 0], [0, 0, 0])
+    assert a != b and a.equals(b) is True
+    assert a.equals(Screw([x, 0, 0], [0, 0, 0])) is None
+    assert Screw([1, 0, 0], [0, 0, 0]).equals(LineVector([1, 0, 0], [0, 0, 0])) is True
+    assert Screw([1, 0, 0], [0, 0, 0]).equals([2, 0, 0, 0, 0, 0]) is False

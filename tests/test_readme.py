@@ -1,0 +1,35 @@
+"""Every snippet of the README runs: its Python blocks are doctests."""
+
+import doctest
+import re
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+
+
+def test_readme_python_snippets_run_and_match_their_output():
+    text = README.read_text(encoding="utf-8")
+    blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
+    assert blocks, "the README has no Python snippets"
+    for block in blocks:
+        assert ">>>" in block, f"a README Python snippet is not a doctest:\n{block}"
+    result = doctest.testfile(
+        str(README),
+        module_relative=False,
+        optionflags=doctest.NORMALIZE_WHITESPACE | doctest.ELLIPSIS,
+        verbose=False,
+    )
+    assert result.attempted > 0
+    assert result.failed == 0
+
+
+def test_readme_quickstart_commands_are_what_ci_runs():
+    text = README.read_text(encoding="utf-8")
+    commands = re.findall(r"```bash\n(.*?)```", text, flags=re.S)
+    assert commands[:2] == [
+        'pip install -e . && screwsym verify\n',
+        'pip install -e ".[test]" && python -m pytest\n',
+    ]
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    assert 'pip install -q -e ".[test]"' in ci and "python -m pytest" in ci
