@@ -1,0 +1,241 @@
+r"""Vectorised numeric versions of the chapter's operations.
+
+Explanation
+===========
+
+Each function here is *generated* by :func:`screwsym.lambdify` from the
+symbolic operation of the core applied to generic symbols, for instance
+``pitch(Screw(vector('S'), vector('S0')))``, when this module is imported.
+The numeric and the symbolic results therefore cannot drift apart: change
+the formula in :mod:`screwsym.screw` and the numbers follow.
+
+Array convention: a screw is an array of shape ``(..., 6)`` in the book's
+order ``(S; S0)`` (a twist ``(omega; v_O)``, a wrench ``(f; C_O)``), a point
+or vector ``(..., 3)``, a scalar ``(...)``; leading dimensions broadcast as in
+NumPy; a screw result comes back ``(..., 6)``.  Wrong trailing shapes,
+batch shapes that do not broadcast and complex input raise ``TypeError`` or
+``ValueError`` naming the argument (see :mod:`screwsym.codegen`).
+
+Where a formula divides by ``S . S`` the result follows the symbolic
+function where it has a value and IEEE 754 otherwise, and it never warns:
+the pitch of a couple ``(0; C)`` is ``inf`` (the symbolic
+:func:`screwsym.pitch` gives ``oo``), of the zero screw ``nan`` (the
+symbolic one raises); the foot point of a couple, whose axis lies at
+infinity, is ``nan`` (the symbolic one raises).
+
+The functions here use the ``"numpy"`` back end.  :func:`functions` gives
+the same set for another back end, e.g. ``functions("numba")`` (``pip
+install 'screwsym[fast]'``) for one fused compiled loop per call.
+
+Examples
+========
+
+>>> import numpy as np
+>>> from screwsym import numeric
+>>> numeric.pitch(np.array([1.0, 1.0, 0.0, 1.0, 0.0, 0.0]))        # Example 1.4
+np.float64(0.5)
+>>> screws = np.array([[1.0, 0, 0, 2, 0, 0], [0, 0, 0, 0, 0, 5]])
+>>> numeric.pitch(screws)                                  # a screw and a couple
+array([ 2., inf])
+>>> numeric.line_through(np.zeros(3), np.array([[1.0, 0, 0], [0, 0, 2]]))
+array([[1., 0., 0., 0., 0., 0.],
+       [0., 0., 2., 0., 0., 0.]])
+
+See Also
+========
+
+screwsym.codegen.lambdify
+"""
+
+from __future__ import annotations
+
+import types
+from collections.abc import Callable
+
+from sympy import Eq, Ne, Piecewise, nan
+
+from . import screw as _core
+from .codegen import lambdify
+from .line import LineVector
+from .screw import Screw
+from .twist import Twist
+from .vectors import vector
+from .wrench import Wrench
+
+__all__ = [
+    "pitch",
+    "foot",
+    "reciprocal_product",
+    "shift_origin",
+    "line_through",
+    "velocity_at",
+    "moment_about",
+    "functions",
+    "NAMES",
+]
+
+_DOCS = {
+    "pitch": r"""The pitch ``h = S . S0 / S . S`` (1.34) of screws ``(..., 6)``; returns ``(...)``.
+
+    Generated from :func:`screwsym.pitch`.  A couple ``(0; C)`` gives
+    ``inf`` (symbolically ``oo``), the zero screw ``nan`` (symbolically an
+    error).
+
+    Examples
+    ========
+
+    >>> import numpy as np
+    >>> from screwsym.numeric import pitch
+    >>> pitch(np.array([[1.0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 0, 1], [0, 0, 0, 0, 0, 0]]))
+    array([ 1., inf, nan])
+    """,
+    "foot": r"""The axis point nearest the origin, ``P = S x S0 / S . S`` (1.16): ``(..., 6)`` -> ``(..., 3)``.
+
+    Generated from :func:`screwsym.foot`.  A couple has no axis in finite
+    space: its foot point is ``nan`` (symbolically an error).
+
+    Examples
+    ========
+
+    >>> import numpy as np
+    >>> from screwsym.numeric import foot
+    >>> foot(np.array([1.0, 1, 0, 1, 0, 0]))               # Example 1.4
+    array([ 0. ,  0. , -0.5])
+    """,
+    "reciprocal_product": r"""The reciprocal product ``S1 . S2^0 + S2 . S1^0`` (1.45) of two screw arrays.
+
+    Generated from :func:`screwsym.reciprocal_product`; ``(..., 6)`` and
+    ``(..., 6)`` (batch shapes broadcast) -> ``(...)``.
+
+    Examples
+    ========
+
+    >>> import numpy as np
+    >>> from screwsym.numeric import reciprocal_product
+    >>> reciprocal_product(np.array([1.0, 0, 0, 0, 0, 0]), np.array([0.0, 1, 0, 0, 0, 1]))
+    np.float64(0.0)
+    """,
+    "shift_origin": r"""The screw with its dual part taken about ``A``: ``(S; S0 - A x S)`` (1.32).
+
+    Generated from :func:`screwsym.shift_origin`; screws ``(..., 6)`` and
+    points ``(..., 3)`` -> ``(..., 6)``.
+
+    Examples
+    ========
+
+    >>> import numpy as np
+    >>> from screwsym.numeric import shift_origin
+    >>> shift_origin(np.array([1.0, 0, 0, 2, 0, -1]), np.array([0.0, 1, 0]))
+    array([1., 0., 0., 2., 0., 0.])
+    """,
+    "line_through": r"""The line through ``A`` and ``B``, ``(B - A; A x (B - A))`` (1.1, 1.9).
+
+    Generated from :meth:`screwsym.LineVector.through`; points ``(..., 3)``
+    -> line vectors ``(..., 6)``.  ``A = B`` gives the zero screw (the
+    symbolic constructor raises).
+
+    Examples
+    ========
+
+    >>> import numpy as np
+    >>> from screwsym.numeric import line_through
+    >>> line_through(np.array([1.0, 0, 0]), np.array([1.0, 1, 0]))
+    array([0., 1., 0., 0., 0., 1.])
+    """,
+    "velocity_at": r"""The velocity ``v_P = v_O + omega x P`` of the body point at ``point``.
+
+    Generated from :meth:`screwsym.Twist.velocity_at`; twists ``(omega;
+    v_O)`` ``(..., 6)`` and points ``(..., 3)`` -> ``(..., 3)``.
+
+    Examples
+    ========
+
+    >>> import numpy as np
+    >>> from screwsym.numeric import velocity_at
+    >>> velocity_at(np.array([0.0, 0, 1, 0, 0, 0]), np.array([1.0, 0, 0]))
+    array([0., 1., 0.])
+    """,
+    "moment_about": r"""The moment ``C_A = C_O - A x f`` of a wrench about ``point`` (1.32).
+
+    Generated from :meth:`screwsym.Wrench.moment_about`; wrenches ``(f;
+    C_O)`` ``(..., 6)`` and points ``(..., 3)`` -> ``(..., 3)``.
+
+    Examples
+    ========
+
+    >>> import numpy as np
+    >>> from screwsym.numeric import moment_about
+    >>> moment_about(np.array([0.0, 0, -10, 0, 10, 0]), np.array([1.0, 0, 0]))
+    array([0., 0., 0.])
+    """,
+}
+
+#: the names of the generated functions, in a fixed order
+NAMES: tuple[str, ...] = tuple(_DOCS)
+
+
+def _definitions() -> dict[str, tuple[list, object, list[str]]]:
+    """Each function as ``(args, expr, parameter names)``, from the core's operations."""
+    s = Screw(vector("S"), vector("S0"))
+    s2 = Screw(vector("T"), vector("T0"))
+    A, B, P = vector("A"), vector("B"), vector("P")
+    t = Twist(vector("omega"), vector("v"))
+    w = Wrench(vector("f"), vector("C"))
+    SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
+    # Only the general branch is the book's formula; the special cases say
+    # what the symbolic pitch gives for a couple (oo) and that the zero screw
+    # has none (nan here, an error there).
+    pitch_expr = Piecewise(
+        (_core.pitch(Screw.couple(s.S0)), Eq(SS, 0) & Ne(S0S0, 0)),
+        (nan, Eq(SS, 0)),
+        (_core.pitch(s), True),
+    )
+    return {
+        "pitch": ([s], pitch_expr, ["s"]),
+        "foot": ([s], _core.foot(s), ["s"]),
+        "reciprocal_product": ([s, s2], _core.reciprocal_product(s, s2), ["s1", "s2"]),
+        "shift_origin": ([s, A], _core.shift_origin(s, A), ["s", "A"]),
+        "line_through": ([A, B], LineVector.through(A, B), ["A", "B"]),
+        "velocity_at": ([t, P], t.velocity_at(P), ["twist", "point"]),
+        "moment_about": ([w, P], w.moment_about(P), ["wrench", "point"]),
+    }
+
+
+_BY_BACKEND: dict[str, types.SimpleNamespace] = {}
+
+
+def functions(backend: str = "numpy") -> types.SimpleNamespace:
+    """The generated functions for ``backend``, as attributes named as in :data:`NAMES`.
+
+    Built on first use and cached; ``functions("numpy").pitch is pitch``.
+
+    Examples
+    ========
+
+    >>> from screwsym import numeric
+    >>> numeric.functions("numpy").pitch is numeric.pitch
+    True
+    >>> sorted(vars(numeric.functions()))[:3]
+    ['foot', 'line_through', 'moment_about']
+    """
+    if backend not in _BY_BACKEND:
+        built = {
+            name: lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
+            for name, (args, expr, names) in _definitions().items()
+        }
+        _BY_BACKEND[backend] = types.SimpleNamespace(**built)
+    return _BY_BACKEND[backend]
+
+
+_numpy = functions("numpy")
+pitch: Callable = _numpy.pitch
+foot: Callable = _numpy.foot
+reciprocal_product: Callable = _numpy.reciprocal_product
+shift_origin: Callable = _numpy.shift_origin
+line_through: Callable = _numpy.line_through
+velocity_at: Callable = _numpy.velocity_at
+moment_about: Callable = _numpy.moment_about
+
+# The generated functions live in their own namespaces, so doctest would not
+# find their examples among this module's members; list them here.
+__test__ = {f"{name}": _DOCS[name] for name in NAMES}
