@@ -168,7 +168,8 @@ def _as_real_array(value: Any, name: str, trailing: tuple[int, ...], what: str) 
             arr = arr.astype(np.float64)
         except (TypeError, ValueError) as exc:
             raise TypeError(
-                f"{name}: expected an array of real numbers, got objects that are not ({exc})"
+                f"{name}: expected an array of real numbers, got {type(value).__name__} "
+                f"holding objects that are not real numbers ({exc})"
             ) from None
     elif kind not in "fiu":
         raise TypeError(f"{name}: expected an array of real numbers, got dtype {arr.dtype}")
