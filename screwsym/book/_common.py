@@ -1,0 +1,80 @@
+"""Shared building blocks of the constructions: symbols, the book's formulas written out.
+
+Constructions call screwsym through the package (``ss.pitch``, ``ss.Screw``),
+so that a replaced operation (a monkeypatched ``screwsym.pitch``) is what the
+entries use.  The book's own formulas are written here independently, in
+components, never by calling the library.
+"""
+
+from __future__ import annotations
+
+from sympy import ImmutableMatrix, Matrix, Symbol, cos, sin, symbols, zeros
+
+import screwsym as ss
+
+__all__ = ["ss", "real", "vec", "book_cross", "book_dot", "Z3", "canonical_pair", "six"]
+
+Z3 = ImmutableMatrix(zeros(3, 1))
+
+
+def real(names: str, **assumptions) -> tuple[Symbol, ...] | Symbol:
+    """Real symbols (``symbols(names, real=True, ...)``)."""
+    return symbols(names, real=True, **assumptions)
+
+
+def vec(name: str) -> ImmutableMatrix:
+    """A generic real 3-vector, through the library's ``vector``."""
+    return ss.vector(name)
+
+
+def book_cross(a, b) -> ImmutableMatrix:
+    """The determinant expansion of ``a x b`` (1.11), written out in components."""
+    return ImmutableMatrix(
+        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    )
+
+
+def book_dot(a, b):
+    """``a . b`` written out."""
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def six(s) -> ImmutableMatrix:
+    """The 6x1 column of a screw, through the library."""
+    return s.as_matrix()
+
+
+def stack(S, S0) -> ImmutableMatrix:
+    """The book's ``(S; S0)`` as a 6x1 column, built by hand."""
+    return ImmutableMatrix(Matrix.vstack(Matrix(S), Matrix(S0)))
+
+
+def canonical_pair():
+    """The canonical pair of unit lines of Section 2 of the transcription, via the library.
+
+    Line 1 is the X axis; line 2 passes through ``a12 k`` along
+    ``(cos alpha12, sin alpha12, 0)``.  Returns ``(L1, L2, a12, alpha12)``.
+    """
+    a12 = symbols("a12", positive=True)
+    alpha = symbols("alpha12", real=True)
+    L1 = ss.LineVector.from_point([0, 0, 0], [1, 0, 0])
+    L2 = ss.LineVector.from_point([0, 0, a12], [cos(alpha), sin(alpha), 0])
+    return L1, L2, a12, alpha
+
+
+def generic_lines():
+    """Two generic lines through points ``p``, ``q`` along ``u``, ``w``, via the library."""
+    p, q, u, w = vec("p"), vec("q"), vec("u"), vec("w")
+    return ss.LineVector.from_point(p, u), ss.LineVector.from_point(q, w), p, q, u, w
+
+
+def x_axis_and_generic_line():
+    """Line 1 the X axis, line 2 generic (through ``q`` along ``w``), via the library.
+
+    Every statement of Section 1.3 is frame independent ((1.22), (1.47)), so
+    placing line 1 on the X axis loses no generality; it keeps the common
+    normal's radicals small enough to decide quickly.
+    """
+    q, w = vec("q"), vec("w")
+    L1 = ss.LineVector.from_point([0, 0, 0], [1, 0, 0])
+    return L1, ss.LineVector.from_point(q, w), q, w

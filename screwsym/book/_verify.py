@@ -1,0 +1,368 @@
+r"""The decision procedure of the book registry: is an expression exactly zero?
+
+Explanation
+===========
+
+:func:`decide_zero` rewrites an expression in fixed, targeted stages and
+accepts it only when a stage reaches exactly ``0``:
+
+1. ``expand``;
+2. ``cancel`` (a rational function in canonical form is zero exactly when its
+   numerator is the zero polynomial);
+3. trigonometry: ``expand_trig``, then the exact rational substitution
+   ``sin a = 2t/(1+t^2)``, ``cos a = (1-t^2)/(1+t^2)`` for every angle ``a``,
+   then ``cancel``;
+4. radicals: the argument of every ``sqrt`` (or other fractional power) is
+   cancelled and factored, so that SymPy splits off the factors it knows to be
+   nonnegative; ``Abs(x)`` of a real ``x`` becomes ``x*sign(x)``, and
+   ``sign(x)**2`` becomes 1 (true wherever ``x != 0``: the same *generic*
+   standard as ``cancel``, which ignores the zeros of denominators);
+   then ``cancel``.
+
+There is no blanket ``simplify`` and no floating tolerance in the verdict.
+
+Every symbolic verdict is then *guarded*: the **original** expression is
+evaluated at seeded random rational points (exactly where that gives a
+rational number, otherwise with 50-digit ``evalf``).  The guard must agree
+with the symbolic verdict, or the check fails; it can only make a verdict
+stricter, never turn a non-zero residual into a pass.
+
+A counter-example is shown non-zero exactly by :func:`decide_nonzero`: the
+expression is evaluated at a rational point and the resulting number is
+proved non-zero (a non-zero rational, or an algebraic number whose minimal
+polynomial is not ``x``).
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import Any
+
+from sympy import (
+    Abs,
+    Basic,
+    Dummy,
+    Expr,
+    Pow,
+    Rational,
+    S,
+    Symbol,
+    cancel,
+    cos,
+    cot,
+    expand,
+    expand_trig,
+    factor,
+    minimal_polynomial,
+    sign,
+    sin,
+    sympify,
+    tan,
+)
+from sympy.matrices import MatrixBase
+
+__all__ = ["Decision", "decide_zero", "decide_nonzero", "provably_nonnegative", "rational_point"]
+
+#: how many random rational points the numeric guard tries
+GUARD_POINTS = 2
+#: digits of the guard's evalf, used only where exact evaluation gives no rational
+GUARD_DIGITS = 50
+_GUARD_ZERO = Rational(1, 10**35)
+
+
+@dataclass(frozen=True)
+class Decision:
+    """The verdict on one expression.
+
+    ``zero`` is the symbolic verdict; ``residual`` is what the staged rewrite
+    left (exactly ``0`` when ``zero`` is true); ``stage`` names the stage that
+    reached zero (or ``'none'``); ``guard`` is True when the numeric guard
+    agrees with the symbolic verdict.
+    """
+
+    zero: bool
+    residual: Expr
+    stage: str
+    guard: bool
+
+    @property
+    def ok(self) -> bool:
+        """True when the expression is zero and the guard agrees."""
+        return self.zero and self.guard
+
+
+# --------------------------------------------------------------- rewriting
+def _has_trig(e: Basic) -> bool:
+    return e.has(sin, cos, tan, cot)
+
+
+def _has_radicals(e: Basic) -> bool:
+    return e.has(Abs, sign) or any(
+        not p.exp.is_Integer for p in e.atoms(Pow) if p.exp.is_Rational
+    )
+
+
+def _trig_stage(e: Expr) -> Expr:
+    """Replace sin/cos of every angle by the exact half-angle rational form."""
+    e = expand_trig(e.rewrite(sin, cos) if e.has(tan, cot) else e)
+    args = {f.args[0] for f in e.atoms(sin, cos)}
+    for a in sorted(args, key=str):
+        t = Dummy("t", real=True)
+        e = e.subs({sin(a): 2 * t / (1 + t**2), cos(a): (1 - t**2) / (1 + t**2)})
+    return cancel(e)
+
+
+def _sign_powers(e: Expr) -> Expr:
+    """``sign(x)**k -> sign(x)**(k mod 2)`` (for ``x != 0``)."""
+    return e.replace(
+        lambda p: p.is_Pow and isinstance(p.base, sign) and p.exp.is_Integer,
+        lambda p: p.base ** (int(p.exp) % 2),
+    )
+
+
+def _radical_stage(e: Expr) -> Expr:
+    """Canonical radicands, ``Abs(x) -> x sign(x)``, ``sign(x)**2 -> 1``, then cancel."""
+
+    def abs_to_sign(x: Expr) -> Expr:
+        return x * sign(x) if x.is_real else Abs(x)
+
+    for _ in range(2):
+        e = e.replace(
+            lambda p: p.is_Pow and p.exp.is_Rational and not p.exp.is_Integer,
+            lambda p: Pow(factor(cancel(p.base)), p.exp),
+        )
+        e = e.replace(Abs, abs_to_sign)
+        e = e.replace(sign, lambda x: sign(expand(x)))
+        e = _sign_powers(expand(e))
+    return _sign_powers(cancel(e))
+
+
+def _rewrite(e: Expr) -> tuple[Expr, str]:
+    e = sympify(e)
+    if e == 0:
+        return S.Zero, "exact"
+    e = expand(e)
+    if e == 0:
+        return S.Zero, "expand"
+    e = cancel(e)
+    if e == 0:
+        return S.Zero, "cancel"
+    if _has_trig(e):
+        e = _trig_stage(e)
+        if e == 0:
+            return S.Zero, "trig"
+    if _has_radicals(e):
+        e = _radical_stage(e)
+        if e == 0:
+            return S.Zero, "radicals"
+        if _has_trig(e):
+            e = _trig_stage(e)
+            if e == 0:
+                return S.Zero, "radicals+trig"
+    return e, "none"
+
+
+# ------------------------------------------------------------ evaluation
+def _symbols(e: Basic) -> list[Symbol]:
+    return sorted((s for s in e.free_symbols if isinstance(s, Symbol)), key=str)
+
+
+def _random_value(sym: Symbol, rng: random.Random) -> Rational:
+    while True:
+        num = rng.randint(-9, 9)
+        den = rng.randint(1, 7)
+        if sym.is_nonnegative or sym.is_positive:
+            num = abs(num)
+        if num == 0 and (sym.is_nonzero or sym.is_positive):
+            continue
+        if num == 0 and rng.random() < 0.7:
+            continue
+        return Rational(num, den)
+
+
+def rational_point(syms: Iterable[Symbol], rng: random.Random) -> dict[Symbol, Rational]:
+    """A random rational value for each symbol, respecting sign assumptions.
+
+    >>> import random
+    >>> from sympy import symbols
+    >>> x, y = symbols("x y", positive=True)
+    >>> all(v > 0 for v in rational_point([x, y], random.Random(1)).values())
+    True
+    """
+    return {s: _random_value(s, rng) for s in syms}
+
+
+def _value(e: Expr, point: dict) -> Expr | None:
+    """``e`` at ``point``, exactly when possible; None where it is undefined."""
+    v = e.xreplace(point)
+    if v.has(S.NaN, S.ComplexInfinity, S.Infinity, S.NegativeInfinity):
+        return None
+    return v
+
+
+def _numeric_is_zero(v: Expr) -> bool | None:
+    """Guard verdict on a number: exact for rationals, 50 digits otherwise."""
+    if v.is_Rational:
+        return v == 0
+    n = v.evalf(GUARD_DIGITS)
+    if not n.is_number or n.has(S.NaN, S.ComplexInfinity):
+        return None
+    return bool(abs(n) < _GUARD_ZERO)
+
+
+def _guard(e: Expr, zero: bool, seed: int) -> bool:
+    """Evaluate the original ``e`` at seeded rational points; agree with ``zero``?"""
+    syms = _symbols(e)
+    rng = random.Random(seed)
+    verdicts = []
+    tries = 0
+    while len(verdicts) < GUARD_POINTS and tries < 12:
+        tries += 1
+        v = _value(e, rational_point(syms, rng))
+        if v is None:
+            continue
+        z = _numeric_is_zero(v)
+        if z is not None:
+            verdicts.append(z)
+        if not syms:
+            break
+    if not verdicts:
+        return False
+    return all(verdicts) if zero else not all(verdicts)
+
+
+def decide_zero(expr: Any, *, seed: int = 0) -> Decision:
+    r"""Decide exactly whether ``expr`` (a scalar or a matrix) is identically zero.
+
+    Explanation
+    ===========
+
+    Runs the staged rewrite of this module; a matrix is zero when every entry
+    is, and its residual is the matrix of the entries' residuals.  The seeded
+    numeric guard must agree with the symbolic verdict.
+
+    Examples
+    ========
+
+    >>> from sympy import symbols, sin, cos, sqrt, Abs
+    >>> x, y = symbols("x y", real=True)
+    >>> d = decide_zero((x + y)**2 - x**2 - 2*x*y - y**2)
+    >>> d.ok, d.residual, d.stage
+    (True, 0, 'expand')
+    >>> decide_zero(sin(x)**2 + cos(x)**2 - 1).stage
+    'trig'
+    >>> decide_zero(Abs(x)*sqrt(y**2 + 1) - sqrt(x**2*y**2 + x**2)).ok
+    True
+    >>> d = decide_zero((x + y)**2 - x**2 - y**2)      # a missing term
+    >>> d.ok, d.residual
+    (False, 2*x*y)
+
+    Parameters
+    ==========
+
+    expr : Expr or Matrix
+        The expression that must vanish.
+    seed : int
+        Seed of the numeric guard's random rational points.
+    """
+    if isinstance(expr, MatrixBase):
+        parts = [decide_zero(x, seed=seed + i) for i, x in enumerate(expr)]
+        from sympy import ImmutableMatrix
+
+        residual = ImmutableMatrix(expr.rows, expr.cols, [p.residual for p in parts])
+        stages = sorted({p.stage for p in parts if p.stage not in ("exact",)}) or ["exact"]
+        return Decision(
+            all(p.zero for p in parts),
+            residual,
+            "+".join(stages),
+            all(p.guard for p in parts),
+        )
+    if not isinstance(expr, Basic):
+        expr = sympify(expr, strict=True)
+    residual, stage = _rewrite(expr)
+    zero = residual == 0
+    return Decision(zero, residual, stage, _guard(expr, zero, seed))
+
+
+def decide_nonzero(
+    expr: Any, *, seed: int = 0, at: dict | None = None
+) -> tuple[bool, dict, Expr]:
+    r"""Prove that ``expr`` is not identically zero by an exact value at a point.
+
+    Returns ``(nonzero, point, value)``: ``point`` is the rational point used
+    (``at`` fixes some of its coordinates) and ``value`` the exact value there.
+    For a matrix, one non-zero entry is enough.
+
+    >>> from sympy import symbols, sqrt
+    >>> x = symbols("x", real=True)
+    >>> decide_nonzero(x**2 + 1, at={x: 0})
+    (True, {x: 0}, 1)
+    >>> decide_nonzero(sqrt(2) - 1)[0], decide_nonzero(x - x)[0]
+    (True, False)
+    """
+    if isinstance(expr, MatrixBase):
+        for i, x in enumerate(expr):
+            res = decide_nonzero(x, seed=seed + i, at=at)
+            if res[0]:
+                return res
+        return False, {}, S.Zero
+    expr = sympify(expr)
+    at = dict(at or {})
+    fixed = {k: sympify(v) for k, v in at.items()}
+    e0 = expr.xreplace(fixed)
+    syms = _symbols(e0)
+    rng = random.Random(seed)
+    value: Expr = S.Zero
+    for _ in range(8):
+        point = rational_point(syms, rng)
+        v = _value(e0, point)
+        if v is None:
+            continue
+        value = v
+        if _exactly_nonzero(v):
+            return True, {**fixed, **point}, v
+        if not syms:
+            break
+    return False, {}, value
+
+
+def _exactly_nonzero(v: Expr) -> bool:
+    if v.is_Rational:
+        return v != 0
+    if v.is_zero is False:
+        return True
+    if v.is_zero is True:
+        return False
+    try:
+        x = Dummy("x")
+        return minimal_polynomial(v, x) != x
+    except (NotImplementedError, ValueError):
+        return False
+
+
+def provably_nonnegative(e: Expr) -> bool:
+    r"""True when ``e`` is nonnegative by its structure (no rewriting, no numbers).
+
+    ``Abs``, even powers, nonnegative radicals and products and sums of such.
+
+    >>> from sympy import symbols, sqrt, Abs
+    >>> x, y = symbols("x y", real=True)
+    >>> provably_nonnegative(Abs(x)/sqrt(x**2 + y**2)), provably_nonnegative(x)
+    (True, False)
+    """
+    e = sympify(e)
+    if e.is_nonnegative:
+        return True
+    if isinstance(e, Abs):
+        return True
+    if e.is_Mul or e.is_Add:
+        return all(provably_nonnegative(a) for a in e.args)
+    if e.is_Pow:
+        if e.exp.is_Integer and e.exp.is_even:
+            return bool(e.base.is_real)
+        if e.exp.is_Rational and not e.exp.is_Integer:
+            return provably_nonnegative(e.base)
+        return provably_nonnegative(e.base) and bool(e.exp.is_real)
+    return False
