@@ -78,3 +78,15 @@ def test_notebook_runs(path, kernel_env):
     kinds = {k for c in nb.cells if c.cell_type == "code" for o in c.outputs
              for k in o.get("data", {})}
     assert "text/latex" in kinds or "text/markdown" in kinds, f"{path.name} displayed no math"
+
+
+def test_readme_figure_script_draws_the_cylindroid(tmp_path):
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_readme_figure",
+                                                  NOTEBOOKS / "make_readme_figure.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    out = module.main(tmp_path / "cylindroid.png")
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert (NOTEBOOKS / "figures" / "cylindroid.png").exists()
