@@ -157,7 +157,7 @@ def test_names_source_and_cache():
     assert g is f
     assert lambdify([s], foot(s), name="foot_point").__name__ == "foot_point"
     source = inspect.getsource(f)
-    assert source.startswith(f"def {f.__name__}(s):")
+    assert source.startswith(f"def {f.__name__}(s, *, out=None):")
     assert "S_x**2" in source
     assert lambdify([s], foot(s), cse=False) is not f
 
@@ -178,7 +178,7 @@ def test_numba_missing_gives_a_clear_error(monkeypatch):
 def test_argument_names_are_derived_and_clean():
     t, P = Twist(vector("w"), vector("v")), vector("P")
     f = lambdify([t, P, h], t.velocity_at(P) * h)
-    assert str(inspect.signature(f)) == "(w, P, h)"
+    assert str(inspect.signature(f)) == "(w, P, h, *, out=None)"
     # symbols whose names are not identifiers are renamed in the code
     x, y = symbols("x[0] lambda", real=True)
     g = lambdify([Matrix([x, y])], x * y)
@@ -294,3 +294,24 @@ def test_generated_functions_run_the_lambdify_tuple_of_screws():
     a, b = f(np.array([1.0, 0, 0, 3, 0, 0]), 2.0)
     np.testing.assert_array_equal(a, [2, 0, 0, 6, 0, 0])
     assert b == 3.0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_out_arrays_are_filled_and_checked(backend):
+    f = lambdify([s, A], (foot(s), reciprocal_product(s, Screw(A, A))), backend, names=["s", "A"])
+    x = np.random.default_rng(3).standard_normal((4, 6))
+    P = np.random.default_rng(4).standard_normal(3)
+    o0, o1 = np.empty((4, 3)), np.empty(4)
+    r0, r1 = f(x, P, out=(o0, o1))
+    assert np.shares_memory(r0, o0) and np.shares_memory(r1, o1)
+    w0, w1 = f(x, P)
+    np.testing.assert_array_equal(o0, w0)
+    np.testing.assert_array_equal(o1, w1)
+    with pytest.raises(ValueError, match=r"out: expected 2 arrays, one per result, got 1"):
+        f(x, P, out=o0)
+    with pytest.raises(ValueError, match=r"out\[1\]: expected a writeable C-contiguous float64 "
+                       r"array of shape \(4,\), got float32 array of shape \(4,\)"):
+        f(x, P, out=(o0, np.empty(4, np.float32)))
+    with pytest.raises(ValueError, match=r"out\[0\]: .* got float64 array of shape \(4, 3\), "
+                       r"not C-contiguous"):
+        f(x, P, out=(np.empty((4, 6))[:, :3], o1))

@@ -1,0 +1,227 @@
+"""Benchmark screwsym.numeric against hand-written NumPy and the peers.
+
+Run from the repository root::
+
+    .venv/bin/python benchmarks/bench_numeric.py            # N = 1,000,000
+    .venv/bin/python benchmarks/bench_numeric.py --n 100000 --repeat 3
+
+Prints, per operation, nanoseconds per screw for screwsym's back ends
+(numpy, numba, c), hand-written NumPy, SymEngine's LLVM ``Lambdify`` (if
+installed), the memory-bound floor and the peers' per-screw functions
+(pytransform3d, modern_robotics, if installed, called one screw at a time as
+their users call them); then single-screw call latency and generation times.
+Nothing here is asserted; the figures go to ``benchmarks/README.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import shutil
+import time
+import timeit
+from collections.abc import Callable
+
+import numpy as np
+
+import screwsym
+from screwsym import codegen, numeric
+
+# bytes read + written per screw for each operation (float64)
+BYTES = {
+    "pitch": 6 * 8 + 8,
+    "foot": 6 * 8 + 3 * 8,
+    "reciprocal_product": 12 * 8 + 8,
+    "shift_origin": 9 * 8 + 6 * 8,
+    "line_through": 6 * 8 + 6 * 8,
+    "velocity_at": 9 * 8 + 3 * 8,
+    "moment_about": 9 * 8 + 3 * 8,
+}
+# the issue's reference figures (ns per screw, same machine class)
+ISSUE_FLOOR = {"pitch": 3.4, "foot": 4.4, "reciprocal_product": 6.0, "line_through": 5.8}
+TARGET_OPS = tuple(ISSUE_FLOOR)
+
+
+def best_ns(fn: Callable, args: tuple, n: int, repeat: int) -> float:
+    fn(*args)
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn(*args)
+        best = min(best, time.perf_counter() - t0)
+    return best / n * 1e9
+
+
+def dot(a, b):
+    return np.einsum("...i,...i->...", a, b)
+
+
+# Hand-written NumPy, as a user would write it with (..., 6) arrays.
+HAND = {
+    "pitch": lambda s: dot(s[..., :3], s[..., 3:]) / dot(s[..., :3], s[..., :3]),
+    "foot": lambda s: np.cross(s[..., :3], s[..., 3:]) / dot(s[..., :3], s[..., :3])[..., None],
+    "reciprocal_product": lambda a, b: dot(a[..., :3], b[..., 3:]) + dot(b[..., :3], a[..., 3:]),
+    "shift_origin": lambda s, A: np.concatenate(
+        [s[..., :3], s[..., 3:] - np.cross(A, s[..., :3])], axis=-1
+    ),
+    "line_through": lambda A, B: np.concatenate([B - A, np.cross(A, B - A)], axis=-1),
+    "velocity_at": lambda t, P: t[..., 3:] + np.cross(t[..., :3], P),
+    "moment_about": lambda w, P: w[..., 3:] - np.cross(P, w[..., :3]),
+}
+
+
+def inputs(name: str, n: int, rng: np.random.Generator) -> tuple[np.ndarray, ...]:
+    kinds = {
+        "pitch": (6,),
+        "foot": (6,),
+        "reciprocal_product": (6, 6),
+        "shift_origin": (6, 3),
+        "line_through": (3, 3),
+        "velocity_at": (6, 3),
+        "moment_about": (6, 3),
+    }[name]
+    return tuple(rng.standard_normal((n, k)) for k in kinds)
+
+
+def bandwidth(n: int, repeat: int) -> float:
+    """Bytes per ns of a streaming pass that reads one array and writes another."""
+    src = np.random.default_rng(1).standard_normal(n * 6)
+    dst = np.empty_like(src)
+    best = float("inf")
+    for _ in range(repeat + 1):
+        t0 = time.perf_counter()
+        np.copyto(dst, src)
+        best = min(best, time.perf_counter() - t0)
+    return 2 * src.nbytes / (best * 1e9)
+
+
+def symengine_functions():
+    """SymEngine LLVM Lambdify of the same core expressions (plain pitch formula)."""
+    if importlib.util.find_spec("symengine") is None:
+        return {}
+    import symengine as se
+
+    defs = numeric._definitions()
+    s = screwsym.Screw(screwsym.vector("S"), screwsym.vector("S0"))
+    defs["pitch"] = ([s], screwsym.pitch(s), ["s"])
+    out = {}
+    for name, (args, expr, _names) in defs.items():
+        syms = [x for a in args for x in (a.as_matrix() if isinstance(a, screwsym.Screw) else a)]
+        m = expr.as_matrix() if isinstance(expr, screwsym.Screw) else expr
+        exprs = list(m) if hasattr(m, "is_Matrix") and m.is_Matrix else [m]
+        try:
+            out[name] = se.Lambdify(syms, exprs, backend="llvm", cse=True)
+        except Exception as exc:  # pragma: no cover - depends on the build
+            print(f"  symengine llvm failed for {name}: {exc}")
+    return out
+
+
+def peers():
+    """Per-screw peer calls: (label, function of one (6,) screw)."""
+    found = []
+    if importlib.util.find_spec("pytransform3d") is not None:
+        import pytransform3d.transformations as pt
+
+        found.append(
+            ("pytransform3d screw_parameters_from_screw_axis (pitch + foot)",
+             pt.screw_parameters_from_screw_axis)
+        )
+    if importlib.util.find_spec("modern_robotics") is not None:
+        import modern_robotics as mr
+
+        T = np.eye(4)
+        T[:3, 3] = [0.1, 0.2, 0.3]
+
+        def mr_shift(V, T=T):  # change of reference point of a twist: Adjoint(T) @ V
+            return mr.Adjoint(T) @ V
+
+        found.append(("modern_robotics Adjoint(T) @ V (origin shift)", mr_shift))
+    return found
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n", type=int, default=1_000_000)
+    parser.add_argument("--repeat", type=int, default=7)
+    opts = parser.parse_args()
+    n, repeat = opts.n, opts.repeat
+    rng = np.random.default_rng(0)
+
+    # ---------------------------------------------------- generation time
+    print("Generation (fresh cache), seconds")
+    codegen._CACHE.clear()
+    numeric._BY_BACKEND.pop("numpy", None)
+    t0 = time.perf_counter()
+    np_funcs = numeric.functions("numpy")
+    t_np = time.perf_counter() - t0
+    print(f"  numpy: all {len(numeric.NAMES)} functions {t_np:.3f} "
+          f"({t_np / len(numeric.NAMES):.3f} per function)")
+    backends = {"numpy": np_funcs}
+    has_numba = importlib.util.find_spec("numba") is not None
+    if has_numba:
+        import numba  # noqa: F401  (import time is not generation time)
+
+        t0 = time.perf_counter()
+        nb = numeric.functions("numba")
+        t_gen = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        for name in numeric.NAMES:
+            getattr(nb, name)(*inputs(name, 4, rng))
+        t_jit = time.perf_counter() - t0
+        print(f"  numba: generate {t_gen:.3f}, first-call JIT compile {t_jit:.3f} "
+              f"({t_jit / len(numeric.NAMES):.3f} per function)")
+        backends["numba"] = nb
+    if shutil.which("cc"):
+        t0 = time.perf_counter()
+        backends["c"] = numeric.functions("c")
+        t_c = time.perf_counter() - t0
+        print(f"  c: generate + cc -O3 {t_c:.3f} ({t_c / len(numeric.NAMES):.3f} per function)")
+    se_funcs = symengine_functions()
+
+    # --------------------------------------------------------- throughput
+    bw = bandwidth(n, repeat)
+    print(f"\nN = {n:,}, ns per screw (best of {repeat}); streaming bandwidth {bw:.1f} B/ns")
+    cols = ["numpy", "numba", "numba out=", "c", "hand NumPy", "symengine llvm", "floor"]
+    print(f"  {'operation':<20}" + "".join(f"{c:>12}" for c in cols)
+          + f"{'hand/numpy':>12}{'compiled/floor':>16}")
+    for name in numeric.NAMES:
+        args = inputs(name, n, rng)
+        row = {}
+        for label, funcs in backends.items():
+            row[label] = best_ns(getattr(funcs, name), args, n, repeat)
+        if "numba" in backends:  # into a preallocated result: no page faults on fresh memory
+            fn = getattr(backends["numba"], name)
+            res = np.empty_like(fn(*args))
+            row["numba out="] = best_ns(lambda *a, fn=fn, res=res: fn(*a, out=res), args, n, repeat)
+        row["hand NumPy"] = best_ns(HAND[name], args, n, repeat)
+        if name in se_funcs:
+            flat = np.ascontiguousarray(np.concatenate(args, axis=-1))  # its input layout
+            row["symengine llvm"] = best_ns(se_funcs[name], (flat,), n, repeat)
+        row["floor"] = BYTES[name] / bw
+        compiled = min(row.get("numba", np.inf), row.get("c", np.inf))  # allocating call
+        floor = ISSUE_FLOOR.get(name, row["floor"])
+        print(f"  {name:<20}" + "".join(
+            f"{row[c]:>12.2f}" if c in row else f"{'-':>12}" for c in cols)
+            + f"{row['hand NumPy'] / row['numpy']:>12.2f}{compiled / floor:>16.2f}")
+    print("  (compiled/floor uses the issue's floor where it gives one: "
+          + ", ".join(f"{k} {v}" for k, v in ISSUE_FLOOR.items()) + ")")
+
+    # ------------------------------------------------ single-screw latency
+    print("\nSingle call on one screw, microseconds per call")
+    number = 20000
+    for label, funcs in backends.items():
+        cells = []
+        for name in numeric.NAMES:
+            args = tuple(a[0].copy() for a in inputs(name, 1, rng))
+            fn = getattr(funcs, name)
+            t = min(timeit.repeat(lambda fn=fn, args=args: fn(*args), number=number, repeat=5))
+            cells.append(f"{name} {t / number * 1e6:.2f}")
+        print(f"  {label:<6} " + ", ".join(cells))
+    for label, fn in peers():
+        screw = np.array([0.0, 0.0, 1.0, 0.2, -0.1, 0.5])
+        t = min(timeit.repeat(lambda fn=fn, x=screw: fn(x), number=2000, repeat=5))
+        print(f"  peer: {label}: {t / 2000 * 1e6:.2f} us per screw")
+
+
+if __name__ == "__main__":
+    main()
