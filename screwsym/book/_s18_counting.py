@@ -1,0 +1,101 @@
+"""The counting statements: infinity^4 lines, infinity^5 unit screws, infinity^6 screws."""
+
+from __future__ import annotations
+
+from sympy import Matrix, Rational, symbols
+
+from ._common import book_cross, book_dot, ss
+from ._registry import statement
+
+_POINT = {"a": Rational(2, 7), "b": Rational(-3, 5), "u": Rational(2, 3), "v": Rational(-5, 4),
+          "h": Rational(1, 3), "rho": 2}
+
+
+def _parametrised():
+    """Direction on the unit sphere (rational, stereographic) and a foot in its normal plane."""
+    a, b, u, v, h, rho = symbols("a b u v h rho", real=True)
+    d = 1 + a**2 + b**2
+    S = Matrix([2 * a, 2 * b, 1 - a**2 - b**2]) / d
+    e1 = book_cross(S, Matrix([1, 0, 0]))
+    e2 = book_cross(S, e1)
+    foot = u * e1 + v * e2
+    return (a, b, u, v, h, rho), S, foot
+
+
+def _rank(vec6, params):
+    """Exact rank of the Jacobian at the generic rational point."""
+    J = vec6.jacobian(Matrix(params))
+    at = {p: _POINT[p.name] for p in J.free_symbols}
+    return J.xreplace(at).rank()
+
+
+_HOW = """Directions S on the unit sphere by the rational stereographic map of (a, b), foot
+    points u e1 + v e2 in the plane normal to S; the 6-vectors are built with the library
+    ({what}); the exact rank of their Jacobian at the rational point a=2/7, b=-3/5,
+    u=2/3, v=-5/4, h=1/3, rho=2 is the dimension."""
+
+
+@statement(
+    "Counting: lines", "1.2", "There are infinity^4 lines in space",
+    r"\dim\{(\mathbf S;\ \mathbf S_0):\ |\mathbf S|=1,\ \mathbf S\cdot\mathbf S_0=0\}=4"
+    r"\quad(\infty^4\ \text{lines})",
+    "numeric",
+    _HOW.format(what="LineVector.from_point(foot, S)") + """ The constraint map
+    (S.S - 1, S.S0) has a Jacobian of rank 2 on the variety, 6 - 2 = 4.""",
+    errata=("The book says the six coordinates \"are related by Eqs. (1.6) and (1.11)\"; the "
+            "constraints are the normalisation (1.6) (or homogeneity) and the orthogonality "
+            "(1.10)/(1.15); (1.11) is a definition.",),
+)
+def _count_lines(c):
+    (a, b, u, v, h, rho), S, foot = _parametrised()
+    L = ss.LineVector.from_point(foot, S).as_matrix()
+    c.zero("rank - 4", _rank(L, (a, b, u, v)) - 4)
+    x = Matrix(symbols("x1:7", real=True))
+    G = Matrix([book_dot(x[:3, :], x[:3, :]) - 1, book_dot(x[:3, :], x[3:, :])])
+    pt = L.xreplace({a: _POINT["a"], b: _POINT["b"], u: _POINT["u"], v: _POINT["v"]})
+    JG = G.jacobian(x).xreplace(dict(zip(x, pt)))
+    c.zero("point on the variety", G.xreplace(dict(zip(x, pt))))
+    c.zero("rank of the constraints - 2", JG.rank() - 2)
+
+
+@statement(
+    "Counting: unit line vectors", "1.4.1", "Unit line vectors and the infinity^4 lines",
+    r"\dim\{\text{unit line vectors}\}=4;\ (\mathbf S;\ \mathbf S_0)\ \text{and}\ "
+    r"(-\mathbf S;\ -\mathbf S_0)\ \text{are the same undirected line}",
+    "numeric",
+    _HOW.format(what="LineVector.from_point(foot, S)") + """ The unit line vectors L and -L
+    are different vectors on the same line (same foot point).""",
+    errata=("One-to-one with directed lines; 2-to-1 (+-) with undirected lines.",),
+)
+def _count_unit_lines(c):
+    (a, b, u, v, h, rho), S, foot = _parametrised()
+    L = ss.LineVector.from_point(foot, S)
+    c.zero("rank - 4", _rank(L.as_matrix(), (a, b, u, v)) - 4)
+    c.zero("|S|^2 - 1", book_dot(L.S, L.S) - 1)
+    c.zero("foot(-L) - foot(L)", ss.foot(-L) - ss.foot(L))
+    c.nonzero("-L != L", (-L).as_matrix() - L.as_matrix())
+
+
+@statement(
+    "Counting: unit screws", "1.4.2", "There are infinity^5 unit screws",
+    r"\dim\{(\mathbf S;\ \mathbf r\times\mathbf S+h\mathbf S):\ |\mathbf S|=1\}=5\quad(\infty^5)",
+    "numeric",
+    _HOW.format(what="Screw.from_axis(foot, S, h)"),
+)
+def _count_unit_screws(c):
+    (a, b, u, v, h, rho), S, foot = _parametrised()
+    s = ss.Screw.from_axis(foot, S, h).as_matrix()
+    c.zero("rank - 5", _rank(s, (a, b, u, v, h)) - 5)
+
+
+@statement(
+    "Counting: screws", "1.4.2", "There are infinity^6 screws",
+    r"\dim\{\rho(\mathbf S;\ \mathbf r\times\mathbf S+h\mathbf S)\}=6\quad(\infty^6)",
+    "numeric",
+    _HOW.format(what="rho * Screw.from_axis(foot, S, h)") + """ Four factors (axis position
+    and direction, pitch, magnitude): 4 + 1 + 1 = 6.""",
+)
+def _count_screws(c):
+    (a, b, u, v, h, rho), S, foot = _parametrised()
+    s = (rho * ss.Screw.from_axis(foot, S, h)).as_matrix()
+    c.zero("rank - 6", _rank(s, (a, b, u, v, h, rho)) - 6)
