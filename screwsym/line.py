@@ -166,6 +166,28 @@ class CommonNormal(NamedTuple):
     #: the foot of the normal on line 2
     foot2: ImmutableMatrix
 
+    def _repr_latex_(self) -> str:
+        r"""LaTeX for Jupyter, in the book's symbols (Fig. 1.3).
+
+        >>> from screwsym import LineVector, common_normal
+        >>> cn = common_normal(LineVector([1, 0, 0], [0, 0, 0]), LineVector([0, 1, 0], [-2, 0, 0]))
+        >>> print(cn._repr_latex_())
+        $\displaystyle a_{12} = 2,\quad \mathbf{a}_{12} = \left[\begin{matrix}0 & 0 & 1\end{matrix}\right]^{T},\quad \alpha_{12} = \frac{\pi}{2},\quad \mathbf{r}_{1} = \left[\begin{matrix}0 & 0 & 0\end{matrix}\right]^{T},\quad \mathbf{r}_{2} = \left[\begin{matrix}0 & 0 & 2\end{matrix}\right]^{T}$
+        """
+        from sympy import latex
+
+        def column(v: ImmutableMatrix) -> str:
+            return latex(v.T) + "^{T}"
+
+        parts = [
+            rf"a_{{12}} = {latex(self.a12)}",
+            rf"\mathbf{{a}}_{{12}} = {column(self.normal)}",
+            rf"\alpha_{{12}} = {latex(self.alpha12)}",
+            rf"\mathbf{{r}}_{{1}} = {column(self.foot1)}",
+            rf"\mathbf{{r}}_{{2}} = {column(self.foot2)}",
+        ]
+        return r"$\displaystyle " + r",\quad ".join(parts) + "$"
+
 
 def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
     r"""The common normal of two lines: distance, unit normal, twist angle and feet.

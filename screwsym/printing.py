@@ -51,9 +51,24 @@ def pretty_screw(s, printer):
 def init_printing(**settings: Any) -> None:
     """Turn on SymPy's rich printing, so screws render in the book's notation.
 
-    A thin wrapper around :func:`sympy.init_printing`; in Jupyter every
-    screwsym object, also inside lists and tuples, then shows as LaTeX.
+    A thin wrapper around :func:`sympy.init_printing` (same settings); in
+    Jupyter every screwsym object, also inside lists and tuples, then shows
+    as LaTeX.  It also keeps the LaTeX of
+    :class:`~screwsym.line.CommonNormal`: SymPy's printer for tuples claims
+    every tuple subclass and leaves a named tuple as plain text.
     """
     from sympy import init_printing as sympy_init_printing
 
     sympy_init_printing(**settings)
+    ip = settings.get("ip")
+    if ip is None:
+        try:
+            from IPython import get_ipython
+        except ImportError:
+            return
+        ip = get_ipython()
+    if ip is not None:
+        from .line import CommonNormal
+
+        latex_formatter = ip.display_formatter.formatters["text/latex"]
+        latex_formatter.for_type(CommonNormal, CommonNormal._repr_latex_)

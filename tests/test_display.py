@@ -89,11 +89,6 @@ def test_symbols_keep_their_latex_names(shell):
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="core: CommonNormal is a NamedTuple with its own repr, which SymPy's IPython "
-    "printing skips; it needs a _repr_latex_ in screwsym/line.py",
-)
 def test_common_normal_result_shows_as_latex(shell):
     L1 = LineVector.from_point([0, 0, 0], [1, 0, 0])
     L2 = LineVector.from_point([0, 0, 2], [0, 1, 0])
