@@ -2,13 +2,24 @@
 
 import doctest
 import re
+import sys
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 README = ROOT / "README.md"
 
 
-def test_readme_python_snippets_run_and_match_their_output():
+@pytest.fixture
+def restore_displayhook():
+    """The README calls screwsym.init_printing(), which outside IPython sets sys.displayhook."""
+    saved = sys.displayhook
+    yield
+    sys.displayhook = saved
+
+
+def test_readme_python_snippets_run_and_match_their_output(restore_displayhook):
     text = README.read_text(encoding="utf-8")
     blocks = re.findall(r"```python\n(.*?)```", text, flags=re.S)
     assert blocks, "the README has no Python snippets"
