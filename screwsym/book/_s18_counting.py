@@ -53,8 +53,8 @@ def _count_lines(c):
     x = Matrix(symbols("x1:7", real=True))
     G = Matrix([book_dot(x[:3, :], x[:3, :]) - 1, book_dot(x[:3, :], x[3:, :])])
     pt = L.xreplace({a: _POINT["a"], b: _POINT["b"], u: _POINT["u"], v: _POINT["v"]})
-    JG = G.jacobian(x).xreplace(dict(zip(x, pt)))
-    c.zero("point on the variety", G.xreplace(dict(zip(x, pt))))
+    JG = G.jacobian(x).xreplace(dict(zip(x, pt, strict=False)))
+    c.zero("point on the variety", G.xreplace(dict(zip(x, pt, strict=False))))
     c.zero("rank of the constraints - 2", JG.rank() - 2)
 
 
