@@ -7,7 +7,18 @@ Run: ``python benchmarks/plain_sympy_check.py``; prints the number of checks and
 import time
 
 from sympy import (
-    Matrix, MatrixBase, Rational, cos, eye, factor, simplify, sin, sqrt, symbols, together, zeros,
+    Matrix,
+    MatrixBase,
+    Rational,
+    cos,
+    eye,
+    factor,
+    simplify,
+    sin,
+    sqrt,
+    symbols,
+    together,
+    zeros,
 )
 
 
