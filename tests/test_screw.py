@@ -319,3 +319,12 @@ def test_equals_is_mathematical_equality():
     assert a.equals(Screw([x, 0, 0], [0, 0, 0])) is None
     assert Screw([1, 0, 0], [0, 0, 0]).equals(LineVector([1, 0, 0], [0, 0, 0])) is True
     assert Screw([1, 0, 0], [0, 0, 0]).equals([2, 0, 0, 0, 0, 0]) is False
+
+
+def test_classify_proves_nonzero_through_factors():
+    """h (l**2 + m**2 + n**2) != 0 needs factoring before the assumptions can see it."""
+    h = symbols("h", nonzero=True)
+    l = symbols("l", positive=True)
+    m, n = symbols("m n", real=True)
+    assert classify(Screw([l, m, n], [h * l, h * m, h * n])) == "screw"  # Example 1.1
+    assert classify(Screw([l, m, n], [x * l, x * m, x * n])) is None  # x may be 0
