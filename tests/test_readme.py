@@ -44,3 +44,21 @@ def test_readme_quickstart_commands_are_what_ci_runs():
     ]
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
     assert 'pip install -q -e ".[test]"' in ci and "python -m pytest" in ci
+
+
+def _normalise(text):
+    """CLI table text without timings and trailing blanks."""
+    text = re.sub(r"\d+\.\d+ s\b", "T s", text)
+    return [line.rstrip() for line in text.strip().splitlines()]
+
+
+def test_readme_verify_output_is_what_the_cli_prints(capsys):
+    from screwsym.cli import main
+
+    text = README.read_text(encoding="utf-8")
+    block = re.search(r"```text\n\$ screwsym verify (.*?)\n(.*?)```", text, flags=re.S)
+    assert block, "the README shows no screwsym verify output"
+    ids = re.findall(r'"([^"]+)"|(\S+)', block.group(1))
+    ids = [a or b for a, b in ids]
+    assert main(["verify", *ids, "--jobs", "1"]) == 0
+    assert _normalise(capsys.readouterr().out) == _normalise(block.group(2))
