@@ -102,7 +102,8 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from sympy import Basic, Expr, ImmutableMatrix, Symbol, cse, numbered_symbols, srepr, sympify
+from sympy import Basic, Expr, I, ImmutableMatrix, Symbol, cse, numbered_symbols, srepr, sympify
+from sympy.core.sympify import SympifyError
 from sympy.matrices import MatrixBase
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.numpy import NumPyPrinter
@@ -354,11 +355,11 @@ def _normalise_expr(expr: Any) -> tuple[list[_Out], bool]:
             outs.append(_Out(tuple(e.as_matrix()), (6,)))
         elif isinstance(e, MatrixBase):
             trailing = (len(e),) if 1 in e.shape else tuple(e.shape)
-            outs.append(_Out(tuple(sympify(x) for x in e), trailing))
+            outs.append(_Out(tuple(sympify(x, strict=True) for x in e), trailing))
         else:
             try:
                 x = sympify(e, strict=True)
-            except Exception:
+            except SympifyError:
                 x = None
             if not isinstance(x, Expr):
                 raise TypeError(
@@ -368,7 +369,7 @@ def _normalise_expr(expr: Any) -> tuple[list[_Out], bool]:
             outs.append(_Out((x,), ()))
     for i, out in enumerate(outs):
         for x in out.exprs:
-            if not isinstance(x, Expr) or x.has(sympify("I")):
+            if not isinstance(x, Expr) or x.has(I):
                 raise ValueError(
                     f"expr: expected real expressions (screwsym generates real arithmetic), "
                     f"got {x} in result {i}"

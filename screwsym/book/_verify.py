@@ -140,7 +140,7 @@ def _radical_stage(e: Expr) -> Expr:
 
 
 def _rewrite(e: Expr) -> tuple[Expr, str]:
-    e = sympify(e)
+    e = sympify(e, strict=True)
     if e == 0:
         return S.Zero, "exact"
     e = expand(e)
@@ -308,9 +308,9 @@ def decide_nonzero(
             if res[0]:
                 return res
         return False, {}, S.Zero
-    expr = sympify(expr)
+    expr = sympify(expr, strict=True)
     at = dict(at or {})
-    fixed = {k: sympify(v) for k, v in at.items()}
+    fixed = {k: sympify(v, strict=True) for k, v in at.items()}
     e0 = expr.xreplace(fixed)
     syms = _symbols(e0)
     rng = random.Random(seed)
@@ -352,7 +352,7 @@ def provably_nonnegative(e: Expr) -> bool:
     >>> provably_nonnegative(Abs(x)/sqrt(x**2 + y**2)), provably_nonnegative(x)
     (True, False)
     """
-    e = sympify(e)
+    e = sympify(e, strict=True)
     if e.is_nonnegative:
         return True
     if isinstance(e, Abs):
