@@ -15,7 +15,16 @@ from sympy import Abs, Expr, ImmutableMatrix, atan2, sign, sqrt
 
 from ._decide import is_zero, is_zero_vector
 from ._validation import check_line_parts, check_screw, check_vector
-from .screw import Screw, ScrewLike, VectorLike, _axis_moment, foot, reciprocal_product
+from .screw import (
+    Screw,
+    ScrewLike,
+    VectorLike,
+    _axis_moment,
+    _pitch_formula,
+    _require_axis,
+    foot,
+    reciprocal_product,
+)
 
 __all__ = [
     "LineVector",
@@ -122,8 +131,8 @@ def contains(s: ScrewLike, point: VectorLike) -> bool | None:
     """
     s = check_screw(s, "s")
     r = check_vector(point, "point")
-    foot(s)  # raises for a couple, whose axis is at infinity
-    return is_zero_vector(r.cross(s.S) - _axis_moment(s))
+    _require_axis(s, "foot point")  # a couple's axis is at infinity
+    return is_zero_vector(r.cross(s.S) - _axis_moment(s, _pitch_formula(s)))
 
 
 def mutual_moment(l1: LineLike, l2: LineLike) -> Expr:
@@ -229,20 +238,21 @@ def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
     l2 = check_screw(l2, "l2", LineVector)
     S1, S2 = l1.S, l2.S
     p1, p2 = foot(l1), foot(l2)
+    d = p2 - p1
     n = S1.cross(S2)
     cos_part = S1.dot(S2)
     if is_zero_vector(n) is True:  # parallel (alpha12 = 0 or pi)
-        d = p2 - p1  # both feet are perpendicular to the common direction
+        # both feet are perpendicular to the common direction, so d is the normal
         if is_zero_vector(d) is True:
             raise ValueError(f"l1, l2: coincident lines have no common normal, got {l1} and {l2}")
         a12 = sqrt(d.dot(d))
         return CommonNormal(a12, d / a12, atan2(0, cos_part), p1, p2)
-    n_len = sqrt(n.dot(n))
+    nn = n.dot(n)
+    n_len = sqrt(nn)
     m = -reciprocal_product(l1, l2)  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
     orientation = 1 if is_zero(m) is True else sign(m)
-    d = p2 - p1
-    t1 = d.cross(S2).dot(n) / n.dot(n)
-    t2 = d.cross(S1).dot(n) / n.dot(n)
+    t1 = d.cross(S2).dot(n) / nn
+    t2 = d.cross(S1).dot(n) / nn
     return CommonNormal(
         Abs(m) / n_len,
         orientation * n / n_len,

@@ -382,12 +382,17 @@ def pitch(s: ScrewLike) -> Expr:
         if is_zero_vector(s.S0) is True:
             raise ValueError("s: the zero screw (0; 0) has no pitch")
         return oo
+    return _pitch_formula(s)
+
+
+def _pitch_formula(s: Screw) -> Expr:
+    """``S . S0 / S . S`` (1.34), for a screw already known not to be a couple."""
     return s.S.dot(s.S0) / s.S.dot(s.S)
 
 
-def _axis_moment(s: Screw) -> ImmutableMatrix:
-    """``S0 - h S``, the moment of the axis line (1.35)."""
-    return s.S0 - pitch(s) * s.S
+def _axis_moment(s: Screw, h: Expr) -> ImmutableMatrix:
+    """``S0 - h S``, the moment of the axis line (1.35), given the pitch ``h``."""
+    return s.S0 - h * s.S
 
 
 def _require_axis(s: Screw, what: str) -> None:
@@ -412,7 +417,7 @@ def axis(s: ScrewLike):
 
     s = check_screw(s, "s")
     _require_axis(s, "axis")
-    return LineVector(s.S, _axis_moment(s))
+    return LineVector(s.S, _axis_moment(s, _pitch_formula(s)))
 
 
 def foot(s: ScrewLike) -> ImmutableMatrix:
@@ -480,8 +485,8 @@ def decompose(s: ScrewLike):
     _require_axis(s, "axis, so no line-plus-couple decomposition")
     general = s._general_class()
     line_cls = LineVector if general is Screw else general
-    h = pitch(s)
-    return line_cls(s.S, _axis_moment(s)), general(zeros(3, 1), h * s.S)
+    h = _pitch_formula(s)
+    return line_cls(s.S, _axis_moment(s, h)), general(zeros(3, 1), h * s.S)
 
 
 def classify(s: ScrewLike) -> str | None:
