@@ -3,29 +3,19 @@
 from __future__ import annotations
 
 import ctypes
-import importlib.util
 import inspect
 import random
-import shutil
 import subprocess
 import sys
 import warnings
 
 import numpy as np
 import pytest
+from _backends import BACKENDS, HAS_CC, HAS_NUMBA
 from sympy import Matrix, Rational, cos, sin, sqrt, symbols
 
 from screwsym import Screw, Twist, foot, lambdify, pitch, reciprocal_product, vector
 from screwsym.codegen import c_source
-
-HAS_NUMBA = importlib.util.find_spec("numba") is not None
-HAS_CC = shutil.which("cc") is not None
-
-BACKENDS = [
-    "numpy",
-    pytest.param("numba", marks=pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")),
-    pytest.param("c", marks=pytest.mark.skipif(not HAS_CC, reason="no C compiler (cc)")),
-]
 
 S, S0 = vector("S"), vector("S0")
 s = Screw(S, S0)

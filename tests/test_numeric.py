@@ -2,27 +2,17 @@
 
 from __future__ import annotations
 
-import importlib.util
 import inspect
 import random
-import shutil
 import warnings
 
 import numpy as np
 import pytest
+from _backends import BACKENDS
 from sympy import Rational
 
 import screwsym
 from screwsym import LineVector, Screw, Twist, Wrench, numeric
-
-HAS_NUMBA = importlib.util.find_spec("numba") is not None
-HAS_CC = shutil.which("cc") is not None
-
-BACKENDS = [
-    "numpy",
-    pytest.param("numba", marks=pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")),
-    pytest.param("c", marks=pytest.mark.skipif(not HAS_CC, reason="no C compiler (cc)")),
-]
 
 
 def rationals(rng: random.Random, n: int) -> list[Rational]:
