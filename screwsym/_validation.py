@@ -21,6 +21,7 @@ from sympy.matrices import MatrixBase
 from ._decide import is_zero, is_zero_vector
 
 __all__ = [
+    "check_no_strings",
     "check_scalar",
     "check_vector",
     "check_name",
@@ -47,6 +48,30 @@ def _shape_of(value: Any) -> tuple[int, ...] | None:
     if isinstance(value, (list, tuple)):
         return (len(value),)
     return None
+
+
+def check_no_strings(value: Any, name: str) -> None:
+    """Raise ``TypeError`` if a string occurs anywhere in ``value``.
+
+    Walks tuples, lists, sets and dicts (keys and values).  Used before
+    handing arguments to SymPy methods that would parse a string as code.
+
+    >>> check_no_strings(({1: 2}, [3]), "subs")
+    >>> check_no_strings([("x", 1)], "subs")
+    Traceback (most recent call last):
+    ...
+    TypeError: subs: strings are never evaluated, got str 'x'
+    """
+    stack = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, (str, bytes)):
+            raise TypeError(f"{name}: strings are never evaluated, got {_describe(item)}")
+        if isinstance(item, dict):
+            stack.extend(item.keys())
+            stack.extend(item.values())
+        elif isinstance(item, (list, tuple, set, frozenset)):
+            stack.extend(item)
 
 
 def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:

@@ -26,8 +26,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Basic, Expr, ImmutableMatrix, S, oo, sqrt, zeros
+from sympy import Expr, ImmutableMatrix, S, oo, sqrt, zeros
 
+from ._basic import ScrewsymBasic
 from ._decide import is_zero, is_zero_vector
 from ._validation import check_scalar, check_screw, check_six, check_vector
 
@@ -49,7 +50,7 @@ ScrewLike = Any  # a Screw, or a 6-vector (list, tuple, SymPy Matrix, NumPy arra
 VectorLike = Any  # a 3-vector: list, tuple, SymPy Matrix or NumPy array of three
 
 
-class Screw(Basic):
+class Screw(ScrewsymBasic):
     r"""A screw $ = (S; S0): direction part ``S`` first, dual part ``S0`` second.
 
     Explanation
@@ -104,7 +105,7 @@ class Screw(Basic):
         S = check_vector(S, cls._part_names[0])
         S0 = check_vector(S0, cls._part_names[1])
         cls._check_parts(S, S0)
-        return Basic.__new__(cls, S, S0)
+        return ScrewsymBasic.__new__(cls, S, S0)
 
     @classmethod
     def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix) -> None:
@@ -279,7 +280,7 @@ class Screw(Basic):
     def _eval_simplify(self, **kwargs):
         return self._apply(lambda m: m.simplify(**kwargs))
 
-    def diff(self, *symbols, **kwargs):
+    def _eval_diff_parts(self, *symbols, **kwargs):
         """Differentiate both parts: ``d$/dt = (dS/dt; dS0/dt)``.
 
         The derivative of a line vector is in general not a line vector, so it
@@ -292,11 +293,9 @@ class Screw(Basic):
         """
         return self._apply(lambda m: m.diff(*symbols, **kwargs), self._general_class())
 
-    def evalf(self, n: int = 15, **options):
+    def _eval_evalf_parts(self, n: int = 15, **options):
         """Evaluate both parts numerically to ``n`` digits."""
         return self._apply(lambda m: m.evalf(n, **options))
-
-    n = evalf
 
     def expand(self, **hints):
         """Expand every component."""

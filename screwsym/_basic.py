@@ -1,0 +1,60 @@
+"""The base of every screwsym SymPy object: a ``Basic`` that never evaluates a string.
+
+SymPy's ``subs``, ``xreplace``, ``diff`` and ``evalf(subs=...)`` sympify their
+arguments without ``strict=True``, so a string passed to them is parsed and
+evaluated as Python.  screwsym promises that text a user wrote is never run:
+every screwsym object derives from :class:`ScrewsymBasic`, whose versions of
+these methods refuse strings (anywhere in their arguments) with a
+``TypeError`` before SymPy sees them.
+"""
+
+from __future__ import annotations
+
+from sympy import Basic
+
+from ._validation import check_no_strings
+
+__all__ = ["ScrewsymBasic"]
+
+
+class ScrewsymBasic(Basic):
+    """A SymPy ``Basic`` whose ``subs``, ``xreplace``, ``diff`` and ``evalf`` refuse strings.
+
+    >>> from sympy import Symbol
+    >>> from screwsym import Screw
+    >>> x = Symbol("x", real=True)
+    >>> Screw([x, 0, 0], [0, 0, 0]).subs(x, 2)
+    Screw([2, 0, 0], [0, 0, 0])
+    >>> Screw([x, 0, 0], [0, 0, 0]).subs(x, "2")
+    Traceback (most recent call last):
+    ...
+    TypeError: subs: strings are never evaluated, got str '2'
+    """
+
+    __slots__ = ()
+
+    def subs(self, *args, **kwargs):
+        check_no_strings((args, kwargs), "subs")
+        return super().subs(*args, **kwargs)
+
+    def xreplace(self, rule, *args, **kwargs):
+        check_no_strings((rule, args, kwargs), "xreplace")
+        return super().xreplace(rule, *args, **kwargs)
+
+    def diff(self, *symbols, **kwargs):
+        check_no_strings((symbols, kwargs), "diff")
+        return self._eval_diff_parts(*symbols, **kwargs)
+
+    def _eval_diff_parts(self, *symbols, **kwargs):
+        """Differentiate ``args`` one by one; subclasses override for their own result class."""
+        return self.func(*(a.diff(*symbols, **kwargs) for a in self.args))
+
+    def evalf(self, n: int = 15, subs=None, **options):
+        check_no_strings((subs, options), "evalf")
+        return self._eval_evalf_parts(n, subs=subs, **options)
+
+    def _eval_evalf_parts(self, n, **options):
+        return self.func(*(a.evalf(n, **options) for a in self.args))
+
+    def n(self, n: int = 15, subs=None, **options):
+        return self.evalf(n, subs=subs, **options)
