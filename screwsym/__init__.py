@@ -36,6 +36,7 @@ from .screw import (
     pitch,
     reciprocal_product,
     shift_origin,
+    unit,
 )
 from .twist import Twist
 from .vectors import vector
@@ -59,17 +60,27 @@ __all__ = [
     "is_reciprocal",
     "distance_to_origin",
     "direction_cosines",
+    "unit",
     "contains",
     "mutual_moment",
     "is_coplanar",
     "common_normal",
     "power",
     "init_printing",
+    "lambdify",
+    "book",
+    "codegen",
+    "numeric",
+    "plot",
 ]
 
 # Subpackages that pull in more (the book registry, code generation, plotting)
-# load on first use, so ``import screwsym`` stays light.
+# load on first use, so ``import screwsym`` stays light; ``dir`` lists them.
 _LAZY_MODULES = ("book", "cli", "codegen", "numeric", "plot")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__) | set(_LAZY_MODULES))
 
 
 def __getattr__(name: str):

@@ -5,14 +5,68 @@ SymPy's assumptions first; when they cannot tell, it brings the expression
 to a canonical form, where a zero polynomial or rational function is
 literally ``0``, and then factors what is left so that the assumptions can
 prove each factor non-zero.  No ``simplify``.
+
+The float policy
+================
+
+Exact and symbolic values are decided exactly.  A quantity computed from
+floating-point numbers carries rounding error, so every decision of the core
+(the line condition of a constructor, ``classify``, ``pitch``,
+``is_coplanar``, ``contains``, the parallel and intersecting cases of
+``common_normal``) goes through :func:`is_zero_scaled`: a float quantity
+``q`` counts as zero when ``|q| <= tau * scale``, where ``scale`` is the
+size the quantity would have without cancellation (``|S| |S0|`` for
+``S . S0``, ``|S1| |S2|`` for ``S1 x S2``) and ``tau = 2**(13 - p)`` for
+``p``-bit floats (``tau = 2**-40``, about ``9.1e-13``, for double precision).
+The test is relative, so it does not change when the input is scaled by any
+power of ten, and it is made in SymPy's arbitrary-exponent floats, so
+``1e200`` does not overflow.
 """
 
 from __future__ import annotations
 
-from sympy import Expr, Mul, Pow, cancel, expand, factor, fraction
+from sympy import (
+    Abs,
+    Add,
+    Expr,
+    Float,
+    Max,
+    Min,
+    Mul,
+    Piecewise,
+    Pow,
+    acot,
+    atan,
+    atan2,
+    cancel,
+    ceiling,
+    cot,
+    csc,
+    expand,
+    factor,
+    floor,
+    fraction,
+    sec,
+    sign,
+    sqrt,
+    tan,
+    tanh,
+)
 from sympy.matrices import MatrixBase
 
-__all__ = ["is_zero", "is_zero_vector"]
+__all__ = [
+    "is_zero",
+    "is_zero_vector",
+    "is_zero_scaled",
+    "is_zero_vector_scaled",
+    "is_real_where_defined",
+    "float_tau",
+    "norm",
+]
+
+# functions that are real wherever they are defined when their arguments are real
+# (SymPy's assumptions answer None for them because of their poles)
+_REAL_FUNCTIONS = (tan, cot, sec, csc, atan2, sign, floor, ceiling, Min, Max, acot, atan, tanh)
 
 
 def _has_denominator(expr: Expr) -> bool:
@@ -67,3 +121,86 @@ def is_zero_vector(v: MatrixBase) -> bool | None:
             return False
         undecided = undecided or d is None
     return None if undecided else True
+
+
+def norm(v: MatrixBase) -> Expr:
+    """The Euclidean length ``sqrt(v . v)`` of a column."""
+    return sqrt(v.dot(v))
+
+
+def float_tau(*exprs: Expr) -> Expr | None:
+    """The relative tolerance of the float policy, or None when no float is involved.
+
+    ``2**(13 - p)`` for the lowest precision ``p`` (in bits) among the floats.
+
+    >>> from sympy import Float, Rational
+    >>> float_tau(Float(1.5)) == Rational(1, 2**40), float_tau(Rational(1, 3)) is None
+    (True, True)
+    """
+    floats = [f for e in exprs for f in e.atoms(Float)]
+    if not floats:
+        return None
+    precision = min(f._prec for f in floats)
+    return Pow(2, 13 - precision)
+
+
+def is_zero_scaled(q: Expr, scale: Expr) -> bool | None:
+    """Decide ``q == 0`` under the float policy: relative to ``scale`` for floats, else exact.
+
+    ``scale`` is the size ``q`` would have without cancellation; for exact
+    and symbolic input it plays no part and the answer is :func:`is_zero`'s.
+
+    >>> from sympy import Float
+    >>> is_zero_scaled(Float("1e-17"), Float(1)), is_zero_scaled(Float("1e-17"), Float("1e-17"))
+    (True, False)
+    >>> is_zero_scaled(Float("1e-300"), Float("1e-300") * 3)    # scale-invariant
+    False
+    """
+    tau = float_tau(q, scale)
+    if tau is None or not (q.is_number and scale.is_number):
+        return is_zero(q)
+    return bool(Abs(q) <= tau * scale)
+
+
+def is_zero_vector_scaled(v: MatrixBase, scale: Expr) -> bool | None:
+    """:func:`is_zero_scaled` for a column: its length against ``scale``."""
+    tau = float_tau(*v, scale)
+    if tau is None or not (all(e.is_number for e in v) and scale.is_number):
+        return is_zero_vector(v)
+    return bool(norm(v) <= tau * scale)
+
+
+def is_real_where_defined(expr: Expr) -> bool | None:
+    """Decide whether ``expr`` is real at every point where it is defined.
+
+    SymPy's ``is_extended_real`` answers None for ``x/y`` with real ``x`` and
+    ``y`` (at ``y = 0`` it is ``zoo``); screwsym's symbolic results are full
+    of such quotients, which are real wherever they are defined.  This walks
+    sums, products, integer powers and the functions that are real off their
+    poles, and asks the assumptions about the rest.  A fractional power is
+    real only of a base known to be non-negative.
+
+    >>> from sympy import I, Symbol, sqrt
+    >>> x, y = Symbol("x", real=True), Symbol("y", real=True)
+    >>> is_real_where_defined(x / y), is_real_where_defined(sqrt(x)), is_real_where_defined(Symbol("z"))
+    (True, None, None)
+    >>> is_real_where_defined(sqrt(x**2 + y**2)), is_real_where_defined(1 + 2*I)
+    (True, False)
+    """
+    known = expr.is_extended_real
+    if known is not None:
+        return known
+    if isinstance(expr, (Add, Mul)) or isinstance(expr, _REAL_FUNCTIONS):
+        parts = expr.args
+    elif isinstance(expr, Pow):
+        if not (expr.exp.is_integer or expr.base.is_extended_nonnegative):
+            return None
+        parts = expr.args
+    elif isinstance(expr, Piecewise):
+        parts = [e for e, _ in expr.args]
+    else:
+        return None
+    decisions = [is_real_where_defined(a) for a in parts]
+    if all(d is True for d in decisions):
+        return True
+    return None

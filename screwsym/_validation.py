@@ -14,11 +14,12 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Abs, Basic, Expr, Float, ImmutableMatrix, sqrt
+import numpy as np
+from sympy import Basic, Expr, ImmutableMatrix, S
 from sympy.core.sympify import SympifyError, sympify
 from sympy.matrices import MatrixBase
 
-from ._decide import is_zero, is_zero_vector
+from ._decide import is_real_where_defined, is_zero, is_zero_scaled, is_zero_vector, norm
 
 __all__ = [
     "check_no_strings",
@@ -74,12 +75,31 @@ def check_no_strings(value: Any, name: str) -> None:
             stack.extend(item)
 
 
-def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:
-    """Return ``value`` as a SymPy expression that may be real.
+def _refuse_non_number(value: Any, name: str) -> None:
+    if isinstance(value, str):
+        raise TypeError(
+            f"{name}: expected a real number or SymPy expression, got {_describe(value)} "
+            "(strings are never evaluated)"
+        )
+    if (
+        isinstance(value, (bool, np.bool_))
+        or value is None
+        or isinstance(value, (MatrixBase, list, tuple, np.ma.MaskedArray))
+        or (_shape_of(value) not in (None, ()))
+    ):
+        raise TypeError(
+            f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
+        )
 
-    Raises ``TypeError`` for strings, booleans, matrices and other non-numbers,
-    and ``ValueError`` for values that are provably not real (or provably zero
-    when ``nonzero`` is set).
+
+def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:
+    """Return ``value`` as a finite, real SymPy expression.
+
+    Raises ``TypeError`` for strings, booleans, ``None``, matrices, masked
+    values and other non-numbers, and ``ValueError`` for NaN, infinities and
+    ``zoo``, for values that are not real (provably complex, or not known to
+    be real: a symbol needs ``real=True``), and for values provably zero when
+    ``nonzero`` is set.
 
     >>> check_scalar(3, "k")
     3
@@ -87,32 +107,33 @@ def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:
     Traceback (most recent call last):
     ...
     TypeError: k: expected a real number or SymPy expression, got str '3' (strings are never evaluated)
+    >>> from sympy import Symbol
+    >>> check_scalar(Symbol("z"), "k")
+    Traceback (most recent call last):
+    ...
+    ValueError: k: expected a real value, got z, which is not known to be real (declare symbols with real=True; a root needs a non-negative base)
     """
-    if isinstance(value, str):
-        raise TypeError(
-            f"{name}: expected a real number or SymPy expression, got {_describe(value)} "
-            "(strings are never evaluated)"
-        )
-    if (
-        isinstance(value, bool)
-        or isinstance(value, (MatrixBase, list, tuple))
-        or (_shape_of(value) not in (None, ()))
-    ):
-        raise TypeError(
-            f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
-        )
+    _refuse_non_number(value, name)
     try:
         expr = sympify(value, strict=True)
     except SympifyError:
         raise TypeError(
             f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
         ) from None
-    if not isinstance(expr, Expr):
+    if not isinstance(expr, Expr) or isinstance(expr, MatrixBase):
         raise TypeError(
             f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
         )
-    if expr.is_extended_real is False:
+    if expr.has(S.NaN, S.Infinity, S.NegativeInfinity, S.ComplexInfinity):
+        raise ValueError(f"{name}: expected a finite real value, got {expr}")
+    real = is_real_where_defined(expr)
+    if real is False:
         raise ValueError(f"{name}: expected a real value, got {expr}")
+    if real is None:
+        raise ValueError(
+            f"{name}: expected a real value, got {expr}, which is not known to be real "
+            "(declare symbols with real=True; a root needs a non-negative base)"
+        )
     if nonzero and is_zero(expr) is True:
         raise ValueError(f"{name}: expected a non-zero value, got {expr}")
     return expr
@@ -132,7 +153,7 @@ def check_vector(value: Any, name: str) -> ImmutableMatrix:
     ValueError: r: expected a 3-vector, got shape (2,)
     """
     if (
-        isinstance(value, (str, bytes))
+        isinstance(value, (str, bytes, np.ma.MaskedArray))
         or isinstance(value, Basic)
         and not isinstance(value, MatrixBase)
     ):
@@ -170,36 +191,39 @@ def check_name(value: Any, name: str) -> str:
     return value
 
 
-def check_screw(value: Any, name: str, cls: type | None = None):
-    """Return ``value`` as a screw object (an instance of ``cls``).
+def check_screw(value: Any, name: str, cls: type):
+    """Return ``value`` as a screw object, an instance of ``cls``.
 
-    A screw object is passed through, or rebuilt as ``cls`` from its parts
-    (so a plain screw may serve as a line vector when its parts make a line,
-    but a twist never serves as a wrench, nor a wrench as a twist); a 6-vector (list, tuple, SymPy Matrix or NumPy array of six numbers, in
-    the book's order ``(S; S0)``) is converted with ``cls.from_matrix``.
+    A screw object of class ``cls`` is passed through.  Another screw is
+    rebuilt as ``cls`` from its parts (a plain screw may serve as a line
+    vector when its parts make a line), except across kinds: a twist is never
+    read as a wrench or a line, nor a wrench as a twist (each kind declares
+    its ``_kind``).  A 6-vector (list, tuple, SymPy Matrix or NumPy array of
+    six numbers, in the book's order ``(S; S0)``) goes through
+    ``cls.from_matrix``.  Errors name the argument ``name``.
     """
-    from .screw import Screw
-    from .twist import Twist
-    from .wrench import Wrench
-
-    cls = Screw if cls is None else cls
-    if isinstance(value, Screw):
-        if isinstance(value, cls):
-            return value
-        # a twist is never read as a wrench, nor a wrench as a twist
-        if any(isinstance(value, k) and not issubclass(cls, k) for k in (Twist, Wrench)):
+    if isinstance(value, cls):
+        return value
+    if isinstance(value, cls._root):
+        if value._kind is not None and value._kind != cls._kind:
             raise TypeError(f"{name}: expected a {cls.__name__}, got {type(value).__name__}")
-        return cls(value.S, value.S0)
+        return cls._rebuild(value.S, value.S0, name)
     if isinstance(value, (str, bytes)) or _shape_of(value) is None:
         raise TypeError(
             f"{name}: expected a {cls.__name__} or a 6-vector (S; S0), got {_describe(value)}"
         )
-    return cls.from_matrix(value, name=name)
+    S_, S0_ = check_six(value, name)
+    return cls._rebuild(S_, S0_, name)
 
 
 def check_six(value: Any, name: str) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     """Split a 6-vector in the book's order into its two 3x1 parts ``(S, S0)``."""
-    if isinstance(value, (str, bytes)) or _shape_of(value) is None:
+    if (
+        isinstance(value, (str, bytes, np.ma.MaskedArray))
+        or isinstance(value, Basic)
+        and not isinstance(value, MatrixBase)
+        or _shape_of(value) is None
+    ):
         raise TypeError(
             f"{name}: expected a 6-vector (list, tuple or SymPy Matrix), got {_describe(value)}"
         )
@@ -215,33 +239,18 @@ def check_six(value: Any, name: str) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     return ImmutableMatrix(3, 1, entries[:3]), ImmutableMatrix(3, 1, entries[3:])
 
 
-def _float_tolerance(S: ImmutableMatrix, S0: ImmutableMatrix, dot: Expr) -> bool:
-    """For floating-point input only: is ``S.S0`` zero up to rounding?
-
-    Floats carry rounding error, so an exact test would reject the line
-    through (0.1, 0.2, 0.3) and (0.4, 0.5, 0.7).  The symbolic layer never
-    reaches this: it applies only when every quantity is a number and some is a
-    Float, and the tolerance is relative to ``|S| |S0|``.
-    """
-    if not (dot.is_number and dot.has(Float)):
-        return False
-    scale = sqrt(S.dot(S) * S0.dot(S0))
-    return bool(Abs(dot).evalf() <= 1e-12 * max(1.0, float(scale.evalf())))
-
-
-def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, names=("S", "S0")) -> None:
+def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple[str, str]) -> None:
     """Raise ``ValueError`` unless ``(S; S0)`` may be a line vector.
 
     A line vector has ``S != 0`` and ``S . S0 = 0`` (1.10).  Only a provable
-    violation raises: undecidable symbolic cases are accepted.
+    violation raises: undecidable symbolic cases are accepted, and floats are
+    judged by the float policy of :func:`screwsym._decide.is_zero_scaled`.
+    ``label`` starts the message: the argument's name, or the names of the
+    two parts (a tuple) when the parts were given.
     """
+    first, both = (label[0], ", ".join(label)) if isinstance(label, tuple) else (label, label)
     if is_zero_vector(S) is True:
-        raise ValueError(
-            f"{names[0]}: a line vector needs a non-zero direction {names[0]}, got {list(S)}"
-        )
+        raise ValueError(f"{first}: a line vector needs a non-zero direction S, got {list(S)}")
     dot = S.dot(S0)
-    if is_zero(dot) is False and not _float_tolerance(S, S0, dot):
-        raise ValueError(
-            f"{names[0]}, {names[1]}: a line vector needs {names[0]}.{names[1]} = 0 (1.10), "
-            f"got {names[0]}.{names[1]} = {dot}"
-        )
+    if is_zero_scaled(dot, norm(S) * norm(S0)) is False:
+        raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")

@@ -9,21 +9,20 @@ line of action, or an angular velocity about its axis.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import Any
 
-from sympy import Abs, Expr, ImmutableMatrix, atan2, sign, sqrt
+from sympy import Abs, Expr, Float, ImmutableMatrix, Rational, atan2, sign, sqrt
 
-from ._decide import is_zero, is_zero_vector
+from ._basic import ScrewsymBasic
+from ._decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
 from ._validation import check_line_parts, check_screw, check_vector
 from .screw import (
     Screw,
     ScrewLike,
     VectorLike,
-    _axis_moment,
     _pitch_formula,
+    _reciprocal_product,
     _require_axis,
-    foot,
-    reciprocal_product,
 )
 
 __all__ = [
@@ -38,7 +37,7 @@ __all__ = [
 LineLike = Any  # a LineVector, a screw whose parts make a line, or a 6-vector
 
 
-class LineVector(Screw):
+class LineVector(Screw, line_of=Screw):
     r"""A line vector ``(S; S0)`` with ``S != 0`` and ``S . S0 = 0`` (1.10, 1.28).
 
     Explanation
@@ -46,8 +45,12 @@ class LineVector(Screw):
 
     Constructing one whose ``S . S0`` is provably non-zero, or whose ``S`` is
     provably zero, raises ``ValueError``; symbolic cases that cannot be
-    decided are accepted.  ``(S; S0)`` and ``(lambda S; lambda S0)``,
-    ``lambda != 0``, are the same line (homogeneity).
+    decided are accepted, and floats follow the float policy.  ``(S; S0)``
+    and ``(lambda S; lambda S0)``, ``lambda != 0``, are the same line
+    (homogeneity).  Its pitch is 0 by this invariant.  It builds with the
+    constructors every kind has: :meth:`~screwsym.screw.Screw.from_axis`
+    (point, direction), :meth:`~screwsym.screw.Screw.through` (two points),
+    :meth:`~screwsym.screw.Screw.from_matrix`.
 
     Examples
     ========
@@ -65,56 +68,38 @@ class LineVector(Screw):
     """
 
     __slots__ = ()
+    _combination = Screw  # a sum of lines is a screw; so is 0 * line
+    _pitch_is_zero = True
 
     @classmethod
-    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix) -> None:
-        check_line_parts(S, S0, cls._part_names)
-
-    @classmethod
-    def through(cls, A: VectorLike, B: VectorLike) -> LineVector:
-        r"""The line through the points ``A`` and ``B``, directed from A to B.
-
-        ``S = B - A`` (1.1) and ``S0 = A x S`` (1.9).
-
-        >>> from screwsym import LineVector, vector
-        >>> A, B = vector("A"), vector("B")
-        >>> L = LineVector.through(A, B)
-        >>> L.S.T
-        Matrix([[-A_x + B_x, -A_y + B_y, -A_z + B_z]])
-        """
-        A = check_vector(A, "A")
-        B = check_vector(B, "B")
-        if is_zero_vector(B - A) is True:
-            raise ValueError(f"A, B: expected two distinct points, got A = B = {list(A)}")
-        return cls.from_point(A, B - A)
-
-    @classmethod
-    def from_point(cls, r: VectorLike, S: VectorLike) -> LineVector:
-        r"""The line through the point ``r`` along ``S``: ``(S; r x S)`` (1.9).
-
-        >>> from screwsym import LineVector
-        >>> LineVector.from_point([0, 0, 1], [1, 0, 0])      # Fig. 1.5: (1 0 0; 0 1 0)
-        LineVector([1, 0, 0], [0, 1, 0])
-        """
-        r = check_vector(r, "r")
-        S = check_vector(S, "S")
-        return cls(S, r.cross(S))
+    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix, label) -> None:
+        check_line_parts(S, S0, label)
 
     def contains(self, point: VectorLike) -> bool | None:
         """Whether ``point`` lies on the line (1.8); see :func:`contains`."""
-        return contains(self, point)
+        return _contains(self, check_vector(point, "point"))
 
     def mutual_moment(self, other: LineLike) -> Expr:
         """The mutual moment with ``other`` (1.23); see :func:`mutual_moment`."""
-        return mutual_moment(self, other)
+        return _reciprocal_product(self, check_screw(other, "other", LineVector))
 
     def is_coplanar(self, other: LineLike) -> bool | None:
         """Whether the two lines are coplanar (1.27); see :func:`is_coplanar`."""
-        return is_coplanar(self, other)
+        return _is_coplanar(self, check_screw(other, "other", LineVector))
 
     def common_normal(self, other: LineLike) -> CommonNormal:
         """The common normal to ``other`` (Fig. 1.3); see :func:`common_normal`."""
-        return common_normal(self, other)
+        return _common_normal(self, check_screw(other, "other", LineVector), ("self", "other"))
+
+
+def _contains(s: Screw, r: ImmutableMatrix, name: str | None = None) -> bool | None:
+    _require_axis(s, "axis", name)  # a couple's axis is at infinity
+    h = _pitch_formula(s)
+    residual = r.cross(s.S) - (s.S0 - h * s.S)
+    scale = norm(r) * norm(s.S) + norm(s.S0)
+    if float_tau(*residual, scale) is None:
+        return is_zero_vector(residual)
+    return is_zero_scaled(norm(residual), scale)
 
 
 def contains(s: ScrewLike, point: VectorLike) -> bool | None:
@@ -122,17 +107,15 @@ def contains(s: ScrewLike, point: VectorLike) -> bool | None:
 
     Tests the line equation ``r x S = S0`` (1.8), or for a screw the axis
     equation ``r x S = S0 - h S`` (1.36).  True, False, or None when the
-    symbols do not decide.
+    symbols do not decide; floats follow the float policy, relative to
+    ``|r| |S| + |S0|``.
 
     >>> from screwsym import LineVector, contains
     >>> L = LineVector.through([0, 0, 0], [1, 1, 1])
     >>> contains(L, [2, 2, 2]), contains(L, [1, 0, 0])
     (True, False)
     """
-    s = check_screw(s, "s")
-    r = check_vector(point, "point")
-    _require_axis(s, "foot point")  # a couple's axis is at infinity
-    return is_zero_vector(r.cross(s.S) - _axis_moment(s, _pitch_formula(s)))
+    return _contains(check_screw(s, "s", Screw), check_vector(point, "point"), "s")
 
 
 def mutual_moment(l1: LineLike, l2: LineLike) -> Expr:
@@ -143,59 +126,164 @@ def mutual_moment(l1: LineLike, l2: LineLike) -> Expr:
     ``alpha12`` from :func:`common_normal`.
 
     >>> from screwsym import LineVector, mutual_moment
-    >>> x_axis = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    >>> mutual_moment(x_axis, LineVector.from_point([0, 0, 2], [0, 1, 0]))
+    >>> x_axis = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    >>> mutual_moment(x_axis, LineVector.from_axis([0, 0, 2], [0, 1, 0]))
     -2
     """
-    return reciprocal_product(check_screw(l1, "l1", LineVector), check_screw(l2, "l2", LineVector))
+    return _reciprocal_product(check_screw(l1, "l1", LineVector), check_screw(l2, "l2", LineVector))
+
+
+def _coplanar_scale(l1: Screw, l2: Screw) -> Expr:
+    return norm(l1.S) * norm(l2.S0) + norm(l2.S) * norm(l1.S0)
+
+
+def _is_coplanar(l1: Screw, l2: Screw) -> bool | None:
+    return is_zero_scaled(_reciprocal_product(l1, l2), _coplanar_scale(l1, l2))
 
 
 def is_coplanar(l1: LineLike, l2: LineLike) -> bool | None:
     r"""Whether two lines are coplanar (intersect or are parallel): ``M = 0`` (1.27).
 
+    Floats follow the float policy, relative to ``|S1||S02| + |S2||S01|``.
+
     >>> from screwsym import LineVector, is_coplanar
-    >>> x_axis = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    >>> is_coplanar(x_axis, LineVector.from_point([5, 0, 0], [0, 1, 1]))
+    >>> x_axis = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    >>> is_coplanar(x_axis, LineVector.from_axis([5, 0, 0], [0, 1, 1]))
     True
+    >>> is_coplanar(x_axis, LineVector.from_axis([0, 0, 1], [0, 1, 0]))
+    False
     """
-    return is_zero(mutual_moment(l1, l2))
+    return _is_coplanar(check_screw(l1, "l1", LineVector), check_screw(l2, "l2", LineVector))
 
 
-class CommonNormal(NamedTuple):
-    """The common normal of two lines (Fig. 1.3), as returned by :func:`common_normal`."""
+class CommonNormal(ScrewsymBasic):
+    r"""The common normal of two lines (Fig. 1.3), as returned by :func:`common_normal`.
 
-    #: the distance a12 >= 0 between the lines along the normal
-    a12: Expr
-    #: the unit vector of the normal, pointing from line 1 to line 2
-    normal: ImmutableMatrix
-    #: the twist angle from S1 to S2, measured right-handedly about ``normal``
-    alpha12: Expr
-    #: the foot of the normal on line 1
-    foot1: ImmutableMatrix
-    #: the foot of the normal on line 2
-    foot2: ImmutableMatrix
+    A SymPy object whose ``args`` are ``(a12, normal, alpha12, foot1, foot2)``:
+    ``subs``, ``free_symbols``, LaTeX and :func:`screwsym.lambdify` work on it.
 
-    def _repr_latex_(self) -> str:
-        r"""LaTeX for Jupyter, in the book's symbols (Fig. 1.3).
+    >>> from sympy import latex
+    >>> from screwsym import LineVector, common_normal
+    >>> cn = common_normal(LineVector([1, 0, 0], [0, 0, 0]), LineVector([0, 1, 0], [-2, 0, 0]))
+    >>> cn
+    CommonNormal(a12=2, normal=[0, 0, 1], alpha12=pi/2, foot1=[0, 0, 0], foot2=[0, 0, 2])
+    >>> print(latex(cn))
+    a_{12} = 2,\quad \mathbf{a}_{12} = \left[\begin{matrix}0 & 0 & 1\end{matrix}\right]^{T},\quad \alpha_{12} = \frac{\pi}{2},\quad \mathbf{r}_{1} = \left[\begin{matrix}0 & 0 & 0\end{matrix}\right]^{T},\quad \mathbf{r}_{2} = \left[\begin{matrix}0 & 0 & 2\end{matrix}\right]^{T}
+    """
 
-        >>> from screwsym import LineVector, common_normal
-        >>> cn = common_normal(LineVector([1, 0, 0], [0, 0, 0]), LineVector([0, 1, 0], [-2, 0, 0]))
-        >>> print(cn._repr_latex_())
-        $\displaystyle a_{12} = 2,\quad \mathbf{a}_{12} = \left[\begin{matrix}0 & 0 & 1\end{matrix}\right]^{T},\quad \alpha_{12} = \frac{\pi}{2},\quad \mathbf{r}_{1} = \left[\begin{matrix}0 & 0 & 0\end{matrix}\right]^{T},\quad \mathbf{r}_{2} = \left[\begin{matrix}0 & 0 & 2\end{matrix}\right]^{T}$
-        """
-        from sympy import latex
+    __slots__ = ()
+    _fields = ("a12", "normal", "alpha12", "foot1", "foot2")
 
+    def __new__(cls, a12, normal, alpha12, foot1, foot2):
+        return ScrewsymBasic.__new__(
+            cls, a12, ImmutableMatrix(normal), alpha12, ImmutableMatrix(foot1), ImmutableMatrix(foot2)
+        )
+
+    @property
+    def a12(self) -> Expr:
+        """The distance ``a12 >= 0`` between the lines along the normal."""
+        return self.args[0]
+
+    @property
+    def normal(self) -> ImmutableMatrix:
+        """The unit vector of the normal, pointing from line 1 to line 2."""
+        return self.args[1]
+
+    @property
+    def alpha12(self) -> Expr:
+        """The twist angle from ``S1`` to ``S2``, right-handed about ``normal``."""
+        return self.args[2]
+
+    @property
+    def foot1(self) -> ImmutableMatrix:
+        """The foot of the normal on line 1."""
+        return self.args[3]
+
+    @property
+    def foot2(self) -> ImmutableMatrix:
+        """The foot of the normal on line 2."""
+        return self.args[4]
+
+    def _lambdify_outputs(self) -> tuple:
+        """The five parts, for :func:`screwsym.lambdify` (a tuple of results)."""
+        return tuple(self.args)
+
+    def _sympystr(self, printer) -> str:
+        def show(v):
+            if isinstance(v, ImmutableMatrix):
+                return "[" + ", ".join(printer._print(e) for e in v) + "]"
+            return printer._print(v)
+
+        parts = ", ".join(f"{k}={show(v)}" for k, v in zip(self._fields, self.args, strict=True))
+        return f"CommonNormal({parts})"
+
+    def _latex(self, printer) -> str:
         def column(v: ImmutableMatrix) -> str:
-            return latex(v.T) + "^{T}"
+            return printer._print(v.T) + "^{T}"
 
         parts = [
-            rf"a_{{12}} = {latex(self.a12)}",
+            rf"a_{{12}} = {printer._print(self.a12)}",
             rf"\mathbf{{a}}_{{12}} = {column(self.normal)}",
-            rf"\alpha_{{12}} = {latex(self.alpha12)}",
+            rf"\alpha_{{12}} = {printer._print(self.alpha12)}",
             rf"\mathbf{{r}}_{{1}} = {column(self.foot1)}",
             rf"\mathbf{{r}}_{{2}} = {column(self.foot2)}",
         ]
-        return r"$\displaystyle " + r",\quad ".join(parts) + "$"
+        return r",\quad ".join(parts)
+
+
+def _exact(v: ImmutableMatrix) -> ImmutableMatrix:
+    """The column with every float replaced by the exact binary rational it stands for."""
+    return v.xreplace({f: Rational(f) for f in v.atoms(Float)})
+
+
+def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str]) -> CommonNormal:
+    tau = float_tau(*l1.as_matrix(), *l2.as_matrix())
+    if tau is None or l1.free_symbols or l2.free_symbols:
+        return _common_normal_parts(l1.S, l1.S0, l2.S, l2.S0, None, names)
+    # Float lines: decide by the float policy, compute exactly from the numbers given, round
+    # once at the end (so nearly parallel lines get their true distance, not cancellation).
+    digits = min(f._prec for m in (l1.as_matrix(), l2.as_matrix()) for f in m.atoms(Float))
+    cn = _common_normal_parts(*(_exact(m) for m in (l1.S, l1.S0, l2.S, l2.S0)), tau, names)
+    return cn.func(*(a.evalf(n=max(15, int(digits * 0.30103) + 1)) for a in cn.args))
+
+
+def _zero(q: Expr, scale: Expr, tau: Expr | None) -> bool | None:
+    return is_zero(q) if tau is None else bool(Abs(q) <= tau * scale)
+
+
+def _common_normal_parts(S1, S01, S2, S02, tau, names) -> CommonNormal:
+    nn1, nn2 = S1.dot(S1), S2.dot(S2)
+    p1, p2 = S1.cross(S01) / nn1, S2.cross(S02) / nn2  # the feet (1.16)
+    d = p2 - p1
+    n = S1.cross(S2)
+    nn = n.dot(n)
+    cos_part = S1.dot(S2)
+    # parallel: |S1 x S2| against |S1||S2| (compared squared, so no root is taken)
+    if _zero(nn, nn1 * nn2, None if tau is None else tau**2) is True:
+        # both feet are perpendicular to the common direction, so d is the normal
+        if _zero(norm(d), norm(p1) + norm(p2), tau) is True:
+            raise ValueError(
+                f"{names[0]}, {names[1]}: coincident lines have no common normal, "
+                f"got {list(S1)}; {list(S01)} and {list(S2)}; {list(S02)}"
+            )
+        a12 = norm(d)
+        return CommonNormal(a12, d / a12, atan2(0, cos_part), p1, p2)
+    n_len = sqrt(nn)
+    m = -(S1.dot(S02) + S2.dot(S01))  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
+    scale = sqrt(nn1) * norm(S02) + sqrt(nn2) * norm(S01)
+    intersecting = _zero(m, scale, tau) is True
+    if intersecting:
+        m = 0
+    orientation = 1 if intersecting else sign(m)
+    t1 = d.cross(S2).dot(n) / nn
+    t2 = d.cross(S1).dot(n) / nn
+    return CommonNormal(
+        Abs(m) / n_len,
+        orientation * n / n_len,
+        atan2(orientation * n_len, cos_part),
+        p1 + t1 * S1,
+        p2 + t2 * S2,
+    )
 
 
 def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
@@ -216,15 +304,20 @@ def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
     parallel lines have ``alpha12`` equal to 0 or pi, the normal through the
     foot point of line 1, and ``foot1`` the point of line 1 nearest the
     origin.  Coincident lines have no common normal and raise ``ValueError``.
-    For skew lines with symbols, ``a12`` contains ``Abs`` and the normal
-    ``sign`` of ``-M``, which become numbers when the sign of ``M`` is known.
+
+    With symbols the result is the generic one: it holds where the lines are
+    skew (``S1 x S2 != 0`` and ``M != 0``) unless the symbols decide
+    otherwise; ``a12`` contains ``Abs`` and the normal ``sign`` of ``-M``.
+    Floats follow the float policy for the parallel and intersecting cases,
+    and the result is computed exactly from the numbers given and rounded
+    once, so nearly parallel skew lines get their true distance.
 
     Examples
     ========
 
     >>> from screwsym import LineVector, common_normal
-    >>> L1 = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    >>> L2 = LineVector.from_point([0, 0, 2], [0, 1, 0])
+    >>> L1 = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    >>> L2 = LineVector.from_axis([0, 0, 2], [0, 1, 0])
     >>> cn = common_normal(L1, L2)
     >>> cn.a12, cn.normal.T, cn.alpha12, cn.foot1.T, cn.foot2.T
     (2, Matrix([[0, 0, 1]]), pi/2, Matrix([[0, 0, 0]]), Matrix([[0, 0, 2]]))
@@ -236,27 +329,4 @@ def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
     """
     l1 = check_screw(l1, "l1", LineVector)
     l2 = check_screw(l2, "l2", LineVector)
-    S1, S2 = l1.S, l2.S
-    p1, p2 = foot(l1), foot(l2)
-    d = p2 - p1
-    n = S1.cross(S2)
-    cos_part = S1.dot(S2)
-    if is_zero_vector(n) is True:  # parallel (alpha12 = 0 or pi)
-        # both feet are perpendicular to the common direction, so d is the normal
-        if is_zero_vector(d) is True:
-            raise ValueError(f"l1, l2: coincident lines have no common normal, got {l1} and {l2}")
-        a12 = sqrt(d.dot(d))
-        return CommonNormal(a12, d / a12, atan2(0, cos_part), p1, p2)
-    nn = n.dot(n)
-    n_len = sqrt(nn)
-    m = -reciprocal_product(l1, l2)  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
-    orientation = 1 if is_zero(m) is True else sign(m)
-    t1 = d.cross(S2).dot(n) / nn
-    t2 = d.cross(S1).dot(n) / nn
-    return CommonNormal(
-        Abs(m) / n_len,
-        orientation * n / n_len,
-        atan2(orientation * n_len, cos_part),
-        p1 + t1 * S1,
-        p2 + t2 * S2,
-    )
+    return _common_normal(l1, l2, ("l1", "l2"))

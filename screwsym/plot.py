@@ -52,7 +52,7 @@ import numpy as np
 from sympy import Basic, ImmutableMatrix
 from sympy.matrices import MatrixBase
 
-from ._validation import check_screw, check_vector
+from ._validation import check_no_strings, check_screw, check_vector
 from .line import LineVector, common_normal
 from .screw import Screw
 from .twist import Twist
@@ -86,6 +86,7 @@ SCREW_COLOR = "tab:blue"
 def _check_subs(subs: Any) -> dict:
     if subs is None:
         return {}
+    check_no_strings(subs, "subs")
     if not isinstance(subs, Mapping):
         raise TypeError(
             f"subs: expected a dict mapping symbols to numbers, got {type(subs).__name__}"
@@ -570,7 +571,7 @@ def plot_twist(twist: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
     >>> matplotlib.use("Agg")
     >>> from screwsym import Twist
     >>> from screwsym.plot import plot_twist, find_artists
-    >>> ax = plot_twist(Twist.screw_motion(1, [0, 0, 1], [1, 0, 0], 0.2))
+    >>> ax = plot_twist(Twist.from_axis([1, 0, 0], [0, 0, 1], 0.2))
     >>> len(find_artists(ax, "curl")), len(find_artists(ax, "helix"))
     (1, 1)
     >>> import matplotlib.pyplot as plt; plt.close("all")
@@ -624,7 +625,7 @@ def plot_wrench(wrench: Any, ax: Any = None, *, subs: Subs = None, at: Any = Non
     >>> matplotlib.use("Agg")
     >>> from screwsym import Wrench
     >>> from screwsym.plot import plot_wrench, find_artists
-    >>> ax = plot_wrench(Wrench.force([0, 0, -1], [1, 0, 0]))
+    >>> ax = plot_wrench(Wrench.force([0, 0, -1], point=[1, 0, 0]))
     >>> len(find_artists(ax, "helix"))          # a pure force: pitch 0, no helix
     0
     >>> import matplotlib.pyplot as plt; plt.close("all")
@@ -673,8 +674,8 @@ def plot_common_normal(l1: Any, l2: Any, ax: Any = None, *, subs: Subs = None,
     >>> matplotlib.use("Agg")
     >>> from screwsym import LineVector
     >>> from screwsym.plot import plot_common_normal, find_artists
-    >>> L1 = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    >>> L2 = LineVector.from_point([0, 0, 2], [0, 1, 0])
+    >>> L1 = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    >>> L2 = LineVector.from_axis([0, 0, 2], [0, 1, 0])
     >>> ax = plot_common_normal(L1, L2)
     >>> print(find_artists(ax, "label")[-1].get_text())
     $a_{12}$ = 2, $\alpha_{12}$ = 1.571 rad (90°)
@@ -773,7 +774,7 @@ def plot(obj: Any, ax: Any = None, **kw: Any):
     >>> from screwsym.plot import plot, find_artists
     >>> from sympy import symbols
     >>> h = symbols("h", real=True)
-    >>> x_axis = LineVector.from_point([0, 0, 0], [1, 0, 0])
+    >>> x_axis = LineVector.from_axis([0, 0, 0], [1, 0, 0])
     >>> ax = plot([x_axis, Screw.from_axis([0, 1, 0], [0, 0, 1], h)], subs={h: -0.5})
     >>> len(find_artists(ax, "helix"))
     1

@@ -31,7 +31,7 @@ def pretty_screw(s, printer):
 
     >>> from sympy import pretty, symbols
     >>> from screwsym import Screw
-    >>> print(pretty(Screw([1, 0, 0], [symbols("h"), 0, 0])))
+    >>> print(pretty(Screw([1, 0, 0], [symbols("h", real=True), 0, 0])))
     (1  0  0; h  0  0)
     """
     from sympy.printing.pretty.stringpict import prettyForm
@@ -53,22 +53,8 @@ def init_printing(**settings: Any) -> None:
 
     A thin wrapper around :func:`sympy.init_printing` (same settings); in
     Jupyter every screwsym object, also inside lists and tuples, then shows
-    as LaTeX.  It also keeps the LaTeX of
-    :class:`~screwsym.line.CommonNormal`: SymPy's printer for tuples claims
-    every tuple subclass and leaves a named tuple as plain text.
+    as LaTeX through SymPy's own printer protocol (each class's ``_latex``).
     """
     from sympy import init_printing as sympy_init_printing
 
     sympy_init_printing(**settings)
-    ip = settings.get("ip")
-    if ip is None:
-        try:
-            from IPython import get_ipython
-        except ImportError:
-            return
-        ip = get_ipython()
-    if ip is not None:
-        from .line import CommonNormal
-
-        latex_formatter = ip.display_formatter.formatters["text/latex"]
-        latex_formatter.for_type(CommonNormal, CommonNormal._repr_latex_)

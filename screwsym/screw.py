@@ -16,6 +16,12 @@ for any SymPy object.  :class:`~screwsym.line.LineVector`,
 :class:`~screwsym.twist.Twist` and :class:`~screwsym.wrench.Wrench` are
 subclasses; the meaning of a screw comes from its type.
 
+Each kind declares its own algebra in class attributes, which the base reads
+and never names a subclass: ``_kind`` (twists and wrenches may not be added
+to each other or read as one another), ``_combination`` (the class of a sum,
+a zero multiple or a derivative) and the line class of a decomposition,
+declared by the line class itself (``class LineVector(Screw, line_of=Screw)``).
+
 References
 ==========
 
@@ -26,10 +32,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, S, oo, sqrt, zeros
+import numpy as np
+from sympy import Expr, ImmutableMatrix, S, oo, zeros
 
 from ._basic import ScrewsymBasic
-from ._decide import is_zero, is_zero_vector
+from ._decide import is_zero, is_zero_scaled, is_zero_vector, norm
 from ._validation import check_scalar, check_screw, check_six, check_vector
 
 __all__ = [
@@ -44,6 +51,7 @@ __all__ = [
     "is_reciprocal",
     "distance_to_origin",
     "direction_cosines",
+    "unit",
 ]
 
 ScrewLike = Any  # a Screw, or a 6-vector (list, tuple, SymPy Matrix, NumPy array) in (S; S0) order
@@ -61,6 +69,16 @@ class Screw(ScrewsymBasic):
     :func:`classify`: a line vector (pitch 0), a couple ``(0; C)`` (pitch
     ``oo``), a proper screw, or the zero screw.
 
+    Components must be finite and real: numbers, or expressions whose
+    symbols are declared ``real=True`` (a symbol without assumptions is
+    refused, since ``is_real`` cannot vouch for it).  A real symbol of unknown
+    sign is welcome; decisions that depend on its sign come back as None.
+
+    Every kind builds from the same named constructors, inherited unchanged:
+    ``Cls(S, S0)``, :meth:`from_matrix` (a 6-vector), :meth:`from_axis`
+    (point, direction, pitch; ``magnitude=`` by keyword), :meth:`through`
+    (two points) and :meth:`couple`.
+
     Examples
     ========
 
@@ -76,6 +94,10 @@ class Screw(ScrewsymBasic):
     Matrix([[0, 0, -1/2]])
     >>> s.as_matrix().T
     Matrix([[1, 1, 0, 1, 0, 0]])
+    >>> Screw([1, 1, 0, 1, 0, 0])
+    Traceback (most recent call last):
+    ...
+    TypeError: Screw(S, S0) takes two 3-vectors; for a 6-vector (S; S0) use Screw.from_matrix(M)
 
     Parameters
     ==========
@@ -100,16 +122,54 @@ class Screw(ScrewsymBasic):
 
     #: names of the two parts, used in error messages and printing
     _part_names: tuple[str, str] = ("S", "S0")
+    #: the kind of a screw that may not mix with other kinds ("twist", "wrench"), or None
+    _kind: str | None = None
+    #: the class of a linear combination (sum, zero multiple, derivative); None: the class itself
+    _combination: type | None = None
+    #: the class of the axis line of a decomposition, declared by ``line_of=`` below
+    _line_classes: dict[type, type] = {}
+    #: whether the kind's invariant makes the pitch 0 (a line vector's does)
+    _pitch_is_zero: bool = False
 
-    def __new__(cls, S: VectorLike, S0: VectorLike):
+    def __init_subclass__(cls, *, line_of: type | None = None, **kwargs):
+        super().__init_subclass__(**kwargs)
+        if line_of is not None:
+            Screw._line_classes[line_of] = cls
+
+    def __new__(cls, S: VectorLike, S0: VectorLike = None):
+        if S0 is None:
+            if isinstance(S, (list, tuple)) and len(S) == 6 or getattr(S, "shape", None) in (
+                (6,),
+                (6, 1),
+                (1, 6),
+            ):
+                raise TypeError(
+                    f"{cls.__name__}(S, S0) takes two 3-vectors; for a 6-vector (S; S0) use "
+                    f"{cls.__name__}.from_matrix(M)"
+                )
+            raise TypeError(f"{cls.__name__}(S, S0): missing the dual part {cls._part_names[1]}")
         S = check_vector(S, cls._part_names[0])
         S0 = check_vector(S0, cls._part_names[1])
-        cls._check_parts(S, S0)
+        cls._check_parts(S, S0, cls._part_names)
         return ScrewsymBasic.__new__(cls, S, S0)
 
     @classmethod
-    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix) -> None:
-        """Subclasses that constrain ``(S; S0)`` raise here."""
+    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix, label) -> None:
+        """Kinds that constrain ``(S; S0)`` raise here, naming ``label`` (a name, or the parts')."""
+
+    @classmethod
+    def _rebuild(cls, S: ImmutableMatrix, S0: ImmutableMatrix, name: str):
+        """``cls`` from checked parts of the argument ``name`` (errors name the argument)."""
+        cls._check_parts(S, S0, name)
+        return ScrewsymBasic.__new__(cls, S, S0)
+
+    @classmethod
+    def _combination_class(cls) -> type:
+        return cls._combination or cls
+
+    @classmethod
+    def _line_class(cls) -> type:
+        return Screw._line_classes.get(cls, cls)
 
     # ----------------------------------------------------------------- parts
     @property
@@ -126,37 +186,89 @@ class Screw(ScrewsymBasic):
         """The 6x1 column ``[S; S0]`` in the book's ray order."""
         return ImmutableMatrix.vstack(self.S, self.S0)
 
+    def __array__(self, dtype=None, copy=None):
+        """The six components in ray order ``(S; S0)`` as a NumPy array.
+
+        Numbers give ``float64`` (or ``dtype``); a screw with symbols gives an
+        object array, and refuses a numeric ``dtype`` with ``TypeError``.
+
+        >>> import numpy as np
+        >>> np.asarray(Screw([1, 1, 0], [1, 0, 0]), dtype=float)
+        array([1., 1., 0., 1., 0., 0.])
+        """
+        entries = list(self.as_matrix())
+        free = self.free_symbols
+        if free:
+            if dtype is not None and np.dtype(dtype) != np.dtype(object):
+                names = ", ".join(sorted(str(x) for x in free))
+                raise TypeError(
+                    f"cannot convert a symbolic {type(self).__name__} to an array of "
+                    f"{np.dtype(dtype)}: substitute numbers for {names}"
+                )
+            return np.array(entries, dtype=object)
+        values = np.array([float(e) for e in entries])
+        return values if dtype is None else values.astype(dtype)
+
     @classmethod
     def from_matrix(cls, M: Any, *, name: str = "M"):
-        """Build a screw from a 6-vector ``[S; S0]`` (6x1, 1x6, list or tuple).
+        """Build a screw from a 6-vector ``[S; S0]`` (6x1, 1x6, list, tuple or array).
 
         >>> Screw.from_matrix([1, 0, 0, 0, 1, 0])
         Screw([1, 0, 0], [0, 1, 0])
         """
         S_, S0_ = check_six(M, name)
-        return cls(S_, S0_)
+        return cls._rebuild(S_, S0_, name)
 
     @classmethod
-    def from_axis(cls, r: VectorLike, S: VectorLike, h: Any):
-        r"""The screw of pitch ``h`` on the axis through ``r`` along ``S`` (1.38).
+    def from_axis(cls, point: VectorLike, direction: VectorLike, pitch: Any = 0, *,
+                  magnitude: Any = 1):
+        r"""The screw of pitch ``h`` on the axis through ``point`` along ``direction`` (1.38).
 
-        ``$ = (S; r x S + h S)``.  Use :meth:`couple` for an infinite pitch.
+        ``$ = m (S; r x S + h S)`` with ``r = point``, ``S = direction``,
+        ``h = pitch`` and ``m = magnitude``: for a twist ``m`` is the angular
+        speed when ``S`` is a unit vector (1.52), for a wrench the force's
+        size (1.57).  ``pitch=0`` gives a line vector's coordinates (1.9).
+        A zero direction raises (use :meth:`couple` for an infinite pitch).
 
-        >>> from screwsym import Screw, vector
+        Examples
+        ========
+
+        >>> from screwsym import Screw, LineVector, Twist
         >>> from sympy import symbols
-        >>> h = symbols("h", real=True)
-        >>> s = Screw.from_axis([0, 1, 0], [1, 0, 0], h)
-        >>> s
+        >>> h, w = symbols("h omega", real=True)
+        >>> Screw.from_axis([0, 1, 0], [1, 0, 0], h)
         Screw([1, 0, 0], [h, 0, -1])
-        >>> s.pitch
-        h
+        >>> LineVector.from_axis([0, 0, 1], [1, 0, 0])    # Fig. 1.5: (1 0 0; 0 1 0)
+        LineVector([1, 0, 0], [0, 1, 0])
+        >>> Twist.from_axis([1, 0, 0], [0, 0, 1], magnitude=w)      # (1.48)
+        Twist([0, 0, omega], [0, -omega, 0])
         """
-        r = check_vector(r, "r")
-        S_ = check_vector(S, "S")
-        h = check_scalar(h, "h")
-        if h.is_infinite:
-            raise ValueError("h: expected a finite pitch; build a couple with couple(C)")
-        return cls(S_, r.cross(S_) + h * S_)
+        r = check_vector(point, "point")
+        S_ = check_vector(direction, "direction")
+        if getattr(pitch, "is_infinite", False) or pitch in (float("inf"), float("-inf")):
+            raise ValueError("pitch: expected a finite pitch; build a couple with couple(C)")
+        h = check_scalar(pitch, "pitch")
+        m = check_scalar(magnitude, "magnitude")
+        if is_zero_vector(S_) is True:
+            raise ValueError(f"direction: an axis needs a non-zero direction, got {list(S_)}")
+        return cls._rebuild(m * S_, m * (r.cross(S_) + h * S_), "point, direction, pitch")
+
+    @classmethod
+    def through(cls, A: VectorLike, B: VectorLike):
+        r"""The line through the points ``A`` and ``B``, directed from A to B: ``(B - A; A x (B - A))``.
+
+        ``S = B - A`` (1.1) and ``S0 = A x S`` (1.9).
+
+        >>> from screwsym import LineVector, vector
+        >>> L = LineVector.through(vector("A"), vector("B"))
+        >>> L.S.T
+        Matrix([[-A_x + B_x, -A_y + B_y, -A_z + B_z]])
+        """
+        A = check_vector(A, "A")
+        B = check_vector(B, "B")
+        if is_zero_vector(B - A) is True:
+            raise ValueError(f"A, B: expected two distinct points, got A = B = {list(A)}")
+        return cls._rebuild(B - A, A.cross(B - A), "A, B")
 
     @classmethod
     def couple(cls, C: VectorLike):
@@ -165,53 +277,57 @@ class Screw(ScrewsymBasic):
         >>> Screw.couple([0, 0, 5]).pitch
         oo
         """
-        return cls(zeros(3, 1), check_vector(C, "C"))
+        return cls._rebuild(zeros(3, 1), check_vector(C, "C"), "C")
 
     # --------------------------------------------------- derived quantities
     @property
     def pitch(self) -> Expr:
         """The pitch ``h = S.S0 / S.S`` (1.34); see :func:`pitch`."""
-        return pitch(self)
+        return _pitch(self)
 
     @property
     def axis(self):
         """The axis line vector ``(S; S0 - h S)`` (1.36); see :func:`axis`."""
-        return axis(self)
+        return _axis(self)
 
     @property
     def foot(self) -> ImmutableMatrix:
         """The point of the axis nearest the origin (1.16); see :func:`foot`."""
-        return foot(self)
+        return _foot(self)
 
     @property
     def distance_to_origin(self) -> Expr:
         """Distance from the origin to the axis (1.18); see :func:`distance_to_origin`."""
-        return distance_to_origin(self)
+        return norm(_foot(self))
 
     @property
     def direction_cosines(self) -> ImmutableMatrix:
         """``S / |S|`` (1.5); see :func:`direction_cosines`."""
-        return direction_cosines(self)
+        return _direction_cosines(self)
 
     def classify(self) -> str | None:
         """``'line'``, ``'couple'``, ``'screw'``, ``'zero'`` or None; see :func:`classify`."""
-        return classify(self)
+        return _classify(self)
 
     def decompose(self):
         """Axis line vector plus parallel couple (1.37); see :func:`decompose`."""
-        return decompose(self)
+        return _decompose(self)
+
+    def unit(self):
+        """The unit screw, normalised as in (1.5); see :func:`unit`."""
+        return _unit(self)
 
     def shift_origin(self, A: VectorLike):
         """The same screw with its moment taken about ``A`` (1.32); see :func:`shift_origin`."""
-        return shift_origin(self, A)
+        return _shift_origin(self, check_vector(A, "A"))
 
     def reciprocal_product(self, other: ScrewLike) -> Expr:
         """``S1.S2^0 + S2.S1^0`` (1.45); see :func:`reciprocal_product`."""
-        return reciprocal_product(self, other)
+        return _reciprocal_product(self, check_screw(other, "other", Screw))
 
     def is_reciprocal(self, other: ScrewLike) -> bool | None:
         """Whether the reciprocal product vanishes; see :func:`is_reciprocal`."""
-        return is_reciprocal(self, other)
+        return _is_reciprocal(self, check_screw(other, "other", Screw))
 
     def equals(self, other: ScrewLike) -> bool | None:
         """Whether ``self`` and ``other`` are the same screw mathematically.
@@ -226,21 +342,20 @@ class Screw(ScrewsymBasic):
         >>> a == b, a.equals(b)
         (False, True)
         """
-        other = check_screw(other, "other")
+        other = check_screw(other, "other", Screw)
         return is_zero_vector(self.as_matrix() - other.as_matrix())
 
     # ------------------------------------------------------------ algebra
-    def _general_class(self) -> type:
-        """The class of a linear combination: a line vector's is the general screw."""
-        from .line import LineVector
-
-        return Screw if isinstance(self, LineVector) else type(self)
-
     def __add__(self, other):
         """``$1 + $2 = (S1 + S2; S1^0 + S2^0)`` (1.39)."""
         if not isinstance(other, Screw):
             return NotImplemented
-        cls = _sum_class(self, other)
+        if self._kind and other._kind and self._kind != other._kind:
+            raise TypeError(
+                f"cannot add a {type(self).__name__} and a {type(other).__name__}: "
+                "a twist is a motion and a wrench a force system"
+            )
+        cls = (other if other._kind and not self._kind else self)._combination_class()
         return cls(self.S + other.S, self.S0 + other.S0)
 
     def __sub__(self, other):
@@ -262,9 +377,7 @@ class Screw(ScrewsymBasic):
                 "use reciprocal_product(s1, s2)"
             )
         k = check_scalar(k, "k")
-        cls = type(self)
-        if cls is not self._general_class() and is_zero(k) is True:
-            cls = Screw  # 0 times a line vector is the zero screw, not a line
+        cls = self._combination_class() if is_zero(k) is True else type(self)
         return cls(k * self.S, k * self.S0)
 
     __rmul__ = __mul__
@@ -291,7 +404,7 @@ class Screw(ScrewsymBasic):
         >>> Screw([t, 0, 0], [0, t**2, 0]).diff(t)
         Screw([1, 0, 0], [0, 2*t, 0])
         """
-        return self._apply(lambda m: m.diff(*symbols, **kwargs), self._general_class())
+        return self._apply(lambda m: m.diff(*symbols, **kwargs), self._combination_class())
 
     def _eval_evalf_parts(self, n: int = 15, **options):
         """Evaluate both parts numerically to ``n`` digits."""
@@ -323,31 +436,45 @@ class Screw(ScrewsymBasic):
         return pretty_screw(self, printer)
 
 
-def _sum_class(a: Screw, b: Screw) -> type:
-    """Class of ``a + b``: twists add to a twist, wrenches to a wrench.
+Screw._root = Screw
 
-    A twist and a wrench cannot be added: one is a motion, the other a force.
+
+# --------------------------------------------------------------------------
+# The chapter's operations, each written once.  The public function checks its
+# arguments (naming them as the caller wrote them) and calls the private one,
+# which methods call too with their own names checked.
+# --------------------------------------------------------------------------
+
+
+def _require_axis(s: Screw, what: str, name: str | None = None) -> None:
+    """Raise ``ValueError`` when ``S`` is provably zero: a couple, or the zero screw."""
+    if is_zero_vector(s.S) is not True:
+        return
+    prefix = f"{name}: " if name else ""
+    if is_zero_vector(s.S0) is True:
+        raise ValueError(f"{prefix}the zero screw (0; 0) has no {what}")
+    raise ValueError(f"{prefix}a couple (0; C) has no {what}: its axis lies at infinity; got {s}")
+
+
+def _pitch(s: Screw, name: str | None = None) -> Expr:
+    if not s._pitch_is_zero and is_zero_vector(s.S) is True:
+        if is_zero_vector(s.S0) is True:
+            raise ValueError(f"{name + ': ' if name else ''}the zero screw (0; 0) has no pitch")
+        return oo
+    return _pitch_formula(s)
+
+
+def _pitch_formula(s: Screw) -> Expr:
+    """``S . S0 / S . S`` (1.34), for a screw not known to be a couple.
+
+    A line vector's pitch is 0 by its invariant, and a float screw whose
+    ``S . S0`` is zero under the float policy has pitch exactly 0, as
+    :func:`classify` calls it a line.
     """
-    from .twist import Twist
-    from .wrench import Wrench
-
-    kinds = {c for c in (Twist, Wrench) for x in (a, b) if isinstance(x, c)}
-    if len(kinds) == 2:
-        raise TypeError(
-            f"cannot add a {type(a).__name__} and a {type(b).__name__}: "
-            "a twist is a motion and a wrench a force system"
-        )
-    return kinds.pop() if kinds else Screw
-
-
-# --------------------------------------------------------------------------
-# The chapter's operations, each written once.
-# --------------------------------------------------------------------------
-
-
-def _decided_couple(s: Screw) -> bool:
-    """True when ``S`` is provably zero (a couple or the zero screw)."""
-    return is_zero_vector(s.S) is True
+    dot = s.S.dot(s.S0)
+    if s._pitch_is_zero or is_zero_scaled(dot, norm(s.S) * norm(s.S0)) is True:
+        return S.Zero
+    return dot / s.S.dot(s.S)
 
 
 def pitch(s: ScrewLike) -> Expr:
@@ -358,7 +485,8 @@ def pitch(s: ScrewLike) -> Expr:
 
     The pitch does not depend on the origin (1.33).  A couple ``(0; C)`` has
     infinite pitch and gives ``oo``; the zero screw has none and raises
-    ``ValueError``.  With symbols the formula is returned as it stands.
+    ``ValueError``.  A line vector's pitch is 0.  With symbols the formula
+    is returned as it stands; it holds where ``S != 0``.
 
     Examples
     ========
@@ -376,27 +504,14 @@ def pitch(s: ScrewLike) -> Expr:
 
     axis, classify
     """
-    s = check_screw(s, "s")
-    if _decided_couple(s):
-        if is_zero_vector(s.S0) is True:
-            raise ValueError("s: the zero screw (0; 0) has no pitch")
-        return oo
-    return _pitch_formula(s)
+    return _pitch(check_screw(s, "s", Screw), "s")
 
 
-def _pitch_formula(s: Screw) -> Expr:
-    """``S . S0 / S . S`` (1.34), for a screw already known not to be a couple."""
-    return s.S.dot(s.S0) / s.S.dot(s.S)
-
-
-def _axis_moment(s: Screw, h: Expr) -> ImmutableMatrix:
-    """``S0 - h S``, the moment of the axis line (1.35), given the pitch ``h``."""
-    return s.S0 - h * s.S
-
-
-def _require_axis(s: Screw, what: str) -> None:
-    if _decided_couple(s):
-        raise ValueError(f"s: a couple (0; C) has no {what}: its axis lies at infinity; got {s}")
+def _axis(s: Screw, name: str | None = None):
+    _require_axis(s, "axis", name)
+    if s._pitch_is_zero:
+        return Screw._line_class()._rebuild(s.S, s.S0, name or "s")
+    return Screw._line_class()(s.S, s.S0 - _pitch_formula(s) * s.S)
 
 
 def axis(s: ScrewLike):
@@ -412,11 +527,12 @@ def axis(s: ScrewLike):
     >>> axis(Screw([1, 1, 0], [1, 0, 0]))           # Example 1.4
     LineVector([1, 1, 0], [1/2, -1/2, 0])
     """
-    from .line import LineVector
+    return _axis(check_screw(s, "s", Screw), "s")
 
-    s = check_screw(s, "s")
-    _require_axis(s, "axis")
-    return LineVector(s.S, _axis_moment(s, _pitch_formula(s)))
+
+def _foot(s: Screw, name: str | None = None) -> ImmutableMatrix:
+    _require_axis(s, "foot point", name)
+    return s.S.cross(s.S0) / s.S.dot(s.S)
 
 
 def foot(s: ScrewLike) -> ImmutableMatrix:
@@ -432,9 +548,7 @@ def foot(s: ScrewLike) -> ImmutableMatrix:
     >>> foot(LineVector.through([1, 2, 3], [1, 2, 4])).T
     Matrix([[1, 2, 0]])
     """
-    s = check_screw(s, "s")
-    _require_axis(s, "foot point")
-    return s.S.cross(s.S0) / s.S.dot(s.S)
+    return _foot(check_screw(s, "s", Screw), "s")
 
 
 def distance_to_origin(s: ScrewLike) -> Expr:
@@ -447,8 +561,12 @@ def distance_to_origin(s: ScrewLike) -> Expr:
     >>> distance_to_origin(LineVector.through([3, 4, 0], [3, 4, 1]))
     5
     """
-    P = foot(s)
-    return sqrt(P.dot(P))
+    return norm(_foot(check_screw(s, "s", Screw), "s"))
+
+
+def _direction_cosines(s: Screw, name: str | None = None) -> ImmutableMatrix:
+    _require_axis(s, "direction", name)
+    return s.S / norm(s.S)
 
 
 def direction_cosines(s: ScrewLike) -> ImmutableMatrix:
@@ -458,9 +576,43 @@ def direction_cosines(s: ScrewLike) -> ImmutableMatrix:
     >>> direction_cosines(LineVector.through([0, 0, 0], [2, 0, 0])).T
     Matrix([[1, 0, 0]])
     """
-    s = check_screw(s, "s")
-    _require_axis(s, "direction")
-    return s.S / sqrt(s.S.dot(s.S))
+    return _direction_cosines(check_screw(s, "s", Screw), "s")
+
+
+def _unit(s: Screw, name: str | None = None):
+    if is_zero_vector(s.S) is True:
+        if is_zero_vector(s.S0) is True:
+            prefix = f"{name}: " if name else ""
+            raise ValueError(f"{prefix}the zero screw (0; 0) cannot be normalised")
+        n = norm(s.S0)
+    else:
+        n = norm(s.S)
+    return type(s)(s.S / n, s.S0 / n)
+
+
+def unit(s: ScrewLike):
+    r"""The unit screw: ``$ / |S|``, or ``$ / |S0|`` for a couple (1.5, Example 1.3).
+
+    The book normalises a line vector or screw by the length of its direction
+    part, so that ``S`` is a unit vector and the pitch is unchanged; a couple
+    ``(0; C)`` is normalised by ``|C|``.  The zero screw raises ``ValueError``.
+    With symbols, the generic result divides by ``|S|`` and holds where
+    ``S != 0``.  The kind (line vector, twist, wrench) is kept.
+
+    >>> from screwsym import Screw, unit
+    >>> unit(Screw([0, 3, 4], [1, 0, 0]))
+    Screw([0, 3/5, 4/5], [1/5, 0, 0])
+    >>> unit(Screw.couple([0, 0, -2]))
+    Screw([0, 0, 0], [0, 0, -1])
+    """
+    return _unit(check_screw(s, "s", Screw), "s")
+
+
+def _decompose(s: Screw, name: str | None = None):
+    _require_axis(s, "axis, so no line-plus-couple decomposition", name)
+    general = s._combination_class()
+    h = _pitch_formula(s)
+    return general._line_class()(s.S, s.S0 - h * s.S), general(zeros(3, 1), h * s.S)
 
 
 def decompose(s: ScrewLike):
@@ -478,14 +630,20 @@ def decompose(s: ScrewLike):
     >>> line + couple
     Screw([1, 1, 0], [1, 0, 0])
     """
-    from .line import LineVector
+    return _decompose(check_screw(s, "s", Screw), "s")
 
-    s = check_screw(s, "s")
-    _require_axis(s, "axis, so no line-plus-couple decomposition")
-    general = s._general_class()
-    line_cls = LineVector if general is Screw else general
-    h = _pitch_formula(s)
-    return line_cls(s.S, _axis_moment(s, h)), general(zeros(3, 1), h * s.S)
+
+def _classify(s: Screw) -> str | None:
+    S_zero = is_zero_vector(s.S)
+    if S_zero is True:
+        S0_zero = is_zero_vector(s.S0)
+        return None if S0_zero is None else ("zero" if S0_zero else "couple")
+    if S_zero is None:
+        return None
+    if s._pitch_is_zero:
+        return "line"
+    dot_zero = is_zero_scaled(s.S.dot(s.S0), norm(s.S) * norm(s.S0))
+    return None if dot_zero is None else ("line" if dot_zero else "screw")
 
 
 def classify(s: ScrewLike) -> str | None:
@@ -494,6 +652,7 @@ def classify(s: ScrewLike) -> str | None:
     Returns ``'line'`` (``S != 0``, ``S.S0 = 0``, pitch 0), ``'couple'``
     (``S = 0``, ``S0 != 0``, pitch ``oo``), ``'screw'`` (``S.S0 != 0``),
     ``'zero'`` for ``(0; 0)``, or None when the symbols do not decide.
+    Floats follow the float policy (README, "Floats"), as the constructors do.
 
     Examples
     ========
@@ -506,15 +665,11 @@ def classify(s: ScrewLike) -> str | None:
     >>> classify(Screw([1, 0, 0], [x, 0, 0])) is None
     True
     """
-    s = check_screw(s, "s")
-    S_zero = is_zero_vector(s.S)
-    if S_zero is True:
-        S0_zero = is_zero_vector(s.S0)
-        return None if S0_zero is None else ("zero" if S0_zero else "couple")
-    if S_zero is None:
-        return None
-    dot_zero = is_zero(s.S.dot(s.S0))
-    return None if dot_zero is None else ("line" if dot_zero else "screw")
+    return _classify(check_screw(s, "s", Screw))
+
+
+def _shift_origin(s: Screw, A: ImmutableMatrix):
+    return type(s)(s.S, s.S0 - A.cross(s.S))
 
 
 def shift_origin(s: ScrewLike, A: VectorLike):
@@ -531,9 +686,16 @@ def shift_origin(s: ScrewLike, A: VectorLike):
     >>> shift_origin(s, [0, 1, 0])                   # A on the axis: (S; hS)
     Screw([1, 0, 0], [2, 0, 0])
     """
-    s = check_screw(s, "s")
-    A = check_vector(A, "A")
-    return type(s)(s.S, s.S0 - A.cross(s.S))
+    return _shift_origin(check_screw(s, "s", Screw), check_vector(A, "A"))
+
+
+def _reciprocal_product(s1: Screw, s2: Screw) -> Expr:
+    return s1.S.dot(s2.S0) + s2.S.dot(s1.S0)
+
+
+def _is_reciprocal(s1: Screw, s2: Screw) -> bool | None:
+    scale = norm(s1.S) * norm(s2.S0) + norm(s2.S) * norm(s1.S0)
+    return is_zero_scaled(_reciprocal_product(s1, s2), scale)
 
 
 def reciprocal_product(s1: ScrewLike, s2: ScrewLike) -> Expr:
@@ -552,16 +714,18 @@ def reciprocal_product(s1: ScrewLike, s2: ScrewLike) -> Expr:
     >>> reciprocal_product([1, 1, 0, 1, 0, 0], [1, 1, 0, 1, 0, 0])
     2
     """
-    s1 = check_screw(s1, "s1")
-    s2 = check_screw(s2, "s2")
-    return s1.S.dot(s2.S0) + s2.S.dot(s1.S0)
+    return _reciprocal_product(check_screw(s1, "s1", Screw), check_screw(s2, "s2", Screw))
 
 
 def is_reciprocal(s1: ScrewLike, s2: ScrewLike) -> bool | None:
     r"""Whether ``$1 o $2 = 0`` (1.45): True, False, or None when the symbols do not decide.
 
+    Floats follow the float policy, relative to ``|S1||S2^0| + |S2||S1^0|``.
+
     >>> from screwsym import Screw, is_reciprocal
     >>> is_reciprocal(Screw([1, 0, 0], [0, 0, 0]), Screw([0, 1, 0], [0, 0, 1]))
     True
+    >>> is_reciprocal(Screw([1, 0, 0], [1, 0, 0]), Screw([1, 0, 0], [0, 0, 0]))
+    False
     """
-    return is_zero(reciprocal_product(s1, s2))
+    return _is_reciprocal(check_screw(s1, "s1", Screw), check_screw(s2, "s2", Screw))

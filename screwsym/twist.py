@@ -11,8 +11,9 @@ from typing import Any
 
 from sympy import ImmutableMatrix, zeros
 
-from ._validation import check_scalar, check_vector
-from .screw import Screw, VectorLike, shift_origin
+from ._decide import is_zero_vector
+from ._validation import check_vector
+from .screw import Screw, VectorLike, _shift_origin
 
 __all__ = ["Twist"]
 
@@ -20,13 +21,20 @@ __all__ = ["Twist"]
 class Twist(Screw):
     r"""A twist ``(omega; v_O)``: angular velocity, then the velocity of the point at O.
 
+    It builds with the constructors every kind has (``Twist(omega, v_O)``,
+    :meth:`~screwsym.screw.Screw.from_axis` with the angular speed as
+    ``magnitude=``, :meth:`~screwsym.screw.Screw.from_matrix`, ...) and with
+    the book's sugar, whose first argument is the motion's vector and every
+    later vector a keyword: :meth:`rotation`, :meth:`translation`,
+    :meth:`screw_motion`.  A twist and a wrench never add.
+
     Examples
     ========
 
     >>> from screwsym import Twist
     >>> from sympy import symbols
     >>> w = symbols("omega", real=True)
-    >>> t = Twist.rotation(w, [0, 0, 1], [1, 0, 0])      # (1.48)
+    >>> t = Twist.rotation([0, 0, w], point=[1, 0, 0])      # (1.48)
     >>> t
     Twist([0, 0, omega], [0, -omega, 0])
     >>> t.velocity_at([1, 0, 0]).T                      # a point on the axis stays still
@@ -35,6 +43,7 @@ class Twist(Screw):
 
     __slots__ = ()
     _part_names = ("omega", "v_O")
+    _kind = "twist"
 
     @property
     def omega(self) -> ImmutableMatrix:
@@ -47,16 +56,21 @@ class Twist(Screw):
         return self.S0
 
     @classmethod
-    def rotation(cls, omega: Any, S: VectorLike, r: VectorLike) -> Twist:
-        r"""Rotation at rate ``omega`` about the axis through ``r`` along ``S`` (1.48).
+    def rotation(cls, omega: VectorLike, *, point: VectorLike) -> Twist:
+        r"""Rotation with angular velocity ``omega`` about the axis through ``point`` (1.48, 1.50).
 
-        ``omega $ = (omega S; omega r x S)``; with a unit ``S``, ``omega`` is
-        the angular speed.  The dual part is ``v_O = r x omega_vec`` (1.50).
+        ``(omega; r x omega)`` with ``r = point``: the velocity of the body
+        point at O is ``v_O = r x omega`` (1.50).  A zero ``omega`` has no axis
+        and raises ``ValueError``.
+
+        >>> Twist.rotation([0, 0, 2], point=[0, 1, 0])
+        Twist([0, 0, 2], [2, 0, 0])
         """
-        omega = check_scalar(omega, "omega")
-        S = check_vector(S, "S")
-        r = check_vector(r, "r")
-        return cls(omega * S, omega * r.cross(S))
+        omega = check_vector(omega, "omega")
+        r = check_vector(point, "point")
+        if is_zero_vector(omega) is True:
+            raise ValueError("omega: a rotation needs a non-zero angular velocity, got [0, 0, 0]")
+        return cls(omega, r.cross(omega))
 
     @classmethod
     def translation(cls, v: VectorLike) -> Twist:
@@ -68,24 +82,30 @@ class Twist(Screw):
         return cls(zeros(3, 1), check_vector(v, "v"))
 
     @classmethod
-    def screw_motion(cls, omega: Any, S: VectorLike, r: VectorLike, h: Any) -> Twist:
-        r"""Screw motion: rotation ``omega`` about the axis (r, S) with pitch ``h`` (1.52, 1.53).
+    def screw_motion(cls, omega: VectorLike, *, point: VectorLike, pitch: Any) -> Twist:
+        r"""Screw motion: angular velocity ``omega`` about the axis through ``point``, pitch ``h`` (1.52, 1.53).
 
-        ``omega $ = omega (S; r x S + h S) = (omega_vec; r x omega_vec + h omega_vec)``:
-        the body turns at ``omega`` and advances ``h`` per radian along the axis.
+        ``(omega; r x omega + h omega)``: the body turns at ``|omega|`` and
+        advances ``h`` per radian along the axis.  The same as
+        ``Twist.from_axis(point, omega, pitch)``.
 
-        >>> Twist.screw_motion(2, [0, 0, 1], [0, 0, 0], 3)
+        >>> Twist.screw_motion([0, 0, 2], point=[0, 0, 0], pitch=3)
         Twist([0, 0, 2], [0, 0, 6])
         """
-        omega = check_scalar(omega, "omega")
-        return omega * cls.from_axis(r, S, h)
+        omega = check_vector(omega, "omega")
+        if is_zero_vector(omega) is True:
+            raise ValueError(
+                "omega: a screw motion needs a non-zero angular velocity, got [0, 0, 0]; "
+                "for a translation use Twist.translation(v)"
+            )
+        return cls.from_axis(point, omega, pitch)
 
     def velocity_at(self, point: VectorLike) -> ImmutableMatrix:
         r"""The velocity of the body point at ``point``: ``v_P = v_O + omega x P``.
 
         This is the dual part of the twist taken about ``point`` (1.32).
 
-        >>> Twist.rotation(1, [0, 0, 1], [0, 0, 0]).velocity_at([1, 0, 0]).T
+        >>> Twist.rotation([0, 0, 1], point=[0, 0, 0]).velocity_at([1, 0, 0]).T
         Matrix([[0, 1, 0]])
         """
-        return shift_origin(self, check_vector(point, "point")).S0
+        return _shift_origin(self, check_vector(point, "point")).S0

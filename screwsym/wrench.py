@@ -7,12 +7,11 @@ A wrench is written in the book's ray order ``(f; C_O)``: the resultant force
 
 from __future__ import annotations
 
-from typing import Any
-
 from sympy import Expr, ImmutableMatrix
 
-from ._validation import check_scalar, check_screw, check_vector
-from .screw import Screw, ScrewLike, VectorLike, reciprocal_product, shift_origin
+from ._decide import is_zero_vector
+from ._validation import check_screw, check_vector
+from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
 from .twist import Twist
 
 __all__ = ["Wrench", "power"]
@@ -21,19 +20,27 @@ __all__ = ["Wrench", "power"]
 class Wrench(Screw):
     r"""A wrench ``(f; C_O)``: resultant force, then the moment about the origin O.
 
+    It builds with the constructors every kind has (``Wrench(f, C_O)``,
+    :meth:`~screwsym.screw.Screw.from_axis` with the force's size as
+    ``magnitude=`` (1.57, 1.58), :meth:`~screwsym.screw.Screw.couple`, ...)
+    and with the book's sugar :meth:`force`, whose point is a keyword.
+
     Examples
     ========
 
     >>> from screwsym import Wrench
-    >>> W = Wrench.force([0, 0, -10], [1, 0, 0])     # a weight acting at x = 1 (1.55)
+    >>> W = Wrench.force([0, 0, -10], point=[1, 0, 0])     # a weight acting at x = 1 (1.55)
     >>> W
     Wrench([0, 0, -10], [0, 10, 0])
     >>> W.moment_about([1, 0, 0]).T                # no moment about a point of its line
     Matrix([[0, 0, 0]])
+    >>> Wrench.from_axis([0, 0, 0], [0, 0, 1], 3, magnitude=2)    # (1.57)
+    Wrench([0, 0, 2], [0, 0, 6])
     """
 
     __slots__ = ()
     _part_names = ("f", "C_O")
+    _kind = "wrench"
 
     @property
     def f(self) -> ImmutableMatrix:
@@ -46,31 +53,23 @@ class Wrench(Screw):
         return self.S0
 
     @classmethod
-    def force(cls, f: VectorLike, r: VectorLike) -> Wrench:
-        r"""The force ``f`` acting along the line through ``r``: ``(f; r x f)`` (1.55)."""
-        f = check_vector(f, "f")
-        r = check_vector(r, "r")
-        return cls(f, r.cross(f))
+    def force(cls, f: VectorLike, *, point: VectorLike) -> Wrench:
+        r"""The force ``f`` acting along the line through ``point``: ``(f; r x f)`` (1.55).
 
-    @classmethod
-    def from_axis(cls, f: Any, S: VectorLike, r: VectorLike, h: Any) -> Wrench:  # type: ignore[override]
-        r"""A wrench of intensity ``f`` on the axis through ``r`` along ``S`` with pitch ``h``.
+        A zero force has no line of action and raises ``ValueError``.
 
-        ``f (S; S^0) = (f S; f (r x S + h S)) = (f_vec; r x f_vec + h f_vec)``
-        (1.57, 1.58): a force ``f S`` on the axis plus the parallel couple
-        ``C = h f S``.  With ``r`` = 0 (origin on the axis) the dual part is the
-        couple alone (1.57).
-
-        >>> Wrench.from_axis(2, [0, 0, 1], [0, 0, 0], 3)
-        Wrench([0, 0, 2], [0, 0, 6])
+        >>> Wrench.force([1, 0, 0], point=[0, 0, 2])
+        Wrench([1, 0, 0], [0, 2, 0])
         """
-        f = check_scalar(f, "f")
-        unit = Screw.from_axis(r, S, h)
-        return cls(f * unit.S, f * unit.S0)
+        f = check_vector(f, "f")
+        r = check_vector(point, "point")
+        if is_zero_vector(f) is True:
+            raise ValueError("f: a force needs a non-zero vector for its line of action, got [0, 0, 0]")
+        return cls(f, r.cross(f))
 
     def moment_about(self, point: VectorLike) -> ImmutableMatrix:
         r"""The moment of the wrench about ``point``: ``C_A = C_O - A x f`` (1.32)."""
-        return shift_origin(self, check_vector(point, "point")).S0
+        return _shift_origin(self, check_vector(point, "point")).S0
 
 
 def power(twist: ScrewLike, wrench: ScrewLike) -> Expr:
@@ -80,9 +79,9 @@ def power(twist: ScrewLike, wrench: ScrewLike) -> Expr:
     not depend on the origin (1.47).  Zero power means the two are reciprocal.
 
     >>> from screwsym import Twist, Wrench, power
-    >>> power(Twist.translation([1, 0, 0]), Wrench.force([3, 0, 0], [0, 0, 0]))
+    >>> power(Twist.translation([1, 0, 0]), Wrench.force([3, 0, 0], point=[0, 0, 0]))
     3
     """
-    return reciprocal_product(
+    return _reciprocal_product(
         check_screw(twist, "twist", Twist), check_screw(wrench, "wrench", Wrench)
     )

@@ -44,7 +44,7 @@ def test_screw_motion_twist_agrees(trial):
     S = d / np.linalg.norm(d)
     h = Rational(int(rng.integers(-30, 30)), 11)
     omega = Rational(int(rng.integers(1, 20)), 3)
-    T = Twist.screw_motion(omega, S.tolist(), r, h)
+    T = Twist.from_axis(r, S.tolist(), h, magnitude=omega)
     expected = float(omega) * pt.screw_axis_from_screw_parameters(
         np.array(r, dtype=float), S, float(h)
     )

@@ -41,11 +41,11 @@ def shown(shell, obj) -> dict:
     [
         (Screw([1, 1, 0], [1, 0, 0]), BOOK_1_4),
         (Screw([1, 1, 0], [1, 0, 0]).axis, AXIS_1_4),
-        (LineVector.from_point([0, 0, 1], [1, 0, 0]),
+        (LineVector.from_axis([0, 0, 1], [1, 0, 0]),
          r"\left(1 \quad 0 \quad 0;\; 0 \quad 1 \quad 0\right)"),
-        (Twist.screw_motion(w, [0, 0, 1], [0, 0, 0], h),
+        (Twist.from_axis([0, 0, 0], [0, 0, 1], h, magnitude=w),
          r"\left(0 \quad 0 \quad \omega;\; 0 \quad 0 \quad h \omega\right)"),
-        (Wrench.force([0, 0, -10], [1, 0, 0]),
+        (Wrench.force([0, 0, -10], point=[1, 0, 0]),
          r"\left(0 \quad 0 \quad -10;\; 0 \quad 10 \quad 0\right)"),
         (Screw.couple([0, 0, 1]), r"\left(0 \quad 0 \quad 0;\; 0 \quad 0 \quad 1\right)"),
         (Screw([1, 0, 0], [sqrt(2), 0, 0]),
@@ -83,15 +83,15 @@ def test_lists_and_tuples_of_screws(shell):
 
 def test_symbols_keep_their_latex_names(shell):
     a12 = symbols("a_12", positive=True)
-    L = LineVector.from_point([0, 0, a12], [1, 0, 0])
+    L = LineVector.from_axis([0, 0, a12], [1, 0, 0])
     assert shown(shell, L)["text/latex"] == (
         r"$\displaystyle \left(1 \quad 0 \quad 0;\; 0 \quad a_{12} \quad 0\right)$"
     )
 
 
 def test_common_normal_result_shows_as_latex(shell):
-    L1 = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    L2 = LineVector.from_point([0, 0, 2], [0, 1, 0])
+    L1 = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    L2 = LineVector.from_axis([0, 0, 2], [0, 1, 0])
     assert "text/latex" in shown(shell, common_normal(L1, L2))
 
 

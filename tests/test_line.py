@@ -53,7 +53,7 @@ def test_through_is_1_1_and_1_9():
 
 def test_from_point_is_1_9():
     r, S = vector("r"), vector("S")
-    L = LineVector.from_point(r, S)
+    L = LineVector.from_axis(r, S)
     assert L.S == S and L.S0 == r.cross(S)
 
 
@@ -115,11 +115,11 @@ def test_foot_of_line_through_origin_is_origin():
 
 def test_contains_1_8():
     r, S, t = vector("r"), vector("S"), symbols("t", real=True)
-    L = LineVector.from_point(r, S)
+    L = LineVector.from_axis(r, S)
     assert contains(L, r + t * S) is True
     assert contains(LineVector.through([0, 0, 0], [1, 1, 1]), [1, 0, 0]) is False
     assert contains(L, r + S.cross(vector("w"))) is None  # w may be parallel to S
-    with pytest.raises(ValueError, match="has no foot point"):
+    with pytest.raises(ValueError, match=r"s: a couple \(0; C\) has no axis"):
         contains(Screw.couple([1, 0, 0]), [0, 0, 0])
 
 
@@ -137,16 +137,16 @@ def test_mutual_moment_is_1_23():
 
 def test_mutual_moment_is_the_triple_product_1_22():
     r1, r2, S1, S2 = vector("p"), vector("q"), vector("u"), vector("v")
-    M = LineVector.from_point(r1, S1).mutual_moment(LineVector.from_point(r2, S2))
+    M = LineVector.from_axis(r1, S1).mutual_moment(LineVector.from_axis(r2, S2))
     assert expand(M - (r2 - r1).dot(S2.cross(S1))) == 0
 
 
 def test_is_coplanar_1_27():
     c, A, B = vector("c"), vector("A"), vector("B")
-    assert is_coplanar(LineVector.from_point(c, A), LineVector.from_point(c, B)) is True
+    assert is_coplanar(LineVector.from_axis(c, A), LineVector.from_axis(c, B)) is True
     x_axis = LineVector([1, 0, 0], [0, 0, 0])
-    assert x_axis.is_coplanar(LineVector.from_point([0, 0, 5], [1, 0, 0])) is True
-    assert x_axis.is_coplanar(LineVector.from_point([0, 0, 5], [0, 1, 0])) is False
+    assert x_axis.is_coplanar(LineVector.from_axis([0, 0, 5], [1, 0, 0])) is True
+    assert x_axis.is_coplanar(LineVector.from_axis([0, 0, 5], [0, 1, 0])) is False
 
 
 # ----------------------------------------------------------- common normal
@@ -168,8 +168,8 @@ def check_common_normal_convention(L1, L2):
 
 
 def test_common_normal_skew_lines_both_orders():
-    L1 = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    L2 = LineVector.from_point([0, 0, 2], [0, 1, 0])
+    L1 = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    L2 = LineVector.from_axis([0, 0, 2], [0, 1, 0])
     cn12 = check_common_normal_convention(L1, L2)
     assert (cn12.a12, cn12.alpha12) == (2, pi / 2)
     assert cn12.normal == ImmutableMatrix([0, 0, 1])
@@ -182,7 +182,7 @@ def test_common_normal_skew_lines_both_orders():
 def test_common_normal_canonical_pair_of_the_transcription():
     a12, alpha = symbols("a12 alpha12", positive=True)
     L1 = LineVector([1, 0, 0], [0, 0, 0])
-    L2 = LineVector.from_point([0, 0, a12], [cos(alpha), sin(alpha), 0])
+    L2 = LineVector.from_axis([0, 0, a12], [cos(alpha), sin(alpha), 0])
     cn = common_normal(L1, L2)
     assert mutual_moment(L1, L2) + a12 * sin(alpha) == 0
     assert cn.foot1 == ImmutableMatrix([0, 0, 0])
@@ -190,8 +190,8 @@ def test_common_normal_canonical_pair_of_the_transcription():
 
 
 def test_common_normal_intersecting_lines():
-    L1 = LineVector.from_point([1, 1, 1], [1, 0, 0])
-    L2 = LineVector.from_point([1, 1, 1], [1, 1, 0])
+    L1 = LineVector.from_axis([1, 1, 1], [1, 0, 0])
+    L2 = LineVector.from_axis([1, 1, 1], [1, 1, 0])
     cn = check_common_normal_convention(L1, L2)
     assert cn.a12 == 0 and cn.alpha12 == pi / 4
     assert cn.foot1 == cn.foot2 == ImmutableMatrix([1, 1, 1])
@@ -200,8 +200,8 @@ def test_common_normal_intersecting_lines():
 
 @pytest.mark.parametrize("sense, alpha", [(1, 0), (-1, pi)])
 def test_common_normal_parallel_and_antiparallel(sense, alpha):
-    L1 = LineVector.from_point([0, 0, 0], [0, 0, 1])
-    L2 = LineVector.from_point([3, 4, 9], [0, 0, sense * 2])
+    L1 = LineVector.from_axis([0, 0, 0], [0, 0, 1])
+    L2 = LineVector.from_axis([3, 4, 9], [0, 0, sense * 2])
     cn = check_common_normal_convention(L1, L2)
     assert cn.a12 == 5 and cn.alpha12 == alpha
     assert cn.normal == ImmutableMatrix([Rational(3, 5), Rational(4, 5), 0])
@@ -222,7 +222,7 @@ vectors = st.tuples(rationals, rationals, rationals)
 def test_common_normal_convention_on_random_lines(p1, u1, p2, u2):
     if all(c == 0 for c in u1) or all(c == 0 for c in u2):
         return
-    L1, L2 = LineVector.from_point(p1, u1), LineVector.from_point(p2, u2)
+    L1, L2 = LineVector.from_axis(p1, u1), LineVector.from_axis(p2, u2)
     if L1.S.cross(L2.S) == ImmutableMatrix([0, 0, 0]) and L1.contains(foot(L2)):
         return  # coincident
     check_common_normal_convention(L1, L2)

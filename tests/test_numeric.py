@@ -9,7 +9,7 @@ import warnings
 import numpy as np
 import pytest
 from _backends import BACKENDS
-from sympy import Rational
+from sympy import Rational, symbols
 
 import screwsym
 from screwsym import LineVector, Screw, Twist, Wrench, numeric
@@ -135,9 +135,11 @@ def test_bad_input_names_the_argument():
         numeric.line_through(np.zeros(3, complex), np.ones(3))
     with pytest.raises(TypeError, match=r"wrench: expected an array of real numbers, got dtype"):
         numeric.moment_about(np.zeros(6, bool), np.zeros(3))
-    # a Screw object is not an array: the message says what came
+    # a numeric Screw is read through np.asarray in ray order; a symbolic one is refused
+    assert numeric.pitch(Screw([1, 1, 0], [1, 0, 0])) == 0.5
+    x = symbols("x", real=True)
     with pytest.raises(TypeError, match=r"s: expected an array of real numbers, got Screw holding objects"):
-        numeric.pitch(Screw([1, 0, 0], [0, 0, 0]))
+        numeric.pitch(Screw([x, 0, 0], [0, 0, 0]))
 
 
 def test_symbolic_and_numeric_share_the_formula():

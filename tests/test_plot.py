@@ -107,7 +107,7 @@ def test_line_is_drawn_through_its_foot_point_with_the_arrow_S():
 
 
 def test_line_arrow_can_start_at_a_given_point_of_the_line():
-    L = LineVector.from_point([0, 0, 1], [1, 0, 0])
+    L = LineVector.from_axis([0, 0, 1], [1, 0, 0])
     ax = plot_line(L, at=[3, 0, 1])
     np.testing.assert_allclose(the(ax, "arrow"), [[3, 0, 1], [4, 0, 1]])
     with pytest.raises(ValueError, match=r"at: the point .* is not on the axis"):
@@ -116,8 +116,8 @@ def test_line_arrow_can_start_at_a_given_point_of_the_line():
 
 def test_pictures_accumulate_in_one_axes():
     ax = plot_frame()
-    plot_line(LineVector.from_point([0, 0, 0], [1, 0, 0]), ax)
-    same = plot_line(LineVector.from_point([0, 1, 0], [0, 0, 1]), ax, label="$2")
+    plot_line(LineVector.from_axis([0, 0, 0], [1, 0, 0]), ax)
+    same = plot_line(LineVector.from_axis([0, 1, 0], [0, 0, 1]), ax, label="$2")
     assert same is ax
     assert len(find_artists(ax, "frame")) == 3
     assert len(find_artists(ax, "arrow")) == 2
@@ -187,7 +187,7 @@ def test_symbolic_objects_need_subs():
     with pytest.raises(ValueError, match=r"substitute numbers for x \("):
         plot(s, subs={h: 1})
     with pytest.raises(ValueError, match=r"line: cannot draw a symbolic LineVector"):
-        plot_line(LineVector.from_point([x, 0, 0], [0, 1, 0]))
+        plot_line(LineVector.from_axis([x, 0, 0], [0, 1, 0]))
     with pytest.raises(TypeError, match=r"subs: expected a dict"):
         plot_screw(s, subs=[(h, 1)])
     # exact irrational numbers are fine
@@ -197,13 +197,13 @@ def test_symbolic_objects_need_subs():
 
 def test_argument_errors_name_the_argument():
     with pytest.raises(TypeError, match=r"ax: expected a 3D Axes"):
-        plot_line(LineVector.from_point([0, 0, 0], [1, 0, 0]), ax=plt.figure().add_subplot())
+        plot_line(LineVector.from_axis([0, 0, 0], [1, 0, 0]), ax=plt.figure().add_subplot())
     with pytest.raises(TypeError, match=r"obj: expected a Screw, LineVector, Twist, Wrench"):
         plot("S")
     with pytest.raises(ValueError, match=r"couple: expected a couple \(0; C\) with C != 0"):
         plot_couple(Screw([1, 0, 0], [0, 0, 0]))
     with pytest.raises(ValueError, match=r"length: expected a positive number, got -1"):
-        plot_line(LineVector.from_point([0, 0, 0], [1, 0, 0]), length=-1)
+        plot_line(LineVector.from_axis([0, 0, 0], [1, 0, 0]), length=-1)
     with pytest.raises(ValueError, match=r"twist: the zero twist"):
         plot_twist(Twist.translation([0, 0, 0]))
 
@@ -231,7 +231,7 @@ def test_screw_with_zero_direction_is_drawn_as_a_couple():
 
 @pytest.mark.parametrize("omega", [2, -2])
 def test_twist_glyph(omega):
-    t = Twist.screw_motion(omega, [0, 0, 1], [1, 0, 0], Rational(-1, 5))
+    t = Twist.from_axis([1, 0, 0], [0, 0, 1], Rational(-1, 5), magnitude=omega)
     ax = plot(t)
     w = as_float(t.omega)
     np.testing.assert_allclose(the(ax, "arrow"), [[1, 0, 0], np.array([1, 0, 0]) + w])
@@ -253,7 +253,7 @@ def test_translation_is_a_free_arrow():
 
 @pytest.mark.parametrize("h", [Rational(1, 2), Rational(-1, 2)])
 def test_wrench_glyph(h):
-    W = Wrench.from_axis(3, [1, 0, 0], [0, 1, 1], h)
+    W = Wrench.from_axis([0, 1, 1], [1, 0, 0], h, magnitude=3)
     ax = plot(W)
     arrows = find_artists(ax, "arrow")
     force, couple = (vertices(a) for a in arrows)
@@ -266,7 +266,7 @@ def test_wrench_glyph(h):
 
 
 def test_pure_force_and_pure_couple_wrenches():
-    ax = plot(Wrench.force([0, 0, -1], [2, 0, 0]))
+    ax = plot(Wrench.force([0, 0, -1], point=[2, 0, 0]))
     assert find_artists(ax, "helix") == []
     np.testing.assert_allclose(the(ax, "arrow"), [[2, 0, 0], [2, 0, -1]])
     ax = plot(Wrench.couple([0, 0, 1]))
@@ -277,8 +277,8 @@ def test_pure_force_and_pure_couple_wrenches():
 
 
 def test_common_normal_segment_joins_the_feet_and_labels_a12_alpha12():
-    L1 = LineVector.from_point([1, 0, 0], [1, 0, 0])
-    L2 = LineVector.from_point([0, 2, 3], [1, 1, 0])
+    L1 = LineVector.from_axis([1, 0, 0], [1, 0, 0])
+    L2 = LineVector.from_axis([0, 2, 3], [1, 1, 0])
     cn = common_normal(L1, L2)
     ax = plot_common_normal(L1, L2)
     seg = the(ax, "normal")
@@ -305,8 +305,8 @@ def test_common_normal_segment_joins_the_feet_and_labels_a12_alpha12():
 
 def test_common_normal_negative_angle_and_symbols():
     a = symbols("a", positive=True)
-    L1 = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    L2 = LineVector.from_point([0, 0, a], [1, -1, 0])
+    L1 = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    L2 = LineVector.from_axis([0, 0, a], [1, -1, 0])
     with pytest.raises(ValueError, match=r"l2: cannot draw a symbolic LineVector: "
                                          r"substitute numbers for a"):
         plot_common_normal(L1, L2)

@@ -17,7 +17,7 @@ def test_latex_uses_semicolon_and_book_order():
         latex(Screw([1, 0, 0], [h, 0, 0])) == r"\left(1 \quad 0 \quad 0;\; h \quad 0 \quad 0\right)"
     )
     assert (
-        latex(Twist.rotation(w, [0, 0, 1], [1, 0, 0]))
+        latex(Twist.from_axis([1, 0, 0], [0, 0, 1], magnitude=w))
         == r"\left(0 \quad 0 \quad \omega;\; 0 \quad - \omega \quad 0\right)"
     )
     assert (

@@ -66,7 +66,7 @@ def test_as_matrix_and_from_matrix_round_trip():
 def test_func_args_round_trip_for_every_class(generic):
     for s in (
         Screw(generic["S"], generic["S0"]),
-        LineVector.from_point(generic["r"], generic["S"]),
+        LineVector.from_axis(generic["r"], generic["S"]),
         Twist(generic["S"], generic["S0"]),
         Wrench(generic["S"], generic["S0"]),
     ):
@@ -107,7 +107,7 @@ def test_diff_differentiates_both_parts():
     assert s.diff(t) == Screw([1, 0, 0], [0, 2 * t, 0])
     assert diff(s, t) == s.diff(t)
     # the derivative of a moving line is not a line vector in general
-    L = LineVector.from_point([0, t, 0], [1, 0, t])
+    L = LineVector.from_axis([0, t, 0], [1, 0, t])
     assert type(L.diff(t)) is Screw
     assert type(Twist([t, 0, 0], [0, 0, 0]).diff(t)) is Twist
 
@@ -195,10 +195,10 @@ def test_decompose_sums_back_and_parts_are_line_and_parallel_couple(generic):
 
 
 def test_decompose_keeps_twist_and_wrench_types():
-    rot, trans = Twist.screw_motion(2, [0, 0, 1], [1, 0, 0], 3).decompose()
+    rot, trans = Twist.from_axis([1, 0, 0], [0, 0, 1], 3, magnitude=2).decompose()
     assert type(rot) is Twist and type(trans) is Twist
     assert trans == Twist.translation([0, 0, 6])
-    force, couple = Wrench.from_axis(2, [0, 0, 1], [1, 0, 0], 3).decompose()
+    force, couple = Wrench.from_axis([1, 0, 0], [0, 0, 1], 3, magnitude=2).decompose()
     assert type(force) is Wrench and couple == Wrench.couple([0, 0, 6])
 
 
@@ -231,7 +231,7 @@ def test_shift_origin_direction_is_pinned(generic):
     shifted = shift_origin(Screw.from_axis(p, S, h), a)
     assert is_zero_matrix((shifted - Screw.from_axis(p - a, S, h)).as_matrix())
     assert cancel(shifted.pitch - h) == 0
-    assert type(shift_origin(LineVector.from_point(p, S), a)) is LineVector
+    assert type(shift_origin(LineVector.from_axis(p, S), a)) is LineVector
 
 
 def test_reciprocal_product_is_1_45_and_symmetric(generic):
@@ -281,8 +281,8 @@ def test_scaling_leaves_pitch_and_axis(generic):
 
 
 def test_result_classes():
-    L1 = LineVector.from_point([0, 0, 0], [1, 0, 0])
-    L2 = LineVector.from_point([0, 0, 1], [0, 1, 0])
+    L1 = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    L2 = LineVector.from_axis([0, 0, 1], [0, 1, 0])
     assert type(L1 + L2) is Screw  # the sum of two lines is a screw in general
     assert type(2 * L1) is LineVector and type(-L1) is LineVector
     assert type(0 * L1) is Screw and 0 * L1 == Screw([0, 0, 0], [0, 0, 0])

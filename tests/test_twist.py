@@ -14,7 +14,7 @@ def vanishes(M):
 
 def test_rotation_is_1_48_and_its_dual_part_is_v_O_1_50():
     S, r = vector("S"), vector("r")
-    T = Twist.rotation(w, S, r)
+    T = Twist.from_axis(r, S, magnitude=w)
     assert T.omega == w * S and vanishes(T.v_O - w * r.cross(S))
     # the body point at O moves with omega x (O - r)
     assert vanishes(T.v_O - (w * S).cross(zeros(3, 1) - r))
@@ -30,15 +30,15 @@ def test_translation():
 
 def test_screw_motion_1_52_1_53_pins_the_sign_of_v_O():
     S, r = vector("S"), vector("r")
-    T = Twist.screw_motion(w, S, r, h)
+    T = Twist.from_axis(r, S, h, magnitude=w)
     assert vanishes(T.v_O - (h * w * S + (w * S).cross(-r)))  # transcription 0.5
     assert vanishes(
-        T.as_matrix() - (Twist.rotation(w, S, r) + Twist.translation(h * w * S)).as_matrix()
+        T.as_matrix() - (Twist.from_axis(r, S, magnitude=w) + Twist.translation(h * w * S)).as_matrix()
     )
 
 
 def test_screw_motion_pitch_1_54():
-    T = Twist.screw_motion(w, vector("S"), vector("r"), h)
+    T = Twist.from_axis(vector("r"), vector("S"), h, magnitude=w)
     from sympy import cancel
 
     assert cancel(pitch(T) - h) == 0
@@ -46,13 +46,13 @@ def test_screw_motion_pitch_1_54():
 
 def test_velocity_at_points_of_the_axis_is_along_the_axis():
     S, r, t = vector("S"), vector("r"), symbols("t", real=True)
-    T = Twist.screw_motion(w, S, r, h)
+    T = Twist.from_axis(r, S, h, magnitude=w)
     v = T.velocity_at(r + t * S)
     assert vanishes(v - h * w * S)
 
 
 def test_velocity_at_is_rigid_body_velocity():
-    T = Twist.rotation(2, [0, 0, 1], [1, 0, 0])
+    T = Twist.from_axis([1, 0, 0], [0, 0, 1], magnitude=2)
     assert T.velocity_at([1, 0, 0]) == ImmutableMatrix([0, 0, 0])
     assert T.velocity_at([2, 0, 0]) == ImmutableMatrix([0, 2, 0])
     assert T.velocity_at([0, 0, 0]) == T.v_O
@@ -60,9 +60,9 @@ def test_velocity_at_is_rigid_body_velocity():
 
 def test_bad_twist_input():
     with pytest.raises(
-        TypeError, match="omega: expected a real number or SymPy expression, got str"
+        TypeError, match="magnitude: expected a real number or SymPy expression, got str"
     ):
-        Twist.rotation("w", [0, 0, 1], [0, 0, 0])
+        Twist.from_axis([0, 0, 0], [0, 0, 1], magnitude="w")
     with pytest.raises(ValueError, match=r"v: expected a 3-vector, got shape \(2,\)"):
         Twist.translation([1, 2])
     with pytest.raises(ValueError, match=r"point: expected a 3-vector, got shape \(6,\)"):

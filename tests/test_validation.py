@@ -102,17 +102,17 @@ ERRORS = [
     (
         lambda: Screw.from_axis([0, 0, 0], [1, 0, 0], "h"),
         TypeError,
-        "h: expected a real number or SymPy expression, got str 'h' (strings are never evaluated)",
+        "pitch: expected a real number or SymPy expression, got str 'h' (strings are never evaluated)",
     ),
     (
         lambda: Screw.from_axis([0, 0, 0], [1, 0, 0], [1]),
         TypeError,
-        "h: expected a real number or SymPy expression, got list [1]",
+        "pitch: expected a real number or SymPy expression, got list [1]",
     ),
     (
         lambda: Screw.from_axis([0, 0, 0], [1, 0, 0], I),
         ValueError,
-        "h: expected a real value, got I",
+        "pitch: expected a real value, got I",
     ),
     (
         lambda: Screw.couple("C"),
@@ -143,7 +143,7 @@ ERRORS = [
     (
         lambda: screwsym.mutual_moment([1, 0, 0, 1, 0, 0], [1, 0, 0, 0, 0, 0]),
         ValueError,
-        "S, S0: a line vector needs S.S0 = 0 (1.10), got S.S0 = 1",
+        "l1: a line vector needs S.S0 = 0 (1.10), got S.S0 = 1",
     ),
     (
         lambda: screwsym.common_normal(LineVector([1, 0, 0], [0, 0, 0]), "L"),
@@ -156,25 +156,25 @@ ERRORS = [
         "point: expected a 3-vector (list, tuple or SymPy Matrix), got str 'p'",
     ),
     (
-        lambda: LineVector.from_point([0, 0, 0], [0, 0, 0]),
+        lambda: LineVector.from_axis([0, 0, 0], [0, 0, 0]),
         ValueError,
-        "S: a line vector needs a non-zero direction S, got [0, 0, 0]",
+        "direction: an axis needs a non-zero direction, got [0, 0, 0]",
     ),
     (
-        lambda: Twist.rotation(1, [0, 0, 1], "r"),
+        lambda: Twist.from_axis("r", [0, 0, 1]),
         TypeError,
-        "r: expected a 3-vector (list, tuple or SymPy Matrix), got str 'r'",
+        "point: expected a 3-vector (list, tuple or SymPy Matrix), got str 'r'",
     ),
     (
-        lambda: Twist.screw_motion(1, [0, 0, 1], [0, 0, 0], I),
+        lambda: Twist.from_axis([0, 0, 0], [0, 0, 1], I),
         ValueError,
-        "h: expected a real value, got I",
+        "pitch: expected a real value, got I",
     ),
-    (lambda: Wrench.force([1, 0, 0], [0, 0]), ValueError, "r: expected a 3-vector, got shape (2,)"),
+    (lambda: Wrench.force([1, 0, 0], point=[0, 0]), ValueError, "point: expected a 3-vector, got shape (2,)"),
     (
-        lambda: Wrench.from_axis("f", [1, 0, 0], [0, 0, 0], 0),
+        lambda: Wrench.from_axis([0, 0, 0], [1, 0, 0], 0, magnitude="f"),
         TypeError,
-        "f: expected a real number or SymPy expression, got str 'f' (strings are never evaluated)",
+        "magnitude: expected a real number or SymPy expression, got str 'f' (strings are never evaluated)",
     ),
     (
         lambda: Wrench.couple([0, 0, 1]).moment_about(7),

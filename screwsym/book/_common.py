@@ -57,15 +57,15 @@ def canonical_pair():
     """
     a12 = symbols("a12", positive=True)
     alpha = symbols("alpha12", real=True)
-    L1 = ss.LineVector.from_point([0, 0, 0], [1, 0, 0])
-    L2 = ss.LineVector.from_point([0, 0, a12], [cos(alpha), sin(alpha), 0])
+    L1 = ss.LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    L2 = ss.LineVector.from_axis([0, 0, a12], [cos(alpha), sin(alpha), 0])
     return L1, L2, a12, alpha
 
 
 def generic_lines():
     """Two generic lines through points ``p``, ``q`` along ``u``, ``w``, via the library."""
     p, q, u, w = vec("p"), vec("q"), vec("u"), vec("w")
-    return ss.LineVector.from_point(p, u), ss.LineVector.from_point(q, w), p, q, u, w
+    return ss.LineVector.from_axis(p, u), ss.LineVector.from_axis(q, w), p, q, u, w
 
 
 def x_axis_and_generic_line():
@@ -76,5 +76,5 @@ def x_axis_and_generic_line():
     normal's radicals small enough to decide quickly.
     """
     q, w = vec("q"), vec("w")
-    L1 = ss.LineVector.from_point([0, 0, 0], [1, 0, 0])
-    return L1, ss.LineVector.from_point(q, w), q, w
+    L1 = ss.LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    return L1, ss.LineVector.from_axis(q, w), q, w

@@ -87,7 +87,7 @@ def _e1_4(c):
 )
 def _e1_5(c):
     L, M, N, r1, S = _LMN()
-    dc = ss.direction_cosines(ss.LineVector.from_point(r1, S))
+    dc = ss.direction_cosines(ss.LineVector.from_axis(r1, S))
     c.zero("(l, m, n) - (L, M, N)/|S|", dc - Matrix([L, M, N]) / sqrt(L**2 + M**2 + N**2))
 
 
@@ -102,13 +102,13 @@ def _e1_5(c):
 )
 def _e1_6(c):
     L, M, N, r1, S = _LMN()
-    l, m, n = ss.direction_cosines(ss.LineVector.from_point(r1, S))
+    l, m, n = ss.direction_cosines(ss.LineVector.from_axis(r1, S))
     c.zero("l^2 + m^2 + n^2 - 1", l**2 + m**2 + n**2 - 1)
 
 
 def _line_r1_S():
     r1, S, r, w = vec("r1"), vec("S"), vec("r"), vec("w")
-    return r1, S, r, w, ss.LineVector.from_point(r1, S)
+    return r1, S, r, w, ss.LineVector.from_axis(r1, S)
 
 
 @statement(
@@ -148,13 +148,13 @@ def _e1_8(c):
     "1.9", _SEC, "Moment of the line about the origin",
     r"\mathbf S_0=\mathbf r_1\times\mathbf S",
     "definition",
-    """LineVector.from_point(r1, S).S0 and LineVector.through(r1, r2).S0 must equal the
+    """LineVector.from_axis(r1, S).S0 and LineVector.through(r1, r2).S0 must equal the
     determinant expansion of r1 x S (S = r2 - r1).""",
     notes=("(S; S0) are the Plücker coordinates of the line.",),
 )
 def _e1_9(c):
     r1, S, r, w, line = _line_r1_S()
-    c.zero("from_point(r1, S).S0 - r1 x S", line.S0 - book_cross(r1, S))
+    c.zero("from_axis(r1, S).S0 - r1 x S", line.S0 - book_cross(r1, S))
     r2 = vec("r2")
     c.zero("through(r1, r2).S0 - r1 x (r2 - r1)",
            ss.LineVector.through(r1, r2).S0 - book_cross(r1, r2 - r1))
@@ -212,7 +212,7 @@ def _det_IJK():
 )
 def _e1_11(c):
     L, M, N, r1, S, I, J, K, det = _det_IJK()
-    S0 = ss.LineVector.from_point(r1, S).S0
+    S0 = ss.LineVector.from_axis(r1, S).S0
     c.zero("det - (P I + Q J + R K)", det - (S0[0] * I + S0[1] * J + S0[2] * K))
 
 
@@ -228,7 +228,7 @@ def _e1_11(c):
 def _e1_12(c):
     L, M, N, r1, S, I, J, K, det = _det_IJK()
     P, Q, R = (det.expand().coeff(X) for X in (I, J, K))
-    S0 = ss.LineVector.from_point(r1, S).S0
+    S0 = ss.LineVector.from_axis(r1, S).S0
     c.zero("S0 - (P i + Q j + R k)", S0 - Matrix([P, Q, R]))
 
 
@@ -244,7 +244,7 @@ def _e1_12(c):
 def _e1_13(c):
     L, M, N, r1, S = _LMN()
     x1, y1, z1 = r1
-    S0 = ss.LineVector.from_point(r1, S).S0
+    S0 = ss.LineVector.from_axis(r1, S).S0
     c.zero("S0 - (y1 N - z1 M, z1 L - x1 N, x1 M - y1 L)",
            S0 - Matrix([y1 * N - z1 * M, z1 * L - x1 * N, x1 * M - y1 * L]))
 
@@ -261,7 +261,7 @@ def _e1_13(c):
 def _e1_14(c):
     L, M, N, r1, S = _LMN()
     x, y, z, t = real("x y z t")
-    P, Q, R = ss.LineVector.from_point(r1, S).S0
+    P, Q, R = ss.LineVector.from_axis(r1, S).S0
     E = Matrix([y * N - z * M - P, z * L - x * N - Q, x * M - y * L - R])
     c.zero("E - (r x S - S0)", E - (book_cross(Matrix([x, y, z]), S) - Matrix([P, Q, R])))
     on = {x: r1[0] + t * L, y: r1[1] + t * M, z: r1[2] + t * N}
@@ -281,7 +281,7 @@ def _e1_14(c):
 )
 def _e1_15(c):
     L, M, N, r1, S = _LMN()
-    P, Q, R = ss.LineVector.from_point(r1, S).S0
+    P, Q, R = ss.LineVector.from_axis(r1, S).S0
     c.zero("L P + M Q + N R", L * P + M * Q + N * R)
 
 
@@ -377,13 +377,13 @@ def _e1_18(c):
 )
 def _e_s0zero(c):
     S = vec("S")
-    line = ss.LineVector.from_point(Z3, S)
+    line = ss.LineVector.from_axis(Z3, S)
     c.zero("S0", line.S0)
     c.zero("foot", ss.foot(line))
     c.zero("distance", ss.distance_to_origin(line))
     c.holds("contains(line, O)", ss.contains(line, Z3))
     r1 = vec("r1")
-    c.nonzero("counter-example: line through r1 has S0 != 0", ss.LineVector.from_point(r1, S).S0)
+    c.nonzero("counter-example: line through r1 has S0 != 0", ss.LineVector.from_axis(r1, S).S0)
 
 
 @statement(

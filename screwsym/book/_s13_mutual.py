@@ -33,22 +33,22 @@ _UNIT = (
     "1.19", _SEC, "Line 1",
     r"\mathbf r_1\times\mathbf S_1=\mathbf S_{01}",
     "definition",
-    "LineVector.from_point(r1, S1).S0 against the determinant expansion of r1 x S1.",
+    "LineVector.from_axis(r1, S1).S0 against the determinant expansion of r1 x S1.",
 )
 def _e1_19(c):
     r1, S1 = vec("r1"), vec("S1")
-    c.zero("S01 - r1 x S1", ss.LineVector.from_point(r1, S1).S0 - book_cross(r1, S1))
+    c.zero("S01 - r1 x S1", ss.LineVector.from_axis(r1, S1).S0 - book_cross(r1, S1))
 
 
 @statement(
     "1.20", _SEC, "Line 2",
     r"\mathbf r_2\times\mathbf S_2=\mathbf S_{02}",
     "definition",
-    "LineVector.from_point(r2, S2).S0 against the determinant expansion of r2 x S2.",
+    "LineVector.from_axis(r2, S2).S0 against the determinant expansion of r2 x S2.",
 )
 def _e1_20(c):
     r2, S2 = vec("r2"), vec("S2")
-    c.zero("S02 - r2 x S2", ss.LineVector.from_point(r2, S2).S0 - book_cross(r2, S2))
+    c.zero("S02 - r2 x S2", ss.LineVector.from_axis(r2, S2).S0 - book_cross(r2, S2))
 
 
 @statement(
@@ -169,7 +169,7 @@ def _e1_25(c):
     c.zero("generic, lines swapped: M + |S1||S2| a21 sin(alpha21)", MG + nn * r.a12 * sin(r.alpha12))
     c.nonzero("counter-example: the opposite sign, M - a12 sin(alpha12)",
               M - cn.a12 * sin(cn.alpha12), at={a12: 1, alpha: pi / 2}, book=True)
-    twice = ss.LineVector.from_point([0, 0, 0], [2, 0, 0])
+    twice = ss.LineVector.from_axis([0, 0, 0], [2, 0, 0])
     c.nonzero("counter-example: |S1| = 2, M + a12 sin(alpha12) without |S1||S2|",
               ss.mutual_moment(twice, L2) + cn.a12 * sin(cn.alpha12), at={a12: 1, alpha: pi / 2})
 
@@ -204,17 +204,17 @@ def _e1_26(c):
 def _e1_27(c):
     cpt, A, B, ra, rb = vec("c"), vec("A"), vec("B"), vec("ra"), vec("rb")
     mu = real("mu")
-    I1, I2 = ss.LineVector.from_point(cpt, A), ss.LineVector.from_point(cpt, B)
+    I1, I2 = ss.LineVector.from_axis(cpt, A), ss.LineVector.from_axis(cpt, B)
     c.zero("intersecting: M", ss.mutual_moment(I1, I2))
     c.holds("intersecting: is_coplanar", ss.is_coplanar(I1, I2))
-    P1, P2 = ss.LineVector.from_point(ra, A), ss.LineVector.from_point(rb, mu * A)
+    P1, P2 = ss.LineVector.from_axis(ra, A), ss.LineVector.from_axis(rb, mu * A)
     c.zero("parallel: M", ss.mutual_moment(P1, P2))
     c.holds("parallel: is_coplanar", ss.is_coplanar(P1, P2))
     L1, L2, a12, alpha = canonical_pair()
     c.nonzero("counter-example: skew canonical pair, M", ss.mutual_moment(L1, L2),
               at={a12: 1, alpha: pi / 2})
-    X = ss.LineVector.from_point([0, 0, 0], [1, 0, 0])
-    anti = ss.LineVector.from_point([0, 1, 0], [-1, 0, 0])
+    X = ss.LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    anti = ss.LineVector.from_axis([0, 1, 0], [-1, 0, 0])
     cn = ss.common_normal(X, anti)
     c.zero("anti-parallel: sin(alpha12)", sin(cn.alpha12))
     c.nonzero("book's \"parallel => alpha12 = 0\" fails: anti-parallel alpha12", cn.alpha12, book=True)

@@ -23,7 +23,7 @@ _SEC = "1.4.1"
 def _e1_28(c):
     r, S, w = vec("r"), vec("S"), vec("w")
     t = real("t")
-    L = ss.LineVector.from_point(r, S)
+    L = ss.LineVector.from_axis(r, S)
     c.zero("(r + t S) x S - S0", book_cross(r + t * S, S) - L.S0)
     c.holds("contains(L, r + t S)", ss.contains(L, r + t * S))
     c.zero("S . S0", book_dot(L.S, L.S0))
@@ -34,7 +34,7 @@ def _e1_28(c):
 
 def _pab():
     p, a, b, S = vec("p"), vec("a"), vec("b"), vec("S")
-    return p, a, b, S, ss.LineVector.from_point(p, S)
+    return p, a, b, S, ss.LineVector.from_axis(p, S)
 
 
 @statement(
@@ -67,7 +67,7 @@ def _e1_30(c):
     t = real("t")
     SA, SB = ss.shift_origin(L, a).S0, ss.shift_origin(L, b).S0
     c.zero("S_A - (S_B + AB x S)", SA - (SB + book_cross(b - a, S)))
-    c.zero("another point of the line: p + t S", ss.shift_origin(ss.LineVector.from_point(p + t * S, S), a).S0 - SA)
+    c.zero("another point of the line: p + t S", ss.shift_origin(ss.LineVector.from_axis(p + t * S, S), a).S0 - SA)
     c.zero("S unchanged", ss.shift_origin(L, a).S - S)
     c.nonzero("Fig. 1.4 caption fails: S_A - S0", SA - L.S0, book=True)
 
@@ -78,7 +78,7 @@ def _e1_30(c):
     r"(a\,b\,0;\ d\,e\,f)&(a\,b\,0;\ d\,e\,0)&(a\,b\,0;\ 0\,0\,c)\\"
     r"(1\,0\,0;\ 0\,a\,b)&(1\,0\,0;\ 0\,1\,0)&(1\,0\,0;\ 0\,0\,0)\end{array}",
     "identity",
-    """Each of the nine forms is built with LineVector.from_point from the point and
+    """Each of the nine forms is built with LineVector.from_axis from the point and
     direction of its geometric meaning; the zero pattern, S . S0 = 0, and the mutual
     moment with the Z axis = S0_z are checked. General line; line meeting (or parallel
     to) the Z axis; line through O; line parallel to XY; line parallel to XY meeting Z
@@ -103,18 +103,18 @@ def _fig_1_5(c):
         "(1 0 0; 0 0 0) the X axis": (Z3, Matrix([1, 0, 0]), [1, 2, 3, 4, 5]),
     }
     for label, (point, direction, zeros_at) in rows.items():
-        L = ss.LineVector.from_point(point, direction)
+        L = ss.LineVector.from_axis(point, direction)
         m = L.as_matrix()
         for k in zeros_at or ():
             c.zero(f"{label}: component {k + 1} is 0", m[k])
         c.zero(f"{label}: S . S0", book_dot(L.S, L.S0))
         c.zero(f"{label}: mutual moment with Z - S0_z", ss.mutual_moment(Z_axis, L) - L.S0[2])
     c.zero("(a b 0; d e f): S0 = (-b Z0, a Z0, b X0 - a Y0)",
-           ss.LineVector.from_point([X0, Y0, Z0], [a, b, 0]).S0 - Matrix([-b * Z0, a * Z0, b * X0 - a * Y0]))
+           ss.LineVector.from_axis([X0, Y0, Z0], [a, b, 0]).S0 - Matrix([-b * Z0, a * Z0, b * X0 - a * Y0]))
     c.zero("(a b 0; d e 0): S0 = Z0 (-b, a, 0)",
-           ss.LineVector.from_point([0, 0, Z0], [a, b, 0]).S0 - Z0 * Matrix([-b, a, 0]))
-    c.zero("(1 0 0; 0 a b) exactly", ss.LineVector.from_point([0, -b, a], [1, 0, 0]).as_matrix()
+           ss.LineVector.from_axis([0, 0, Z0], [a, b, 0]).S0 - Z0 * Matrix([-b, a, 0]))
+    c.zero("(1 0 0; 0 a b) exactly", ss.LineVector.from_axis([0, -b, a], [1, 0, 0]).as_matrix()
            - Matrix([1, 0, 0, 0, a, b]))
-    c.zero("(1 0 0; 0 1 0) exactly", ss.LineVector.from_point([0, 0, 1], [1, 0, 0]).as_matrix()
+    c.zero("(1 0 0; 0 1 0) exactly", ss.LineVector.from_axis([0, 0, 1], [1, 0, 0]).as_matrix()
            - Matrix([1, 0, 0, 0, 1, 0]))
-    c.nonzero("a general line has S0_z != 0", ss.LineVector.from_point(p, S).S0[2])
+    c.nonzero("a general line has S0_z != 0", ss.LineVector.from_axis(p, S).S0[2])

@@ -59,7 +59,7 @@ def _e1_32(c):
     c.zero("shift_origin(from_axis(p, S, h), a) - from_axis(p - a, S, h)",
            ss.shift_origin(ss.Screw.from_axis(p, S, h), a).as_matrix()
            - ss.Screw.from_axis(p - a, S, h).as_matrix())
-    c.zero("moment of a force through a about a", ss.shift_origin(ss.Wrench.force(f, a), a).S0)
+    c.zero("moment of a force through a about a", ss.shift_origin(ss.Wrench.force(f, point=a), a).S0)
     c.nonzero("counter-example: the wrong direction S0 + a x S",
               ss.shift_origin(s, a).S0 - (S0 + book_cross(a, S)))
 
@@ -92,7 +92,7 @@ def _e1_34(c):
            ss.pitch(s) - (l * p + m * q + n * r) / (l**2 + m**2 + n**2))
     a = vec("a")
     c.zero("pitch(shift_origin(s, a)) - pitch(s)", ss.pitch(ss.shift_origin(s, a)) - ss.pitch(s))
-    c.zero("pitch of a line vector", ss.pitch(ss.LineVector.from_point(vec("r"), vec("S"))))
+    c.zero("pitch of a line vector", ss.pitch(ss.LineVector.from_axis(vec("r"), vec("S"))))
     c.holds("pitch of the couple (0; 0 0 1) is oo", ss.pitch(ss.Screw.couple([0, 0, 1])) == oo)
     h = real("h")
     c.zero("pitch(from_axis(r, S, h)) - h", ss.pitch(ss.Screw.from_axis(vec("r"), vec("S"), h)) - h)
@@ -177,7 +177,7 @@ def _e1_38(c):
     c.zero("pitch - h", ss.pitch(s) - h)
     c.zero("axis(s).S0 - r x S", ss.axis(s).S0 - book_cross(r, S))
     c.holds("contains(s, r)", ss.contains(s, r))
-    parts = ss.LineVector.from_point(r, S) + ss.Screw.couple(h * S)
+    parts = ss.LineVector.from_axis(r, S) + ss.Screw.couple(h * S)
     c.zero("(S; S0) + (0; h S) - s", parts.as_matrix() - s.as_matrix())
 
 

@@ -17,7 +17,7 @@ def _two_screws():
 
 def _through_c():
     cpt, A, B = vec("c"), vec("A"), vec("B")
-    return cpt, A, B, ss.LineVector.from_point(cpt, A), ss.LineVector.from_point(cpt, B)
+    return cpt, A, B, ss.LineVector.from_axis(cpt, A), ss.LineVector.from_axis(cpt, B)
 
 
 @statement(
@@ -51,10 +51,10 @@ def _th1_1(c):
     c.zero("if (intersecting): pitch of the sum", ss.pitch(I1 + I2))
     ra, mu = vec("ra"), symbols("mu", positive=True)
     c.zero("if (parallel, S2 = mu S1): pitch of the sum",
-           ss.pitch(ss.LineVector.from_point(ra, A) + ss.LineVector.from_point(cpt, mu * A)))
+           ss.pitch(ss.LineVector.from_axis(ra, A) + ss.LineVector.from_axis(cpt, mu * A)))
     K1, K2, a12, alpha = canonical_pair()
     c.nonzero("only if: skew lines give a non-zero pitch", ss.pitch(K1 + K2), at={a12: 1, alpha: pi / 2})
-    opp = ss.LineVector.from_point([0, 0, 0], [1, 0, 0]) + ss.LineVector.from_point([0, 1, 0], [-1, 0, 0])
+    opp = ss.LineVector.from_axis([0, 0, 0], [1, 0, 0]) + ss.LineVector.from_axis([0, 1, 0], [-1, 0, 0])
     c.holds("coplanar but S1 + S2 = 0: the sum is a couple", ss.classify(opp) == "couple", book=True)
 
 
@@ -78,7 +78,7 @@ def _e1_40(c):
     s = I1 + I2
     c.zero("intersecting", book_dot(s.S, s.S0))
     ra, mu = vec("ra"), real("mu")
-    P = ss.LineVector.from_point(ra, A) + ss.LineVector.from_point(cpt, mu * A)
+    P = ss.LineVector.from_axis(ra, A) + ss.LineVector.from_axis(cpt, mu * A)
     c.zero("parallel", book_dot(P.S, P.S0))
     K1, K2, a12, alpha = canonical_pair()
     c.zero("skew canonical pair: pitch + a12 sin(alpha)/(2 + 2 cos(alpha))",
@@ -104,12 +104,12 @@ def _th1_2(c):
     c.holds("contains(sum, c)", ss.contains(s, cpt))
     q = vec("q")
     t = real("t")
-    G2 = ss.LineVector.from_point(q, B)
+    G2 = ss.LineVector.from_axis(q, B)
     r = cpt + t * A
     sG = I1 + G2
     c.nonzero("counter-example: r on line 1 only, r x (S1 + S2) - (S01 + S02)",
               book_cross(r, sG.S) - sG.S0)
-    z = ss.LineVector.from_point([1, 2, 3], [1, 0, 0]) + ss.LineVector.from_point([1, 2, 3], [-1, 0, 0])
+    z = ss.LineVector.from_axis([1, 2, 3], [1, 0, 0]) + ss.LineVector.from_axis([1, 2, 3], [-1, 0, 0])
     c.holds("S2 = -S1: the sum is the zero screw", ss.classify(z) == "zero")
 
 
@@ -140,11 +140,11 @@ def _e1_41(c):
 )
 def _e1_42(c):
     r1, A, B = vec("r1"), vec("A"), vec("B")
-    L1, L2 = ss.LineVector.from_point(r1, A), ss.LineVector.from_point(r1, B)
+    L1, L2 = ss.LineVector.from_axis(r1, A), ss.LineVector.from_axis(r1, B)
     c.zero("r1 x S1 - S01", book_cross(r1, A) - L1.S0)
     c.zero("r1 x S2 - S02", book_cross(r1, B) - L2.S0)
     c.holds("contains(L1, r1) and contains(L2, r1)", ss.contains(L1, r1) is True and ss.contains(L2, r1) is True)
-    G2 = ss.LineVector.from_point(vec("q"), B)
+    G2 = ss.LineVector.from_axis(vec("q"), B)
     c.nonzero("counter-example: r1 on line 1 only, r1 x S2 - S02", book_cross(r1, B) - G2.S0)
 
 
@@ -157,10 +157,10 @@ def _e1_42(c):
 )
 def _e1_43(c):
     r1, A, B = vec("r1"), vec("A"), vec("B")
-    s = ss.LineVector.from_point(r1, A) + ss.LineVector.from_point(r1, B)
+    s = ss.LineVector.from_axis(r1, A) + ss.LineVector.from_axis(r1, B)
     c.zero("r1 x (S1 + S2) - (S01 + S02)", book_cross(r1, s.S) - s.S0)
-    G2 = ss.LineVector.from_point(vec("q"), B)
-    sG = ss.LineVector.from_point(r1, A) + G2
+    G2 = ss.LineVector.from_axis(vec("q"), B)
+    sG = ss.LineVector.from_axis(r1, A) + G2
     c.zero("r on line 1 only: residual = r1 x S2 - S02",
            (book_cross(r1, sG.S) - sG.S0) - (book_cross(r1, B) - G2.S0))
     c.nonzero("counter-example: r on line 1 only", book_cross(r1, sG.S) - sG.S0)
@@ -180,10 +180,10 @@ def _e1_43(c):
 )
 def _lv_plus_couple(c):
     p, S, C, w = vec("p"), vec("S"), vec("C"), vec("w")
-    L = ss.LineVector.from_point(p, S)
+    L = ss.LineVector.from_axis(p, S)
     c.zero("pitch - S . C/(S . S)", ss.pitch(L + ss.Screw.couple(C)) - book_dot(S, C) / book_dot(S, S))
     c.zero("C = S x w: pitch of the sum", ss.pitch(L + ss.Screw.couple(book_cross(S, w))))
-    X = ss.LineVector.from_point([0, 0, 0], [1, 0, 0])
+    X = ss.LineVector.from_axis([0, 0, 0], [1, 0, 0])
     c.holds("book fails: (1 0 0; 0 0 0) + (0; 0 0 1) is a line",
             ss.classify(X + ss.Screw.couple([0, 0, 1])) == "line", book=True)
     c.nonzero("S . C != 0: pitch of (1 0 0; 0 0 0) + (0; 1 0 0)", ss.pitch(X + ss.Screw.couple([1, 0, 0])))
@@ -244,7 +244,7 @@ def _e1_45(c):
     c.zero("lines: $1 o $2 - mutual moment", ss.reciprocal_product(L1, L2) - ss.mutual_moment(L1, L2))
     om, vO, f, rf, Cw = vec("omega"), vec("v"), vec("f"), vec("rf"), vec("Cw")
     T = ss.Twist(om, vO)
-    W = ss.Wrench.force(f, rf) + ss.Wrench.couple(Cw)
+    W = ss.Wrench.force(f, point=rf) + ss.Wrench.couple(Cw)
     c.zero("power - (f . v(rf) + C . omega)", ss.power(T, W) - (book_dot(f, T.velocity_at(rf)) + book_dot(Cw, om)))
 
 

@@ -13,14 +13,14 @@ _SEC = "1.6"
 def _rot():
     S, r = vec("S"), vec("r")
     w = symbols("omega", real=True, nonzero=True)
-    return S, r, w, ss.Twist.rotation(w, S, r)
+    return S, r, w, ss.Twist.from_axis(r, S, magnitude=w)
 
 
 @statement(
     "1.48", "1.6.1", "Twist of a pure rotation",
     r"\omega\$=\omega(\mathbf S;\ \mathbf S_0)=(\omega\mathbf S;\ \omega\mathbf S_0)",
     "definition",
-    "Twist.rotation(omega, S, r), generic, against (omega S; omega r x S).",
+    "Twist.from_axis(r, S, magnitude=omega), generic, against (omega S; omega r x S).",
 )
 def _e1_48(c):
     S, r, w, T = _rot()
@@ -31,7 +31,7 @@ def _e1_48(c):
     "1.49", "1.6.1", "The rotation axis",
     r"\mathbf r\times\mathbf S=\mathbf S_0",
     "conditional",
-    """Twist.rotation(omega, S, r): every axis point r + t S satisfies (r + t S) x S =
+    """Twist.from_axis(r, S, magnitude=omega): every axis point r + t S satisfies (r + t S) x S =
     S0 (the dual part over omega) and has zero velocity (velocity_at); a point off the
     axis, r + S x u, moves.""",
 )
@@ -47,7 +47,7 @@ def _e1_49(c):
     "1.50", "1.6.1", "The dual part is the velocity of the point at O",
     r"\omega\mathbf S_0=\omega\,\mathbf r\times\mathbf S=\mathbf r\times\boldsymbol\omega=\mathbf v_0",
     "identity",
-    """Twist.rotation(omega, S, r): the dual part equals omega r x S, r x omega_vec, the
+    """Twist.from_axis(r, S, magnitude=omega): the dual part equals omega r x S, r x omega_vec, the
     velocity omega_vec x (O - r) of the body point at O, and velocity_at(O).""",
 )
 def _e1_50(c):
@@ -72,7 +72,7 @@ def _e1_51(c):
     S, r, w, T = _rot()
     c.zero("omega - omega S", T.omega - w * S)
     c.zero("v_O - r x omega", T.v_O - book_cross(r, w * S))
-    c.zero("axis through O: v_O", ss.Twist.rotation(w, S, Z3).v_O)
+    c.zero("axis through O: v_O", ss.Twist.from_axis(Z3, S, magnitude=w).v_O)
     c.nonzero("axis through r != O: v_O", T.v_O)
 
 
@@ -98,7 +98,7 @@ def _screw_motion():
     S, r = vec("S"), vec("r")
     w = symbols("omega", real=True, nonzero=True)
     h = real("h")
-    return S, r, w, h, ss.Twist.screw_motion(w, S, r, h)
+    return S, r, w, h, ss.Twist.from_axis(r, S, h, magnitude=w)
 
 
 @statement(
@@ -106,8 +106,8 @@ def _screw_motion():
     r"\omega_1\$_1=(\omega_1\mathbf S_1;\ \omega_1\mathbf S_{01})+(\mathbf 0;\ v_1\mathbf S_1)"
     r"=(\omega_1\mathbf S_1;\ \omega_1\mathbf S_{01}+h\,\omega_1\mathbf S_1)=\omega_1(\mathbf S_1;\ \mathbf S_1^0)",
     "identity",
-    """Twist.rotation(omega, S, r) + Twist.translation(h omega S) equals
-    Twist.screw_motion(omega, S, r, h) and omega (S; r x S + h S).""",
+    """Twist.from_axis(r, S, magnitude=omega) + Twist.translation(h omega S) equals
+    Twist.from_axis(r, S, h, magnitude=omega) and omega (S; r x S + h S).""",
     errata=("\"instantaneous wrench omega1(S1; S01)\" should read twist (rotation); "
             "\"v2(0; S1)\" should read v1(0; S1); the left side's index i should be 1.",),
     notes=("Review: \"(S1; S01) is unit screw\" is consistent with the book's own \"a line "
@@ -115,7 +115,7 @@ def _screw_motion():
 )
 def _e1_52(c):
     S, r, w, h, T = _screw_motion()
-    parts = ss.Twist.rotation(w, S, r) + ss.Twist.translation(h * w * S)
+    parts = ss.Twist.from_axis(r, S, magnitude=w) + ss.Twist.translation(h * w * S)
     c.zero("rotation + translation - screw_motion", parts.as_matrix() - T.as_matrix())
     c.zero("screw_motion - omega (S; r x S + h S)", T.as_matrix() - stack(w * S, w * (book_cross(r, S) + h * S)))
 
@@ -125,7 +125,7 @@ def _e1_52(c):
     r"\omega_1\$_1=(\boldsymbol\omega_1;\ \mathbf v_0),\qquad \boldsymbol\omega_1=\omega_1\mathbf S_1,"
     r"\ \ \mathbf v_0=\omega_1\mathbf S_1^0=\mathbf r\times\boldsymbol\omega_1+h\,\boldsymbol\omega_1",
     "identity",
-    """Twist.screw_motion(omega, S, r, h): v_O = h omega S + omega S x (O - r) (the
+    """Twist.from_axis(r, S, h, magnitude=omega): v_O = h omega S + omega S x (O - r) (the
     velocity of the body point at O); the velocity at the axis point r is h omega S,
     along S; v_O x omega = (r x omega) x omega, so v_O is parallel to omega when the axis
     passes through O and not otherwise.""",
@@ -139,7 +139,7 @@ def _e1_53(c):
     c.zero("velocity_at(r) - h omega", T.velocity_at(r) - h * wv)
     c.zero("velocity_at(r) x S", book_cross(T.velocity_at(r), S))
     c.zero("v_O x omega - (r x omega) x omega", book_cross(T.v_O, wv) - book_cross(book_cross(r, wv), wv))
-    c.zero("axis through O: v_O x omega", book_cross(ss.Twist.screw_motion(w, S, Z3, h).v_O, wv))
+    c.zero("axis through O: v_O x omega", book_cross(ss.Twist.from_axis(Z3, S, h, magnitude=w).v_O, wv))
     c.nonzero("counter-example: axis off O, v_O x omega", book_cross(T.v_O, wv))
 
 
@@ -148,7 +148,7 @@ def _e1_53(c):
     r"h=\frac{\mathbf S_1\cdot\mathbf S_1^0}{\mathbf S_1\cdot\mathbf S_1}"
     r"=\frac{\boldsymbol\omega_1\cdot\mathbf v_0}{\boldsymbol\omega_1\cdot\boldsymbol\omega_1}",
     "identity",
-    """pitch(Twist.screw_motion(omega, S, r, h)) is h and equals
+    """pitch(Twist.from_axis(r, S, h, magnitude=omega)) is h and equals
     omega . v_O/(omega . omega).""",
 )
 def _e1_54(c):

@@ -40,7 +40,7 @@ _HOW = """Directions S on the unit sphere by the rational stereographic map of (
     r"\dim\{(\mathbf S;\ \mathbf S_0):\ |\mathbf S|=1,\ \mathbf S\cdot\mathbf S_0=0\}=4"
     r"\quad(\infty^4\ \text{lines})",
     "numeric",
-    _HOW.format(what="LineVector.from_point(foot, S)") + """ The constraint map
+    _HOW.format(what="LineVector.from_axis(foot, S)") + """ The constraint map
     (S.S - 1, S.S0) has a Jacobian of rank 2 on the variety, 6 - 2 = 4.""",
     errata=("The book says the six coordinates \"are related by Eqs. (1.6) and (1.11)\"; the "
             "constraints are the normalisation (1.6) (or homogeneity) and the orthogonality "
@@ -48,7 +48,7 @@ _HOW = """Directions S on the unit sphere by the rational stereographic map of (
 )
 def _count_lines(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
-    L = ss.LineVector.from_point(foot, S).as_matrix()
+    L = ss.LineVector.from_axis(foot, S).as_matrix()
     c.zero("rank - 4", _rank(L, (a, b, u, v)) - 4)
     x = Matrix(symbols("x1:7", real=True))
     G = Matrix([book_dot(x[:3, :], x[:3, :]) - 1, book_dot(x[:3, :], x[3:, :])])
@@ -63,13 +63,13 @@ def _count_lines(c):
     r"\dim\{\text{unit line vectors}\}=4;\ (\mathbf S;\ \mathbf S_0)\ \text{and}\ "
     r"(-\mathbf S;\ -\mathbf S_0)\ \text{are the same undirected line}",
     "numeric",
-    _HOW.format(what="LineVector.from_point(foot, S)") + """ The unit line vectors L and -L
+    _HOW.format(what="LineVector.from_axis(foot, S)") + """ The unit line vectors L and -L
     are different vectors on the same line (same foot point).""",
     errata=("One-to-one with directed lines; 2-to-1 (+-) with undirected lines.",),
 )
 def _count_unit_lines(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
-    L = ss.LineVector.from_point(foot, S)
+    L = ss.LineVector.from_axis(foot, S)
     c.zero("rank - 4", _rank(L.as_matrix(), (a, b, u, v)) - 4)
     c.zero("|S|^2 - 1", book_dot(L.S, L.S) - 1)
     c.zero("foot(-L) - foot(L)", ss.foot(-L) - ss.foot(L))
