@@ -87,7 +87,5 @@ def __getattr__(name: str):
     if name in _LAZY_MODULES:
         return importlib.import_module(f".{name}", __name__)
     if name == "lambdify":
-        from .codegen import lambdify
-
-        return lambdify
+        return importlib.import_module(".codegen", __name__).lambdify
     raise AttributeError(f"module 'screwsym' has no attribute {name!r}")

@@ -242,8 +242,15 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str]) -> CommonNormal
         return _common_normal_parts(l1.S, l1.S0, l2.S, l2.S0, None, names)
     # Float lines: decide by the float policy, compute exactly from the numbers given, round
     # once at the end (so nearly parallel lines get their true distance, not cancellation).
+    # The moments are made exactly perpendicular to the directions first: a float line's
+    # S.S0 is zero only up to rounding, and that residue divided by a small |S1 x S2| would
+    # move the distance of nearly parallel lines far more than the rounding moved the lines.
     digits = min(f._prec for m in (l1.as_matrix(), l2.as_matrix()) for f in m.atoms(Float))
-    cn = _common_normal_parts(*(_exact(m) for m in (l1.S, l1.S0, l2.S, l2.S0)), tau, names)
+    S1, S2 = _exact(l1.S), _exact(l2.S)
+    S01, S02 = _exact(l1.S0), _exact(l2.S0)
+    S01 = S01 - S1.dot(S01) / S1.dot(S1) * S1
+    S02 = S02 - S2.dot(S02) / S2.dot(S2) * S2
+    cn = _common_normal_parts(S1, S01, S2, S02, tau, names)
     return cn.func(*(a.evalf(n=max(15, int(digits * 0.30103) + 1)) for a in cn.args))
 
 

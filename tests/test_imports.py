@@ -1,0 +1,126 @@
+"""The package's import graph: no module of screwsym imports another in a circle.
+
+Every ``import`` statement is read from the source, also those inside
+functions (a lazy import still makes a circle of dependencies), and resolved
+to the screwsym module it names.  ``screwsym/__init__.py`` loads its lazy
+subpackages through ``importlib`` on attribute access, which is no import
+statement, so the package may re-export everything while the modules depend
+on each other one way only.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+import screwsym
+
+ROOT = Path(screwsym.__file__).parent
+
+
+def _module_name(path: Path) -> str:
+    parts = list(path.relative_to(ROOT.parent).with_suffix("").parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+def _modules() -> dict[str, Path]:
+    return {_module_name(p): p for p in ROOT.rglob("*.py")}
+
+
+def _resolve(module: str, is_package: bool, node: ast.ImportFrom) -> str:
+    if node.level == 0:
+        return node.module or ""
+    base = module.split(".") if is_package else module.split(".")[:-1]
+    base = base[: len(base) - (node.level - 1)]
+    return ".".join(base + ([node.module] if node.module else []))
+
+
+def import_graph() -> dict[str, set[str]]:
+    """Edges ``module -> screwsym modules it imports`` (statements anywhere in the file)."""
+    modules = _modules()
+    graph: dict[str, set[str]] = {m: set() for m in modules}
+    for module, path in modules.items():
+        is_package = path.name == "__init__.py"
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            targets: list[str] = []
+            if isinstance(node, ast.Import):
+                targets = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom):
+                base = _resolve(module, is_package, node)
+                names = [f"{base}.{a.name}" for a in node.names]
+                # ``from . import sub`` needs the submodule; ``from .m import x`` needs m
+                targets = names if all(n in modules for n in names) else [base]
+            for target in targets:
+                # ``import screwsym.x.y`` depends on the deepest screwsym module named
+                while target and target not in modules and "." in target:
+                    target = target.rsplit(".", 1)[0]
+                if target in modules and target != module:
+                    graph[module].add(target)
+    return graph
+
+
+def find_cycle(graph: dict[str, set[str]]) -> list[str] | None:
+    """A cycle of the graph as a list of nodes (first = last), or None."""
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(node: str) -> list[str] | None:
+        state[node] = 1
+        stack.append(node)
+        for nxt in sorted(graph[node]):
+            if state.get(nxt) == 1:
+                return stack[stack.index(nxt):] + [nxt]
+            if nxt not in state and (cycle := visit(nxt)):
+                return cycle
+        stack.pop()
+        state[node] = 2
+        return None
+
+    for node in sorted(graph):
+        if node not in state and (cycle := visit(node)):
+            return cycle
+    return None
+
+
+def test_no_import_cycles():
+    # the book's registry loads its section modules, which register into it: a plug-in
+    # pattern inside one subpackage, kept out of the core's graph
+    graph = {m: {t for t in ts if not t.startswith("screwsym.book")}
+             for m, ts in import_graph().items() if not m.startswith("screwsym.book")}
+    cycle = find_cycle(graph)
+    assert cycle is None, "import cycle: " + " -> ".join(cycle)
+
+
+def test_the_core_depends_one_way():
+    graph = import_graph()
+    # the base never names a kind of screw
+    assert not graph["screwsym.screw"] & {"screwsym.line", "screwsym.twist", "screwsym.wrench"}
+    assert not graph["screwsym._validation"] & {"screwsym.screw", "screwsym.line"}
+    assert "screwsym.screw" in graph["screwsym.line"]
+
+
+@pytest.mark.parametrize(
+    "graph, cycle",
+    [
+        ({"a": {"b"}, "b": {"c"}, "c": {"a"}}, ["a", "b", "c", "a"]),
+        ({"a": {"b"}, "b": set()}, None),
+        ({"a": {"a"}}, ["a", "a"]),
+    ],
+)
+def test_the_cycle_finder_finds_cycles(graph, cycle):
+    assert find_cycle(graph) == cycle
+
+
+def test_a_lazy_import_counts(tmp_path, monkeypatch):
+    # a function-level import closes a circle as much as a module-level one
+    pkg = tmp_path / "screwsym"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text("")
+    (pkg / "a.py").write_text("from .b import x\n")
+    (pkg / "b.py").write_text("def f():\n    from . import a\n")
+    monkeypatch.setattr(__import__(__name__), "ROOT", pkg)
+    assert find_cycle(import_graph()) == ["screwsym.a", "screwsym.b", "screwsym.a"]
