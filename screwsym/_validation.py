@@ -23,6 +23,7 @@ from ._decide import is_real_where_defined, is_zero, is_zero_scaled, is_zero_vec
 
 __all__ = [
     "check_no_strings",
+    "check_nonzero_vector",
     "check_scalar",
     "check_vector",
     "check_name",
@@ -139,6 +140,13 @@ def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:
     return expr
 
 
+def check_pitch(value: Any, name: str) -> Expr:
+    """:func:`check_scalar` for a finite pitch, with a pointer to ``couple`` for ``oo``."""
+    if getattr(value, "is_infinite", False) or value in (float("inf"), float("-inf")):
+        raise ValueError(f"{name}: expected a finite pitch; build a couple with couple(C)")
+    return check_scalar(value, name)
+
+
 def check_vector(value: Any, name: str) -> ImmutableMatrix:
     """Return ``value`` as a 3x1 ``ImmutableMatrix`` of real expressions.
 
@@ -178,6 +186,23 @@ def check_vector(value: Any, name: str) -> ImmutableMatrix:
         items = [i[0] if isinstance(i, (list, tuple)) and len(i) == 1 else i for i in items]
     entries = [check_scalar(item, f"{name}[{i}]") for i, item in enumerate(items)]
     return ImmutableMatrix(3, 1, entries)
+
+
+def check_nonzero_vector(value: Any, name: str, needs: str) -> ImmutableMatrix:
+    """:func:`check_vector`, and ``ValueError`` when the vector is provably zero.
+
+    ``needs`` says what the zero vector cannot give: "an axis needs a
+    non-zero direction", ...
+
+    >>> check_nonzero_vector([0, 0, 0], "direction", "an axis needs a non-zero direction")
+    Traceback (most recent call last):
+    ...
+    ValueError: direction: an axis needs a non-zero direction, got [0, 0, 0]
+    """
+    v = check_vector(value, name)
+    if is_zero_vector(v) is True:
+        raise ValueError(f"{name}: {needs}, got {list(v)}")
+    return v
 
 
 def check_name(value: Any, name: str) -> str:

@@ -37,7 +37,14 @@ from sympy import Expr, ImmutableMatrix, S, oo, zeros
 
 from ._basic import ScrewsymBasic
 from ._decide import is_zero, is_zero_scaled, is_zero_vector, norm
-from ._validation import check_scalar, check_screw, check_six, check_vector
+from ._validation import (
+    check_nonzero_vector,
+    check_pitch,
+    check_scalar,
+    check_screw,
+    check_six,
+    check_vector,
+)
 
 __all__ = [
     "Screw",
@@ -244,13 +251,9 @@ class Screw(ScrewsymBasic):
         Twist([0, 0, omega], [0, -omega, 0])
         """
         r = check_vector(point, "point")
-        S_ = check_vector(direction, "direction")
-        if getattr(pitch, "is_infinite", False) or pitch in (float("inf"), float("-inf")):
-            raise ValueError("pitch: expected a finite pitch; build a couple with couple(C)")
-        h = check_scalar(pitch, "pitch")
+        S_ = check_nonzero_vector(direction, "direction", "an axis needs a non-zero direction")
+        h = check_pitch(pitch, "pitch")
         m = check_scalar(magnitude, "magnitude")
-        if is_zero_vector(S_) is True:
-            raise ValueError(f"direction: an axis needs a non-zero direction, got {list(S_)}")
         return cls._rebuild(m * S_, m * (r.cross(S_) + h * S_), "point, direction, pitch")
 
     @classmethod

@@ -11,8 +11,7 @@ from typing import Any
 
 from sympy import ImmutableMatrix, zeros
 
-from ._decide import is_zero_vector
-from ._validation import check_vector
+from ._validation import check_nonzero_vector, check_vector
 from .screw import Screw, VectorLike, _shift_origin
 
 __all__ = ["Twist"]
@@ -66,10 +65,8 @@ class Twist(Screw):
         >>> Twist.rotation([0, 0, 2], point=[0, 1, 0])
         Twist([0, 0, 2], [2, 0, 0])
         """
-        omega = check_vector(omega, "omega")
+        omega = check_nonzero_vector(omega, "omega", "a rotation needs a non-zero angular velocity")
         r = check_vector(point, "point")
-        if is_zero_vector(omega) is True:
-            raise ValueError("omega: a rotation needs a non-zero angular velocity, got [0, 0, 0]")
         return cls(omega, r.cross(omega))
 
     @classmethod
@@ -92,12 +89,10 @@ class Twist(Screw):
         >>> Twist.screw_motion([0, 0, 2], point=[0, 0, 0], pitch=3)
         Twist([0, 0, 2], [0, 0, 6])
         """
-        omega = check_vector(omega, "omega")
-        if is_zero_vector(omega) is True:
-            raise ValueError(
-                "omega: a screw motion needs a non-zero angular velocity, got [0, 0, 0]; "
-                "for a translation use Twist.translation(v)"
-            )
+        omega = check_nonzero_vector(
+            omega, "omega", "a screw motion needs a non-zero angular velocity (for a "
+            "translation use Twist.translation(v))"
+        )
         return cls.from_axis(point, omega, pitch)
 
     def velocity_at(self, point: VectorLike) -> ImmutableMatrix:

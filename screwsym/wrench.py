@@ -9,8 +9,7 @@ from __future__ import annotations
 
 from sympy import Expr, ImmutableMatrix
 
-from ._decide import is_zero_vector
-from ._validation import check_screw, check_vector
+from ._validation import check_nonzero_vector, check_screw, check_vector
 from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
 from .twist import Twist
 
@@ -61,10 +60,8 @@ class Wrench(Screw):
         >>> Wrench.force([1, 0, 0], point=[0, 0, 2])
         Wrench([1, 0, 0], [0, 2, 0])
         """
-        f = check_vector(f, "f")
+        f = check_nonzero_vector(f, "f", "a force needs a non-zero vector for its line of action")
         r = check_vector(point, "point")
-        if is_zero_vector(f) is True:
-            raise ValueError("f: a force needs a non-zero vector for its line of action, got [0, 0, 0]")
         return cls(f, r.cross(f))
 
     def moment_about(self, point: VectorLike) -> ImmutableMatrix:

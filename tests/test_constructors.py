@@ -80,8 +80,8 @@ def test_wrench_from_axis_is_the_screws():
         (lambda: Twist.rotation([0, 0, 0], point=[1, 0, 0]),
          "omega: a rotation needs a non-zero angular velocity, got [0, 0, 0]"),
         (lambda: Twist.screw_motion([0, 0, 0], point=[1, 0, 0], pitch=1),
-         "omega: a screw motion needs a non-zero angular velocity, got [0, 0, 0]; "
-         "for a translation use Twist.translation(v)"),
+         "omega: a screw motion needs a non-zero angular velocity (for a translation use "
+         "Twist.translation(v)), got [0, 0, 0]"),
         (lambda: Wrench.force([0, 0, 0], point=[1, 0, 0]),
          "f: a force needs a non-zero vector for its line of action, got [0, 0, 0]"),
         (lambda: LineVector.from_axis([0, 0, 0], [1, 0, 0], 1),
