@@ -15,6 +15,8 @@ Mechanisms* (Springer 2013); docstrings cite its equation numbers.
 import importlib
 
 from ._version import __version__
+from .chain import Chain
+from .displacement import exp, log
 from .line import (
     CommonNormal,
     LineVector,
@@ -38,6 +40,7 @@ from .screw import (
     shift_origin,
     unit,
 )
+from .transform import Transform
 from .twist import Twist
 from .vectors import vector
 from .wrench import Wrench, power
@@ -72,6 +75,11 @@ __all__ = [
     "codegen",
     "numeric",
     "plot",
+    # rigid motions (issue 10)
+    "Transform",
+    "exp",
+    "log",
+    "Chain",
 ]
 
 # Subpackages that pull in more (the book registry, code generation, plotting)

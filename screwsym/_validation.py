@@ -279,3 +279,127 @@ def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple
     dot = S.dot(S0)
     if is_zero_scaled(dot, norm(S) * norm(S0)) is False:
         raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")
+
+
+
+# --------------------------------------------------------------------------
+# Rigid motions (screwsym.transform, screwsym.displacement, screwsym.chain,
+# screwsym.conventions)
+# --------------------------------------------------------------------------
+
+#: symbolic entries larger than this (``count_ops``) are not put through the
+#: exact decision of :func:`check_rotation`; they are accepted undecided
+ROTATION_CHECK_OPS = 400
+
+
+def check_matrix(value: Any, name: str, shape: tuple[int, int]) -> ImmutableMatrix:
+    """Return ``value`` as an ``ImmutableMatrix`` of ``shape`` with real entries.
+
+    Accepts a SymPy matrix, a NumPy array or nested lists of that shape.
+
+    >>> check_matrix([[1, 0], [0, 1]], "M", (2, 2))
+    Matrix([
+    [1, 0],
+    [0, 1]])
+    >>> check_matrix([[1, 0]], "M", (2, 2))
+    Traceback (most recent call last):
+    ...
+    ValueError: M: expected a 2x2 matrix, got shape (1, 2)
+    """
+    if isinstance(value, (str, bytes)) or isinstance(value, Basic) and not isinstance(
+        value, MatrixBase
+    ):
+        raise TypeError(
+            f"{name}: expected a {shape[0]}x{shape[1]} matrix (SymPy Matrix, NumPy array or "
+            f"nested lists), got {_describe(value)}"
+        )
+    if isinstance(value, MatrixBase):
+        got = tuple(value.shape)
+        rows = value.tolist()
+    else:
+        got = _shape_of(value)
+        if got is None:
+            raise TypeError(
+                f"{name}: expected a {shape[0]}x{shape[1]} matrix (SymPy Matrix, NumPy array "
+                f"or nested lists), got {_describe(value)}"
+            )
+        rows = value.tolist() if hasattr(value, "tolist") else list(value)
+        if got == (len(rows),) and all(isinstance(r, (list, tuple)) for r in rows):
+            widths = {len(r) for r in rows}
+            got = (len(rows), widths.pop()) if len(widths) == 1 else (len(rows), -1)
+    if got != shape:
+        raise ValueError(f"{name}: expected a {shape[0]}x{shape[1]} matrix, got shape {got}")
+    entries = [
+        check_scalar(item, f"{name}[{i}, {j}]")
+        for i, row in enumerate(rows)
+        for j, item in enumerate(row)
+    ]
+    return ImmutableMatrix(shape[0], shape[1], entries)
+
+
+def _decide_small(expr: Expr) -> bool | None:
+    """Zero-decision for an entry of ``R^T R - I`` (of size 1 for a rotation).
+
+    Numbers follow the float policy (:func:`screwsym._decide.is_zero_scaled`
+    with scale 1: exact for exact numbers); symbolic entries up to
+    ``ROTATION_CHECK_OPS`` operations are decided exactly, larger ones not at all.
+    """
+    if expr.is_number:
+        return is_zero_scaled(expr, S.One)
+    if expr.count_ops() > ROTATION_CHECK_OPS:
+        return None
+    return is_zero(expr)
+
+
+def check_rotation(value: Any, name: str) -> ImmutableMatrix:
+    """Return ``value`` as a 3x3 rotation matrix, refusing a provably improper one.
+
+    A rotation satisfies ``R^T R = I`` and ``det R = 1``.  Only a provable
+    violation raises: entries that are numbers are decided exactly (floats by
+    the float policy of :func:`screwsym._decide.is_zero_scaled`), symbolic
+    entries with the exact decision of
+    :func:`screwsym._decide.is_zero` when they are no larger than
+    ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
+
+    >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
+    (3, 3)
+    >>> check_rotation([[1, 0, 0], [0, 1, 0], [0, 0, -1]], "R")
+    Traceback (most recent call last):
+    ...
+    ValueError: R: expected a rotation (det R = 1), got det R = -1
+    >>> check_rotation([[1, 1, 0], [0, 1, 0], [0, 0, 1]], "R")
+    Traceback (most recent call last):
+    ...
+    ValueError: R: expected an orthonormal matrix (R^T R = I), got R^T R - I = Matrix([[0, 1, 0], [1, 1, 0], [0, 0, 0]])
+    """
+    R = check_matrix(value, name, (3, 3))
+    gram = R.T * R - ImmutableMatrix.eye(3)
+    if any(_decide_small(e) is False for e in gram):
+        raise ValueError(
+            f"{name}: expected an orthonormal matrix (R^T R = I), got R^T R - I = "
+            f"Matrix({gram.tolist()})"
+        )
+    # R^T R = I leaves det R = +-1; the sign is decided for numeric entries only
+    det = R.det(method="berkowitz") if all(e.is_number for e in R) else None
+    if det is not None and _decide_small(det - 1) is False:
+        raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
+    return R
+
+
+def check_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
+    """Return ``value`` if it is one of the strings ``choices``.
+
+    >>> check_choice("body", "frame", ("space", "body"))
+    'body'
+    >>> check_choice("world", "frame", ("space", "body"))
+    Traceback (most recent call last):
+    ...
+    ValueError: frame: expected one of 'space', 'body', got 'world'
+    """
+    if not isinstance(value, str):
+        raise TypeError(
+            f"{name}: expected one of {', '.join(map(repr, choices))}, got {_describe(value)}"
+        )
+    if value not in choices:
+        raise ValueError(f"{name}: expected one of {', '.join(map(repr, choices))}, got {value!r}")
+    return value

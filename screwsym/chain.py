@@ -1,0 +1,276 @@
+r"""Serial chains by the product of exponentials: forward kinematics and Jacobians.
+
+Explanation
+===========
+
+A serial chain of ``n`` one-degree-of-freedom joints is given by the joint
+twists ``$_1 ... $_n`` at the home configuration, all in the space (base)
+frame, and the home pose ``M`` of the end frame.  A revolute joint's twist is
+the unit line vector of its axis ``(omega; r x omega)``, a prismatic joint's
+is ``(0; v)`` with a unit ``v``, a helical joint's has pitch ``h``
+``(omega; r x omega + h omega)``.  With joint variables ``q`` (angles, or
+lengths for prismatic joints), Brockett's product of exponentials gives
+
+    T(q) = exp($_1, q_1) ... exp($_n, q_n) M,
+
+and the space Jacobian's column ``i`` is joint ``i``'s twist carried to the
+current configuration, ``Ad(exp($_1, q_1) ... exp($_{i-1}, q_{i-1})) $_i``:
+the twist of the current joint axis in ray order ``(omega; v_O)``, so that the
+end body's twist is ``J_s(q) dq/dt``.  The body Jacobian has the same
+columns expressed in the end frame, ``J_b = Ad(T(q)^-1) J_s``.
+
+The results are exact SymPy expressions in ``q`` (symbols or numbers),
+tidied without ``simplify``: each column is built from the current axis
+direction and a current point of the axis (so the moment is one cross
+product), and each entry is expanded, relieved of ``sin^2 + cos^2`` pairs and
+its products of sines and cosines gathered into sines and cosines of sums
+(SymPy's ``fu`` rule ``TR10i``).  For numbers over many poses, pass them to
+:func:`screwsym.lambdify`.
+
+References
+==========
+
+R. W. Brockett, "Robotic manipulators and the product of exponentials
+formula", 1984.  Lynch & Park, *Modern Robotics*, Cambridge 2017, Sections
+4.1 and 5.1.  Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer
+2013, Section 1.6 (twists).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from sympy import Expr, ImmutableMatrix, Pow, Tuple, cos, count_ops, expand, sin, zeros
+from sympy.simplify.fu import TR10i
+
+from ._basic import ScrewsymBasic
+from ._decide import is_zero_vector
+from ._validation import check_choice, check_scalar, check_screw
+from .displacement import exp
+from .screw import foot, pitch
+from .transform import Transform
+from .twist import Twist
+
+__all__ = ["Chain", "tidy"]
+
+
+def _pythagoras(e: Expr) -> Expr:
+    """Replace ``sin(a)**2`` by ``1 - cos(a)**2`` where both squares occur, if that is shorter."""
+    squares = {
+        p.base.args[0]
+        for p in e.atoms(Pow)
+        if p.exp == 2 and isinstance(p.base, sin)
+    }
+    both = [a for a in squares if e.has(cos(a) ** 2)]
+    if not both:
+        return e
+    candidate = expand(e.xreplace({sin(a) ** 2: 1 - cos(a) ** 2 for a in both}))
+    return candidate if count_ops(candidate) < count_ops(e) else e
+
+
+def tidy(e: Any) -> Expr:
+    r"""Tidy a trigonometric polynomial without ``simplify``.
+
+    ``expand``; then ``sin(a)^2 -> 1 - cos(a)^2`` where both squares occur and
+    that shortens the expression; then products of sines and cosines gathered
+    into sines and cosines of sums (``sympy.simplify.fu.TR10i``).  The result
+    equals the input identically (each step is an identity).
+
+    >>> from sympy import symbols, sin, cos
+    >>> from screwsym.chain import tidy
+    >>> a, b = symbols("a b", real=True)
+    >>> tidy(cos(a)*cos(b) - sin(a)*sin(b) + 3*sin(b)**2 + 3*cos(b)**2)
+    cos(a + b) + 3
+    """
+    e = expand(e)
+    if not e.has(sin, cos):
+        return e
+    return TR10i(_pythagoras(e))
+
+
+def _tidy_matrix(m: ImmutableMatrix) -> ImmutableMatrix:
+    return ImmutableMatrix(m.applyfunc(tidy))
+
+
+def _tidy_transform(T: Transform) -> Transform:
+    return Transform._new(_tidy_matrix(T.R), _tidy_matrix(T.p))
+
+
+def _carried_column(T: Transform, twist: Twist) -> ImmutableMatrix:
+    """``Ad(T) $`` built from the carried axis: ``(R w; (R r + p) x R w + h R w)``, tidied.
+
+    Equal to ``T.adjoint() * $.as_matrix()``; a revolute or helical twist is
+    carried through a point of its axis and its pitch (which the motion keeps),
+    a prismatic one ``(0; v)`` as the direction ``R v``.
+    """
+    if is_zero_vector(twist.omega) is True:
+        return ImmutableMatrix.vstack(zeros(3, 1), _tidy_matrix(T.R * twist.v_O))
+    w = _tidy_matrix(T.R * twist.omega)
+    r = _tidy_matrix(T.R * foot(twist) + T.p)
+    h = pitch(twist)
+    return ImmutableMatrix.vstack(w, _tidy_matrix(r.cross(w) + h * w))
+
+
+class Chain(ScrewsymBasic):
+    r"""A serial chain: joint twists at home, in the space frame, and the home pose.
+
+    Explanation
+    ===========
+
+    ``args == (twists, home)``: a SymPy ``Tuple`` of :class:`~screwsym.twist.Twist`
+    (revolute, prismatic or helical joints, base to tip) and the home
+    :class:`~screwsym.transform.Transform` ``M`` of the end frame.  See the
+    module docstring for the formulas.  The joint twists need not be unit
+    twists; a unit twist makes ``q`` an angle (revolute, helical) or a length
+    (prismatic).
+
+    Examples
+    ========
+
+    A planar two-link arm (links 1 and 1, both joints about z):
+
+    >>> from sympy import symbols
+    >>> from screwsym import Chain, Transform, Twist
+    >>> q1, q2 = symbols("q1 q2", real=True)
+    >>> arm = Chain([Twist.rotation(1, [0, 0, 1], [0, 0, 0]),
+    ...              Twist.rotation(1, [0, 0, 1], [1, 0, 0])],
+    ...             Transform.translation([2, 0, 0]))
+    >>> arm.forward([q1, q2]).p.T
+    Matrix([[cos(q1) + cos(q1 + q2), sin(q1) + sin(q1 + q2), 0]])
+    >>> arm.jacobian([q1, q2])
+    Matrix([
+    [0,        0],
+    [0,        0],
+    [1,        1],
+    [0,  sin(q1)],
+    [0, -cos(q1)],
+    [0,        0]])
+    >>> arm.jacobian([q1, q2], frame="body")[3:, :]
+    Matrix([
+    [    sin(q2), 0],
+    [cos(q2) + 1, 1],
+    [          0, 0]])
+
+    Parameters
+    ==========
+
+    twists : sequence of Twist (or 6-vectors (omega; v_O))
+        The joint twists at the home configuration, in the space frame.
+    home : Transform, optional
+        The end frame's pose at home (default the identity).
+
+    See Also
+    ========
+
+    screwsym.displacement.exp, screwsym.transform.Transform.adjoint
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, twists: Sequence[Any], home: Transform | None = None):
+        if isinstance(twists, (str, bytes)) or not isinstance(twists, (Sequence, Tuple)):
+            raise TypeError(
+                f"twists: expected a sequence of twists, got {type(twists).__name__}"
+            )
+        if len(twists) == 0:
+            raise ValueError("twists: expected at least one joint twist, got none")
+        joints = Tuple(*(check_screw(t, f"twists[{i}]", Twist) for i, t in enumerate(twists)))
+        for i, t in enumerate(joints):
+            if is_zero_vector(t.as_matrix()) is True:
+                raise ValueError(f"twists[{i}]: a joint twist cannot be zero, got {t}")
+        if home is None:
+            home = Transform.identity()
+        if not isinstance(home, Transform):
+            raise TypeError(f"home: expected a Transform, got {type(home).__name__}")
+        return ScrewsymBasic.__new__(cls, joints, home)
+
+    @property
+    def twists(self) -> tuple[Twist, ...]:
+        """The joint twists at home, base to tip, in the space frame."""
+        return tuple(self.args[0])
+
+    @property
+    def home(self) -> Transform:
+        """The end frame's pose at the home configuration."""
+        return self.args[1]
+
+    @property
+    def dof(self) -> int:
+        """The number of joints."""
+        return len(self.args[0])
+
+    def body_twists(self) -> tuple[Twist, ...]:
+        """The joint twists at home in the end frame, ``Ad(M^-1) $_i``.
+
+        >>> from screwsym import Chain, Transform, Twist
+        >>> Chain([Twist([0, 0, 1], [0, 0, 0])], Transform.translation([1, 0, 0])).body_twists()
+        (Twist([0, 0, 1], [0, 1, 0]),)
+        """
+        Minv = self.home.inverse()
+        return tuple(Minv.apply(t) for t in self.twists)
+
+    def _check_q(self, q: Any) -> tuple[Expr, ...]:
+        if isinstance(q, (str, bytes)) or not hasattr(q, "__len__"):
+            raise TypeError(
+                f"q: expected a sequence of {self.dof} joint values, got {type(q).__name__}"
+            )
+        values = list(q)
+        if len(values) != self.dof:
+            raise ValueError(f"q: expected {self.dof} joint values, got {len(values)}")
+        return tuple(check_scalar(v, f"q[{i}]") for i, v in enumerate(values))
+
+    def forward(self, q: Any) -> Transform:
+        r"""The forward kinematics ``T(q) = exp($_1, q_1) ... exp($_n, q_n) M``, tidied.
+
+        >>> from sympy import pi
+        >>> from screwsym import Chain, Transform, Twist
+        >>> arm = Chain([Twist.rotation(1, [0, 0, 1], [0, 0, 0])], Transform.translation([1, 0, 0]))
+        >>> arm.forward([pi/2])
+        Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[0, 1, 0])
+        """
+        q = self._check_q(q)
+        T = Transform.identity()
+        for twist, qi in zip(self.twists, q, strict=True):
+            T = _tidy_transform(T @ exp(twist, qi))
+        return _tidy_transform(T @ self.home)
+
+    def jacobian(self, q: Any, frame: str = "space") -> ImmutableMatrix:
+        r"""The 6 x n Jacobian in ray order, ``frame="space"`` or ``"body"``, tidied.
+
+        Column ``i`` is joint ``i``'s twist at the configuration ``q``,
+        ``(omega_i; v_i)``: in the space frame (moments about the base origin)
+        for ``"space"``, in the end frame (moments about the end frame's origin)
+        for ``"body"``.  The twist of the end body is ``J dq/dt``.
+
+        >>> from sympy import symbols
+        >>> from screwsym import Chain, Twist
+        >>> q = symbols("q1 q2", real=True)
+        >>> Chain([Twist([0, 0, 1], [0, 0, 0]), Twist([0, 0, 0], [1, 0, 0])]).jacobian(q)
+        Matrix([
+        [0,        0],
+        [0,        0],
+        [1,        0],
+        [0,  cos(q1)],
+        [0,  sin(q1)],
+        [0,        0]])
+        """
+        q = self._check_q(q)
+        frame = check_choice(frame, "frame", ("space", "body"))
+        columns: list[ImmutableMatrix] = []
+        T = Transform.identity()
+        if frame == "space":
+            for twist, qi in zip(self.twists, q, strict=True):
+                columns.append(_carried_column(T, twist))
+                T = _tidy_transform(T @ exp(twist, qi))
+        else:
+            # J_b column i = Ad(exp(-B_n q_n) ... exp(-B_{i+1} q_{i+1})) B_i
+            for twist, qi in zip(reversed(self.body_twists()), reversed(q), strict=True):
+                columns.append(_carried_column(T, twist))
+                T = _tidy_transform(T @ exp(twist, -qi))
+            columns.reverse()
+        return ImmutableMatrix.hstack(*columns)
+
+    def _sympystr(self, printer) -> str:
+        twists = ", ".join(printer._print(t) for t in self.twists)
+        return f"Chain([{twists}], {printer._print(self.home)})"

@@ -1,0 +1,210 @@
+r"""Finite screw displacements: :func:`exp` of a twist and :func:`log` of a motion.
+
+Explanation
+===========
+
+Every rigid motion is a screw displacement (Mozzi 1763, Chasles 1830): a
+turn by an angle ``theta`` about a line together with a slide ``h theta``
+along it.  With the unit twist ``$ = (omega; r x omega + h omega)`` of that
+screw (1.52, 1.53), the motion is the matrix exponential of the twist's 4x4
+matrix ``[$] = [[[omega]x, v_O], [0, 0]]`` times ``theta``:
+
+    exp($, theta) = (R, (I - R) r + h theta omega),   R = Rodrigues(omega, theta),
+
+and a twist of infinite pitch ``(0; v)`` gives the translation by
+``theta v``.  :func:`log` inverts it: the axis, pitch and angle of a given
+motion, with the identity, the pure translations and the half-turns handled
+exactly.
+
+References
+==========
+
+Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, (1.48)-(1.53).
+Lynch & Park, *Modern Robotics*, Cambridge 2017, Section 3.3.3 (Proposition 3.25).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from sympy import Expr, ImmutableMatrix, S, acos, cos, pi, sin, sqrt, zeros
+
+from ._decide import is_zero, is_zero_vector
+from ._validation import check_scalar, check_screw
+from .transform import Transform, skew
+from .twist import Twist
+
+__all__ = ["exp", "log", "se3_matrix"]
+
+
+def se3_matrix(twist: Any) -> ImmutableMatrix:
+    r"""The 4x4 matrix ``[[[omega]x, v_O], [0, 0]]`` of a twist (an element of se(3)).
+
+    ``d/dt exp($, t) = [$] exp($, t)``.
+
+    >>> from screwsym import Twist
+    >>> from screwsym.displacement import se3_matrix
+    >>> se3_matrix(Twist([0, 0, 1], [1, 0, 0]))
+    Matrix([
+    [0, -1, 0, 1],
+    [1,  0, 0, 0],
+    [0,  0, 0, 0],
+    [0,  0, 0, 0]])
+    """
+    t = check_screw(twist, "twist", Twist)
+    top = skew(t.omega).row_join(t.v_O)
+    return ImmutableMatrix(top.col_join(zeros(1, 4)))
+
+
+def exp(twist: Any, theta: Any) -> Transform:
+    r"""The finite screw displacement ``exp([$] theta)`` of a twist: a :class:`Transform`.
+
+    Explanation
+    ===========
+
+    For a twist ``$ = (omega; v_O)`` with ``omega != 0``, with
+    ``w = |omega|``, the axis point ``r = omega x v_O / (omega . omega)`` (1.16)
+    and the pitch ``h = omega . v_O / (omega . omega)`` (1.34):
+
+        R = I + sin(w theta)/w K + (1 - cos(w theta))/w^2 K^2,   K = [omega]x,
+        p = (I - R) r + h theta omega,
+
+    the turn by ``w theta`` about the axis with the slide ``h w theta`` along it;
+    for a unit ``omega`` (``w = 1``) the turn is ``theta``.  A twist whose
+    ``omega`` is provably zero (infinite pitch) gives the translation by
+    ``theta v_O``.  This is the matrix exponential of ``[$] theta``
+    (:func:`se3_matrix`), exact for symbolic ``theta`` and twists.  When
+    ``omega`` is symbolic and not provably zero, the formula above is
+    returned: it holds where ``omega != 0``.
+
+    Examples
+    ========
+
+    >>> from sympy import pi, symbols
+    >>> from screwsym import Twist, exp
+    >>> t = symbols("theta", real=True)
+    >>> hinge = Twist.rotation(1, [0, 0, 1], [1, 0, 0])    # unit twist of a hinge on x = 1
+    >>> exp(hinge, pi/2)
+    Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[1, -1, 0])
+    >>> exp(Twist.screw_motion(1, [0, 0, 1], [0, 0, 0], 2), t)   # pitch 2: a helix
+    Transform(R=[[cos(theta), -sin(theta), 0], [sin(theta), cos(theta), 0], [0, 0, 1]], p=[0, 0, 2*theta])
+    >>> exp(Twist.translation([1, 0, 0]), t).p.T
+    Matrix([[theta, 0, 0]])
+
+    Parameters
+    ==========
+
+    twist : Twist (or a 6-vector (omega; v_O))
+    theta : real number or expression
+
+    See Also
+    ========
+
+    log, se3_matrix, screwsym.transform.Transform
+    """
+    t = check_screw(twist, "twist", Twist)
+    theta = check_scalar(theta, "theta")
+    omega, v = t.omega, t.v_O
+    if is_zero_vector(omega) is True:
+        return Transform._new(ImmutableMatrix.eye(3), theta * v)
+    ww = omega.dot(omega)
+    w = sqrt(ww)
+    K = skew(omega)
+    R = ImmutableMatrix.eye(3) + (sin(w * theta) / w) * K + ((1 - cos(w * theta)) / ww) * (K * K)
+    r = omega.cross(v) / ww
+    h = omega.dot(v) / ww
+    p = (ImmutableMatrix.eye(3) - R) * r + (h * theta) * omega
+    if all(e.is_number for e in p) or is_zero(ww - 1) is True:
+        p = p.applyfunc(lambda e: e.expand())
+    return Transform._new(R, p)
+
+
+def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
+    """The unit axis and ``sin`` of the angle of ``R``, whose angle's cosine is ``c``."""
+    s = sqrt(1 - c**2)
+    if is_zero(c + 1) is True:
+        # a half-turn: R = I + 2 K^2, so omega omega^T = (R + I)/2; pick a column with a
+        # non-zero diagonal (the sign of the axis does not matter for a half-turn)
+        P = (R + ImmutableMatrix.eye(3)) / 2
+        for i in range(3):
+            if is_zero(P[i, i]) is False:
+                return P[:, i] / sqrt(P[i, i]), s
+        raise ValueError(f"T: cannot decide the axis of this half-turn, R = {R.tolist()}")
+    vee = ImmutableMatrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s
+
+
+def log(T: Any) -> tuple[Twist, Expr]:
+    r"""The screw of a rigid motion (Mozzi-Chasles): a unit twist and an angle.
+
+    Explanation
+    ===========
+
+    Returns ``(twist, theta)`` with ``exp(twist, theta) == T``:
+
+    * a rotation by ``theta`` in ``(0, pi]`` (``cos theta = (tr R - 1)/2``):
+      the unit twist ``(omega; r x omega + h omega)`` of the screw axis, ``|omega| = 1``.
+      Its axis point is ``r = p_perp/2 + sin(theta)/(2 (1 - cos theta)) omega x p``, with
+      ``p_perp`` the part of ``p`` perpendicular to ``omega``, and its pitch is
+      ``h = omega . p / theta``.  A half-turn (``theta = pi``) takes its axis
+      from ``(R + I)/2 = omega omega^T``; of the two opposite axes, the one
+      whose first non-zero component is positive;
+    * a pure translation ``(I, p)``: the twist ``(0; p/|p|)`` of infinite
+      pitch and ``theta = |p|``;
+    * the identity: the zero twist and ``theta = 0``.
+
+    Exact: the angle is ``acos((tr R - 1)/2)`` (a number such as ``pi/3`` when
+    SymPy knows it), the axis and the moment are exact algebraic numbers.
+    For a symbolic motion whose cases the symbols do not decide, the formula
+    of the first case is returned: it holds where ``0 < theta < pi``.
+
+    Examples
+    ========
+
+    >>> from sympy import pi
+    >>> from screwsym import Transform, Twist, exp, log
+    >>> T = Transform.rotation([0, 0, 1], pi/2, point=[1, 0, 0]) @ Transform.translation([0, 0, 3])
+    >>> log(T)                             # the axis x = 1, y = 0, pitch 3/(pi/2)
+    (Twist([0, 0, 1], [0, -1, 6/pi]), pi/2)
+    >>> twist, theta = log(T)
+    >>> exp(twist, theta).equals(T)
+    True
+    >>> log(Transform.rotation([1, 0, 0], pi))
+    (Twist([1, 0, 0], [0, 0, 0]), pi)
+    >>> log(Transform.translation([3, 4, 0]))
+    (Twist([0, 0, 0], [3/5, 4/5, 0]), 5)
+
+    See Also
+    ========
+
+    exp
+    """
+    if not isinstance(T, Transform):
+        raise TypeError(f"T: expected a Transform, got {type(T).__name__}")
+    R, p = T.R, T.p
+    c = (R.trace() - 1) / 2
+    if is_zero_vector(R - ImmutableMatrix.eye(3)) is True:
+        if is_zero_vector(p) is True:
+            return Twist(zeros(3, 1), zeros(3, 1)), S.Zero
+        d = sqrt(p.dot(p))
+        return Twist(zeros(3, 1), (p / d).applyfunc(_expand_number)), d
+    theta = pi if is_zero(c + 1) is True else acos(c)
+    omega, s = _rotation_axis(R, c)
+    if is_zero(c + 1) is True:
+        # fix the sign: the first non-zero component positive
+        for e in omega:
+            if is_zero(e) is False:
+                if e.is_negative:
+                    omega = -omega
+                break
+    along = omega.dot(p)
+    p_perp = p - along * omega
+    r = p_perp / 2 + (s / (2 * (1 - c))) * omega.cross(p)
+    h = along / theta
+    v = r.cross(omega) + h * omega
+    return Twist(omega, v.applyfunc(_expand_number)), theta
+
+
+def _expand_number(e: Expr) -> Expr:
+    return e.expand() if e.is_number else e
+

@@ -1,0 +1,382 @@
+r"""Rigid motions SE(3): :class:`Transform`, and the adjoint that moves screws.
+
+Explanation
+===========
+
+A rigid motion ``T = (R, p)`` maps a point ``x`` to ``R x + p``; as a 4x4
+matrix it is ``[[R, p], [0, 1]]``.  Read as a pose, ``T`` is the frame B
+seen from frame A: the columns of ``R`` are B's axes and ``p`` is B's origin,
+both in A's coordinates.
+
+In the book's ray order every screw moves with the same 6x6 matrix, the
+adjoint
+
+    Ad(T) = [[R, 0], [[p]x R, R]]
+
+a line vector ``(S; S0)``, a twist ``(omega; v_O)`` and a wrench
+``(f; C_O)`` alike: the direction part turns, ``S' = R S``, and the moment part
+is turned and taken about the new origin, ``S0' = R S0 + p x R S`` (the origin
+shift (1.32) after a rotation).  ``T.apply`` does this for screws and is
+``R x + p`` for points and ``R x`` for directions.
+
+Everything a :class:`Transform` is lives in its ``args`` ``(R, p)`` (a 3x3 and
+a 3x1 ``ImmutableMatrix``), and exact values stay exact: a rotation about a
+symbolic angle is Rodrigues' formula in ``sin`` and ``cos`` of that angle.
+
+References
+==========
+
+Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, (1.32).
+Lynch & Park, *Modern Robotics*, Cambridge 2017, Sections 3.3 and 3.4.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from sympy import Expr, ImmutableMatrix, cos, sin, sqrt, trigsimp, zeros
+
+from ._basic import ScrewsymBasic
+from ._decide import is_zero_vector
+from ._validation import (
+    check_matrix,
+    check_rotation,
+    check_scalar,
+    check_vector,
+)
+from .screw import Screw
+
+__all__ = ["Transform", "skew", "adjoint"]
+
+VectorLike = Any
+
+
+def skew(v: VectorLike) -> ImmutableMatrix:
+    r"""The 3x3 matrix ``[v]x`` with ``[v]x w = v x w``.
+
+    >>> from screwsym.transform import skew
+    >>> skew([1, 2, 3])
+    Matrix([
+    [ 0, -3,  2],
+    [ 3,  0, -1],
+    [-2,  1,  0]])
+    """
+    x, y, z = check_vector(v, "v")
+    return ImmutableMatrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+
+
+def _tidy(e: Expr) -> Expr:
+    """``trigsimp`` where there is trigonometry (``sin^2 + cos^2``), else the entry itself."""
+    return trigsimp(e) if e.has(sin, cos) else e
+
+
+class Transform(ScrewsymBasic):
+    r"""A rigid motion (an element of SE(3)): ``x -> R x + p``.
+
+    Explanation
+    ===========
+
+    ``args == (R, p)``: ``R`` a 3x3 rotation, ``p`` a 3x1 translation, both
+    ``ImmutableMatrix``.  A rotation part that is provably not orthonormal
+    with determinant 1 is refused (see
+    :func:`screwsym._validation.check_rotation`: exact for numbers, exact for
+    small symbolic entries, undecided large symbolic entries are accepted).
+    Composition is ``T1 @ T2`` (first ``T2``, then ``T1``), as for the 4x4
+    matrices.
+
+    Examples
+    ========
+
+    >>> from sympy import pi, symbols
+    >>> from screwsym import Transform, Twist
+    >>> t = symbols("theta", real=True)
+    >>> T = Transform.rotation([0, 0, 1], t, point=[1, 0, 0])   # a hinge on x = 1
+    >>> T.R
+    Matrix([
+    [cos(theta), -sin(theta), 0],
+    [sin(theta),  cos(theta), 0],
+    [         0,           0, 1]])
+    >>> T.apply([1, 0, 0]).T                    # the hinge stays put
+    Matrix([[1, 0, 0]])
+    >>> Q = Transform.rotation([0, 0, 1], pi/2) @ Transform.translation([1, 0, 0])
+    >>> Q
+    Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[0, 1, 0])
+    >>> Q.apply(Twist.rotation(1, [1, 0, 0], [0, 0, 0]))   # the x axis turned onto y
+    Twist([0, 1, 0], [0, 0, 0])
+    >>> Transform([[1, 1, 0], [0, 1, 0], [0, 0, 1]], [0, 0, 0])
+    Traceback (most recent call last):
+    ...
+    ValueError: R: expected an orthonormal matrix (R^T R = I), got R^T R - I = Matrix([[0, 1, 0], [1, 1, 0], [0, 0, 0]])
+
+    Parameters
+    ==========
+
+    R : 3x3 matrix
+        The rotation (SymPy matrix, NumPy array or nested lists).
+    p : 3-vector
+        The translation.
+
+    See Also
+    ========
+
+    screwsym.displacement.exp, screwsym.displacement.log, screwsym.chain.Chain
+    """
+
+    __slots__ = ()
+
+    # above Matrix's 10.01 and Screw's 20, so ``matrix @ T`` and ``T @ screw`` come here
+    _op_priority = 30.0
+    __array_ufunc__ = None
+
+    def __new__(cls, R: Any, p: VectorLike):
+        return cls._new(check_rotation(R, "R"), check_vector(p, "p"))
+
+    @classmethod
+    def _new(cls, R: ImmutableMatrix, p: ImmutableMatrix) -> Transform:
+        """Build from parts already known to be a rotation and a 3x1 vector (no checks)."""
+        return ScrewsymBasic.__new__(cls, ImmutableMatrix(R), ImmutableMatrix(p))
+
+    # ------------------------------------------------------------ constructors
+    @classmethod
+    def identity(cls) -> Transform:
+        """The identity motion.
+
+        >>> Transform.identity()
+        Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[0, 0, 0])
+        """
+        return cls._new(ImmutableMatrix.eye(3), zeros(3, 1))
+
+    @classmethod
+    def translation(cls, d: VectorLike) -> Transform:
+        """The translation by ``d``.
+
+        >>> Transform.translation([1, 2, 3]).apply([0, 0, 0]).T
+        Matrix([[1, 2, 3]])
+        """
+        return cls._new(ImmutableMatrix.eye(3), check_vector(d, "d"))
+
+    @classmethod
+    def rotation(cls, axis: VectorLike, angle: Any, *, point: VectorLike = None) -> Transform:
+        r"""The rotation by ``angle`` about the line through ``point`` along ``axis``.
+
+        Rodrigues' formula ``R = I + sin(angle) K + (1 - cos(angle)) K^2`` with
+        ``K = [u]x`` for the unit axis ``u = axis/|axis|``, and ``p = (I - R) point``
+        so that the points of the line stay put.  Right-handed about ``axis``.
+        Exact for symbolic angles and axes; a non-unit axis brings its length
+        ``|axis|`` (a root) into the formula.  A zero axis is refused.
+
+        >>> from sympy import pi
+        >>> Transform.rotation([1, 1, 0], pi).R         # a half-turn about x = y
+        Matrix([
+        [0, 1,  0],
+        [1, 0,  0],
+        [0, 0, -1]])
+        """
+        axis = check_vector(axis, "axis")
+        angle = check_scalar(angle, "angle")
+        if is_zero_vector(axis) is True:
+            raise ValueError(f"axis: expected a non-zero direction, got {list(axis)}")
+        n = sqrt(axis.dot(axis))
+        K = skew(axis / n)
+        R = ImmutableMatrix.eye(3) + sin(angle) * K + (1 - cos(angle)) * (K * K)
+        R = R.applyfunc(lambda e: e.expand() if e.is_number else e)
+        if point is None:
+            return cls._new(R, zeros(3, 1))
+        point = check_vector(point, "point")
+        return cls._new(R, (ImmutableMatrix.eye(3) - R) * point)
+
+    @classmethod
+    def from_matrix(cls, M: Any) -> Transform:
+        """The transform of the 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
+
+        >>> Transform.from_matrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
+        Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[5, 0, 0])
+        >>> Transform.from_matrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]])
+        Traceback (most recent call last):
+        ...
+        ValueError: M: expected the last row [0, 0, 0, 1], got [0, 0, 1, 1]
+        """
+        M = check_matrix(M, "M", (4, 4))
+        last = list(M[3, :])
+        if last != [0, 0, 0, 1]:
+            raise ValueError(f"M: expected the last row [0, 0, 0, 1], got {last}")
+        return cls(check_rotation(M[:3, :3], "M[:3, :3]"), M[:3, 3])
+
+    # ------------------------------------------------------------------ parts
+    @property
+    def R(self) -> ImmutableMatrix:
+        """The rotation part, a 3x3 ``ImmutableMatrix``."""
+        return self.args[0]
+
+    @property
+    def p(self) -> ImmutableMatrix:
+        """The translation part, a 3x1 ``ImmutableMatrix``."""
+        return self.args[1]
+
+    @property
+    def matrix(self) -> ImmutableMatrix:
+        """The 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
+
+        >>> Transform.translation([1, 2, 3]).matrix
+        Matrix([
+        [1, 0, 0, 1],
+        [0, 1, 0, 2],
+        [0, 0, 1, 3],
+        [0, 0, 0, 1]])
+        """
+        top = self.R.row_join(self.p)
+        return ImmutableMatrix(top.col_join(ImmutableMatrix([[0, 0, 0, 1]])))
+
+    # -------------------------------------------------------------- the group
+    def __matmul__(self, other):
+        """``T1 @ T2 = (R1 R2, R1 p2 + p1)``: first ``T2``, then ``T1``."""
+        if not isinstance(other, Transform):
+            return NotImplemented
+        return Transform._new(self.R * other.R, self.R * other.p + self.p)
+
+    def __rmatmul__(self, other):
+        raise TypeError(
+            f"cannot compose a {type(other).__name__} with a Transform; use T.matrix for the 4x4"
+        )
+
+    def __mul__(self, other):
+        raise TypeError("compose transforms with '@' (T1 @ T2), and move objects with T.apply(x)")
+
+    __rmul__ = __mul__
+
+    def inverse(self) -> Transform:
+        """``T^-1 = (R^T, -R^T p)``.
+
+        >>> T = Transform.rotation([0, 0, 1], 1, point=[1, 2, 0])
+        >>> (T @ T.inverse()).equals(Transform.identity())
+        True
+        """
+        Rt = self.R.T
+        return Transform._new(Rt, -(Rt * self.p))
+
+    def adjoint(self) -> ImmutableMatrix:
+        r"""The 6x6 matrix ``[[R, 0], [[p]x R, R]]`` that moves ray-order screws.
+
+        It maps a line vector ``(S; S0)``, a twist ``(omega; v_O)`` and a
+        wrench ``(f; C_O)`` alike (the same matrix for all three, because in
+        ray order the direction part comes first): ``Ad(T) s`` is ``s`` carried
+        by the motion ``T``.  ``Ad(T1 @ T2) = Ad(T1) Ad(T2)``.
+
+        >>> Transform.translation([0, 0, 1]).adjoint()
+        Matrix([
+        [1,  0, 0, 0, 0, 0],
+        [0,  1, 0, 0, 0, 0],
+        [0,  0, 1, 0, 0, 0],
+        [0, -1, 0, 1, 0, 0],
+        [1,  0, 0, 0, 1, 0],
+        [0,  0, 0, 0, 0, 1]])
+        """
+        return adjoint(self)
+
+    def apply(self, obj: Any, *, direction: bool = False):
+        r"""Carry ``obj`` by the motion: a point, a direction, or any screw.
+
+        * a 3-vector is a point, ``R x + p`` (a 3x1 matrix back), or with
+          ``direction=True`` a free vector, ``R x``;
+        * a :class:`~screwsym.screw.Screw` (a line vector, twist or wrench, or
+          a general screw) comes back as the same kind, ``Ad(T) [S; S0]``:
+          ``(R S; R S0 + p x R S)``;
+        * a :class:`Transform` ``X`` is composed, ``T @ X``.
+
+        A bare 6-vector is refused: say what it is with ``Screw.from_matrix``
+        (or ``Twist``/``Wrench``/``LineVector``) first.
+
+        >>> from screwsym import LineVector, Wrench
+        >>> T = Transform.translation([0, 0, 1])
+        >>> T.apply(LineVector.from_point([0, 0, 0], [1, 0, 0]))
+        LineVector([1, 0, 0], [0, 1, 0])
+        >>> T.apply([1, 0, 0]).T, T.apply([1, 0, 0], direction=True).T
+        (Matrix([[1, 0, 1]]), Matrix([[1, 0, 0]]))
+        >>> T.apply([1, 0, 0, 0, 0, 0])
+        Traceback (most recent call last):
+        ...
+        TypeError: obj: expected a point or direction (3-vector), a screw or a Transform, got list [1, 0, 0, 0, 0, 0]; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix or Wrench.from_matrix
+        """
+        if isinstance(obj, Transform):
+            return self @ obj
+        if isinstance(obj, Screw):
+            S = self.R * obj.S
+            S0 = self.R * obj.S0 + self.p.cross(S)
+            return type(obj)(S, S0)
+        shape = getattr(obj, "shape", None) or (
+            (len(obj),) if isinstance(obj, (list, tuple)) else None
+        )
+        if shape not in ((3,), (3, 1), (1, 3)):
+            from ._validation import _describe
+
+            raise TypeError(
+                "obj: expected a point or direction (3-vector), a screw or a Transform, got "
+                f"{_describe(obj)}; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix "
+                "or Wrench.from_matrix"
+            )
+        x = check_vector(obj, "obj")
+        return ImmutableMatrix(self.R * x) if direction else ImmutableMatrix(self.R * x + self.p)
+
+    def equals(self, other: Any) -> bool | None:
+        """Whether the two motions are equal mathematically: True, False or None.
+
+        ``==`` compares structure, as everywhere in SymPy.
+
+        >>> from sympy import pi
+        >>> Transform.rotation([0, 0, 1], 2*pi).equals(Transform.identity())
+        True
+        """
+        if not isinstance(other, Transform):
+            raise TypeError(f"other: expected a Transform, got {type(other).__name__}")
+        diff = (self.matrix - other.matrix).applyfunc(_tidy)
+        return is_zero_vector(diff)
+
+    # ------------------------------------------------------- SymPy integration
+    def applyfunc(self, f) -> Transform:
+        """Apply ``f`` to every entry of ``R`` and ``p`` (e.g. ``trigsimp``); checked again."""
+        return Transform(self.R.applyfunc(f), self.p.applyfunc(f))
+
+    def _eval_simplify(self, **kwargs):
+        return Transform._new(self.R.simplify(**kwargs), self.p.simplify(**kwargs))
+
+    def _eval_diff_parts(self, *symbols, **kwargs):
+        """The derivative of the 4x4 matrix (a derivative of a motion is not a motion).
+
+        >>> from sympy import symbols
+        >>> t = symbols("t", real=True)
+        >>> Transform.translation([t, t**2, 0]).diff(t)
+        Matrix([
+        [0, 0, 0,   1],
+        [0, 0, 0, 2*t],
+        [0, 0, 0,   0],
+        [0, 0, 0,   0]])
+        """
+        return self.matrix.diff(*symbols, **kwargs)
+
+    def _eval_evalf_parts(self, n: int = 15, **options):
+        return Transform(self.R.evalf(n, **options), self.p.evalf(n, **options))
+
+    def _sympystr(self, printer) -> str:
+        rows = ", ".join(
+            "[" + ", ".join(printer._print(e) for e in self.R.row(i)) + "]" for i in range(3)
+        )
+        p = ", ".join(printer._print(e) for e in self.p)
+        return f"Transform(R=[{rows}], p=[{p}])"
+
+    def _latex(self, printer) -> str:
+        return printer._print(self.matrix)
+
+
+def adjoint(T: Transform) -> ImmutableMatrix:
+    r"""The 6x6 adjoint ``[[R, 0], [[p]x R, R]]`` of ``T`` in ray order; see :meth:`Transform.adjoint`.
+
+    >>> from screwsym.transform import adjoint
+    >>> from screwsym import Transform
+    >>> adjoint(Transform.identity()) == ImmutableMatrix.eye(6)
+    True
+    """
+    if not isinstance(T, Transform):
+        raise TypeError(f"T: expected a Transform, got {type(T).__name__}")
+    top = T.R.row_join(zeros(3, 3))
+    bottom = (skew(T.p) * T.R).row_join(T.R)
+    return ImmutableMatrix(top.col_join(bottom))
