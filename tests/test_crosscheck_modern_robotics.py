@@ -1,0 +1,203 @@
+"""Rigid motions checked against implementations nobody here wrote.
+
+modern_robotics (Lynch & Park's reference code for *Modern Robotics*,
+Cambridge 2017, ``modern_robotics/core.py``) and pytransform3d
+(``pytransform3d/transformations``) are numeric, so the comparison is in
+floating point: screwsym's exact results are evaluated and compared with a
+tolerance here, in the test, never as a verdict inside the library.  Both
+write twists ``(omega; v)`` like the book's ray order; modern_robotics writes
+wrenches moment first ``(m; f)``, converted with :func:`screwsym.convert`.
+
+Each check runs on 200 seeded random exact motions (rotations from rational
+quaternions, rational translations) and twists (rational, non-unit omega).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from sympy import Matrix, Rational, pi, symbols
+
+from screwsym import Chain, Transform, Twist, Wrench, convert, exp, lambdify, log, power
+
+from _motions import random_transform, random_twist, rational_vector, to_float
+
+mr = pytest.importorskip("modern_robotics")
+
+N = 200
+
+
+def _rng(seed: int) -> np.random.Generator:
+    return np.random.default_rng(seed)
+
+
+def test_apply_and_adjoint_agree_with_mr_adjoint():
+    rng = _rng(101)
+    for _ in range(N):
+        T = random_transform(rng)
+        twist, wrench = Twist(*(rational_vector(rng) for _ in "ab")), Wrench(
+            *(rational_vector(rng) for _ in "ab")
+        )
+        Tf = to_float(T.matrix)
+        Ad = mr.Adjoint(Tf)
+        np.testing.assert_allclose(to_float(T.adjoint()), Ad, atol=1e-12)
+        # twists move with Ad(T) in (omega; v) order
+        moved = to_float(convert(T.apply(twist), to="modern_robotics")).ravel()
+        np.testing.assert_allclose(
+            moved, Ad @ to_float(convert(twist, to="modern_robotics")).ravel(), atol=1e-12
+        )
+        # wrenches, (m; f) in modern_robotics, move with Ad(T^-1)^T (Modern Robotics (3.95))
+        moved = to_float(convert(T.apply(wrench), to="modern_robotics")).ravel()
+        expected = mr.Adjoint(mr.TransInv(Tf)).T @ to_float(
+            convert(wrench, to="modern_robotics")
+        ).ravel()
+        np.testing.assert_allclose(moved, expected, atol=1e-11)
+        # and the power of a wrench on a twist is the plain dot product in MR's layout
+        dot = float(
+            to_float(convert(wrench, to="modern_robotics")).ravel()
+            @ to_float(convert(twist, to="modern_robotics")).ravel()
+        )
+        assert abs(dot - float(power(twist, wrench))) < 1e-10
+
+
+def test_exp_agrees_with_mr_matrix_exp6():
+    rng = _rng(202)
+    for _ in range(N):
+        twist = random_twist(rng)
+        theta = Rational(int(rng.integers(-40, 41)), 9)
+        ours = to_float(exp(twist, theta).matrix)
+        se3 = mr.VecTose3(to_float(twist.as_matrix()).ravel() * float(theta))
+        np.testing.assert_allclose(ours, mr.MatrixExp6(se3), atol=1e-11)
+
+
+def test_exp_of_a_translation_agrees_with_mr():
+    rng = _rng(203)
+    for _ in range(20):
+        v = rational_vector(rng)
+        theta = Rational(int(rng.integers(-40, 41)), 9)
+        se3 = mr.VecTose3(np.r_[0.0, 0, 0, np.array(v, dtype=float)] * float(theta))
+        np.testing.assert_allclose(
+            to_float(exp(Twist([0, 0, 0], v), theta).matrix), mr.MatrixExp6(se3), atol=1e-12
+        )
+
+
+def _assert_same_log(T, ours, theirs, half_turn: bool) -> int:
+    """Compare exponential coordinates; a half-turn has two right answers (opposite axes)."""
+    if not half_turn:
+        np.testing.assert_allclose(ours, theirs, atol=1e-9)
+        return 0
+    np.testing.assert_allclose(np.abs(ours[:3]), np.abs(theirs[:3]), atol=1e-9)
+    for coords in (ours, theirs):
+        np.testing.assert_allclose(
+            mr.MatrixExp6(mr.VecTose3(coords)), to_float(T.matrix), atol=1e-9
+        )
+    return 1
+
+
+def test_log_agrees_with_mr_matrix_log6():
+    rng = _rng(303)
+    half_turns = 0
+    for _ in range(N):
+        T = random_transform(rng)  # a quaternion with a zero real part is a half-turn
+        twist, theta = log(T)
+        ours = to_float(twist.as_matrix()).ravel() * float(theta)
+        theirs = mr.se3ToVec(mr.MatrixLog6(to_float(T.matrix)))
+        assert float(theta) > 0 and abs(np.linalg.norm(to_float(twist.omega)) - 1) < 1e-12
+        half_turns += _assert_same_log(T, ours, theirs, theta == pi)
+    assert half_turns >= 3
+
+
+def test_pytransform3d_exp_adjoint_and_log_agree():
+    pt = pytest.importorskip("pytransform3d.transformations")
+    rng = _rng(404)
+    for _ in range(N):
+        twist = random_twist(rng)
+        theta = Rational(int(rng.integers(-40, 41)), 9)
+        Stheta = to_float(twist.as_matrix()).ravel() * float(theta)
+        np.testing.assert_allclose(
+            to_float(exp(twist, theta).matrix),
+            pt.transform_from_exponential_coordinates(Stheta),
+            atol=1e-10,
+        )
+        T = random_transform(rng)
+        Tf = to_float(T.matrix)
+        np.testing.assert_allclose(to_float(T.adjoint()), pt.adjoint_from_transform(Tf), atol=1e-12)
+        u, angle = log(T)
+        ours = to_float(u.as_matrix()).ravel() * float(angle)
+        theirs = pt.exponential_coordinates_from_transform(Tf)
+        _assert_same_log(T, ours, theirs, angle == pi)
+
+
+# -------------------------------------------------------------------------
+# The UR5 of Modern Robotics, Example 4.5 (dimensions in metres, exact)
+# -------------------------------------------------------------------------
+
+W1, W2 = Rational(109, 1000), Rational(82, 1000)
+L1, L2 = Rational(425, 1000), Rational(392, 1000)
+H1, H2 = Rational(89, 1000), Rational(95, 1000)
+UR5_HOME = [[-1, 0, 0, L1 + L2], [0, 0, 1, W1 + W2], [0, 1, 0, H1 - H2], [0, 0, 0, 1]]
+UR5_S = [
+    (0, 0, 1, 0, 0, 0),
+    (0, 1, 0, -H1, 0, 0),
+    (0, 1, 0, -H1, 0, L1),
+    (0, 1, 0, -H1, 0, L1 + L2),
+    (0, 0, -1, -W1, L1 + L2, 0),
+    (0, 1, 0, H2 - W2, 0, L1 + L2),
+]
+
+
+@pytest.fixture(scope="module")
+def ur5():
+    chain = Chain([Twist.from_matrix(s) for s in UR5_S], Transform.from_matrix(UR5_HOME))
+    q = Matrix(symbols("q1:7", real=True))
+    fk = chain.forward(list(q)).matrix
+    js = chain.jacobian(list(q))
+    jb = chain.jacobian(list(q), frame="body")
+    functions = lambdify([q], (fk, js, jb), names=["q"])
+    return chain, functions
+
+
+def _mr_ur5():
+    M = np.array(UR5_HOME, dtype=float)
+    Slist = np.array(UR5_S, dtype=float).T
+    Blist = mr.Adjoint(mr.TransInv(M)) @ Slist
+    return M, Slist, Blist
+
+
+def test_ur5_kinematics_and_jacobians_agree_with_mr(ur5):
+    _, functions = ur5
+    M, Slist, Blist = _mr_ur5()
+    rng = _rng(505)
+    Q = rng.uniform(-np.pi, np.pi, size=(N, 6))
+    fk, js, jb = functions(Q)  # one batched call for all the poses
+    for k in range(N):
+        np.testing.assert_allclose(fk[k], mr.FKinSpace(M, Slist, Q[k]), atol=1e-12)
+        np.testing.assert_allclose(fk[k], mr.FKinBody(M, Blist, Q[k]), atol=1e-12)
+        np.testing.assert_allclose(js[k], mr.JacobianSpace(Slist, Q[k]), atol=1e-12)
+        np.testing.assert_allclose(jb[k], mr.JacobianBody(Blist, Q[k]), atol=1e-12)
+
+
+def test_ur5_exact_numbers_agree_with_mr(ur5):
+    """The exact path with numbers for q (no symbols, no lambdify)."""
+    chain, _ = ur5
+    M, Slist, Blist = _mr_ur5()
+    rng = _rng(606)
+    for _ in range(3):
+        q = [Rational(int(n), 7) for n in rng.integers(-21, 22, size=6)]
+        qf = np.array(q, dtype=float)
+        np.testing.assert_allclose(
+            to_float(chain.forward(q).matrix), mr.FKinSpace(M, Slist, qf), atol=1e-12
+        )
+        np.testing.assert_allclose(
+            to_float(chain.jacobian(q, frame="body")), mr.JacobianBody(Blist, qf), atol=1e-12
+        )
+
+
+def test_the_comparison_can_fail(ur5):
+    """A wrong home pose, or a Jacobian in the wrong frame, is caught by the same checks."""
+    _, functions = ur5
+    M, Slist, Blist = _mr_ur5()
+    q = np.array([0.3, -0.2, 0.5, 0.1, 0.7, -0.4])
+    fk, js, jb = functions(q)
+    assert not np.allclose(js, mr.JacobianBody(Blist, q), atol=1e-6)
+    assert not np.allclose(fk, mr.FKinSpace(np.eye(4), Slist, q), atol=1e-6)
