@@ -16,6 +16,7 @@ import importlib
 
 from ._version import __version__
 from .chain import Chain
+from .conventions import convert, convert_from
 from .displacement import exp, log
 from .line import (
     CommonNormal,
@@ -80,6 +81,8 @@ __all__ = [
     "exp",
     "log",
     "Chain",
+    "convert",
+    "convert_from",
 ]
 
 # Subpackages that pull in more (the book registry, code generation, plotting)

@@ -198,9 +198,9 @@ class Transform(ScrewsymBasic):
         """
         M = check_matrix(M, "M", (4, 4))
         last = list(M[3, :])
-        if last != [0, 0, 0, 1]:
+        if any((e - target).is_zero is not True for e, target in zip(last, (0, 0, 0, 1))):
             raise ValueError(f"M: expected the last row [0, 0, 0, 1], got {last}")
-        return cls(check_rotation(M[:3, :3], "M[:3, :3]"), M[:3, 3])
+        return cls._new(check_rotation(M[:3, :3], "M[:3, :3]"), M[:3, 3])
 
     # ------------------------------------------------------------------ parts
     @property

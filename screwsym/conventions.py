@@ -1,0 +1,175 @@
+r"""The neighbours' conventions: :func:`convert` to their layouts and :func:`convert_from` back.
+
+Explanation
+===========
+
+screwsym writes every screw in the book's ray order, direction part first:
+a twist ``(omega; v_O)``, a wrench ``(f; C_O)``.  The robotics libraries
+order their 6-vectors by what the parts *are* (angular or linear) rather
+than by the line geometry, and not all alike:
+
+================  ==========================  ============================  =====================
+convention        motion (twist, screw axis)  force (wrench)                transform (4x4)
+================  ==========================  ============================  =====================
+modern_robotics   ``(omega; v)``              ``(m; f)``, moment first      pose ``[[R, p], [0, 1]]``
+pytransform3d     ``(omega; v)``              ``(m; f)``, moment first      pose ``[[R, p], [0, 1]]``
+spatialmath       ``(v; omega)``, linear 1st  ``(f; m)``, force first       pose ``[[R, p], [0, 1]]``
+pinocchio         ``(v; omega)``, linear 1st  ``(f; m)``, force first       pose ``[[R, p], [0, 1]]``
+featherstone      ``(omega; v_O)``            ``(n_O; f)``, moment first    coordinate transform
+                                                                            ``[[R^T, -R^T p], [0, 1]]``
+================  ==========================  ============================  =====================
+
+``v`` (``v_O``) is the velocity of the body point at the origin and ``m``
+(``n_O``) the moment about the origin in every row, as in screwsym; only the
+order differs.  A screwsym twist and the neighbours' motion vectors agree up
+to the order of the halves; a screwsym wrench ``(f; C_O)`` is *force first*,
+which modern_robotics, pytransform3d and Featherstone write moment first.  A
+general :class:`~screwsym.screw.Screw` or a
+:class:`~screwsym.line.LineVector` is converted as a motion (a screw axis).
+Featherstone's 4x4 matrix (``pluho`` in his spatial_v2) is the coordinate
+transform from the base frame A to the moved frame B, the inverse of the
+pose ``T`` of B in A that the others use.
+
+Sources (read for this table): modern_robotics ``core.py`` (``VecTose3``: a
+twist ``V = (omega, v)``; ``InverseDynamics``: ``tau_i = F_i . A_i``, so a
+wrench ``F = (m, f)``); pytransform3d ``transformations/_screws.py``
+(``check_screw_axis``: ``(omega_1, omega_2, omega_3, v_1, v_2, v_3)``) and
+``_transform.py`` (``adjoint_from_transform``: wrenches move by
+``Ad^T``, so ``(m, f)``); spatialmath-python ``spatialmath/twist.py``
+(``Twist3``: "translational components first", ``v = S[:3]``,
+``w = S[3:6]``) and ``spatialmath/spatialvector.py`` ("Compared to
+Featherstone's papers these spatial vectors have the translational
+components first"); pinocchio ``include/pinocchio/spatial/motion-tpl.hpp``
+and ``force-tpl.hpp`` (``LINEAR = 0, ANGULAR = 3``); Featherstone's
+spatial_v2 ``spatial/crm.m`` (motion ``(omega; v)``), ``crf.m``
+(``crf = -crm'``: force ``(n; f)``) and ``pluho.m`` (``T = [E, -E r; 0 1]``).
+
+Every conversion is a permutation (or, for Featherstone's transform, the
+exact inverse), so round trips are exact.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+from sympy import ImmutableMatrix
+
+from ._validation import check_choice, check_six
+from .line import LineVector
+from .screw import Screw
+from .transform import Transform
+from .twist import Twist
+from .wrench import Wrench
+
+__all__ = ["convert", "convert_from", "CONVENTIONS", "Convention"]
+
+
+class Convention(NamedTuple):
+    """How one library lays out motion vectors, force vectors and transforms."""
+
+    #: True when a motion vector is written angular part first, ``(omega; v)``
+    motion_angular_first: bool
+    #: True when a force vector is written moment first, ``(m; f)``
+    force_moment_first: bool
+    #: True when the 4x4 matrix is the coordinate transform, the inverse of the pose
+    transform_inverse: bool
+
+
+CONVENTIONS: dict[str, Convention] = {
+    "modern_robotics": Convention(True, True, False),
+    "pytransform3d": Convention(True, True, False),
+    "spatialmath": Convention(False, False, False),
+    "pinocchio": Convention(False, False, False),
+    "featherstone": Convention(True, True, True),
+}
+
+_KINDS = (Screw, LineVector, Twist, Wrench, Transform)
+
+
+def _swap(first: ImmutableMatrix, second: ImmutableMatrix, swap: bool) -> ImmutableMatrix:
+    return ImmutableMatrix.vstack(second, first) if swap else ImmutableMatrix.vstack(first, second)
+
+
+def convert(obj: Any, to: str) -> ImmutableMatrix:
+    r"""``obj`` in the layout of another library: a 6x1 matrix, or 4x4 for a transform.
+
+    Explanation
+    ===========
+
+    ``to`` is one of ``"modern_robotics"``, ``"pytransform3d"``,
+    ``"spatialmath"``, ``"pinocchio"``, ``"featherstone"``; the layouts are
+    in the module docstring's table.  A twist, line vector or screw is
+    converted as a motion vector, a wrench as a force vector, a
+    :class:`~screwsym.transform.Transform` to the library's 4x4 matrix.
+    Exact: entries are only reordered (and, for Featherstone's transform,
+    inverted exactly).  :func:`convert_from` is the inverse.
+
+    Examples
+    ========
+
+    >>> from screwsym import Twist, Wrench, Transform, convert
+    >>> t = Twist([0, 0, 1], [1, 2, 3])                  # (omega; v_O)
+    >>> convert(t, to="modern_robotics").T, convert(t, to="pinocchio").T
+    (Matrix([[0, 0, 1, 1, 2, 3]]), Matrix([[1, 2, 3, 0, 0, 1]]))
+    >>> w = Wrench([0, 0, 5], [7, 0, 0])                 # (f; C_O)
+    >>> convert(w, to="modern_robotics").T, convert(w, to="spatialmath").T
+    (Matrix([[7, 0, 0, 0, 0, 5]]), Matrix([[0, 0, 5, 7, 0, 0]]))
+    >>> convert(Transform.translation([1, 0, 0]), to="featherstone")[:3, 3].T
+    Matrix([[-1, 0, 0]])
+
+    Parameters
+    ==========
+
+    obj : Twist, Wrench, LineVector, Screw or Transform
+    to : str
+
+    See Also
+    ========
+
+    convert_from
+    """
+    to = check_choice(to, "to", tuple(CONVENTIONS))
+    c = CONVENTIONS[to]
+    if isinstance(obj, Transform):
+        return (obj.inverse() if c.transform_inverse else obj).matrix
+    if isinstance(obj, Wrench):
+        return _swap(obj.f, obj.C_O, c.force_moment_first)
+    if isinstance(obj, Screw):
+        return _swap(obj.S, obj.S0, not c.motion_angular_first)
+    raise TypeError(
+        "obj: expected a Twist, Wrench, LineVector, Screw or Transform, "
+        f"got {type(obj).__name__}"
+    )
+
+
+def convert_from(value: Any, source: str, kind: type) -> Any:
+    r"""The screwsym object of ``kind`` from ``value`` in the layout of ``source``.
+
+    The inverse of :func:`convert`: ``convert_from(convert(x, to=c), c, type(x)) == x``
+    for every ``x`` and every convention ``c``.  ``value`` is a 6-vector (list,
+    tuple, SymPy matrix or NumPy array) for a screw, twist or wrench, a 4x4
+    matrix for a transform.
+
+    >>> from screwsym import Twist, Wrench, convert_from
+    >>> convert_from([1, 2, 3, 0, 0, 1], "spatialmath", Twist)       # (v; omega)
+    Twist([0, 0, 1], [1, 2, 3])
+    >>> convert_from([7, 0, 0, 0, 0, 5], "featherstone", Wrench)     # (n_O; f)
+    Wrench([0, 0, 5], [7, 0, 0])
+    >>> convert_from([1, 2, 3, 0, 0, 1], "spatialmath", dict)
+    Traceback (most recent call last):
+    ...
+    TypeError: kind: expected one of Screw, LineVector, Twist, Wrench, Transform, got dict
+    """
+    source = check_choice(source, "source", tuple(CONVENTIONS))
+    if not (isinstance(kind, type) and kind in _KINDS):
+        raise TypeError(
+            f"kind: expected one of {', '.join(k.__name__ for k in _KINDS)}, "
+            f"got {getattr(kind, '__name__', type(kind).__name__)}"
+        )
+    c = CONVENTIONS[source]
+    if kind is Transform:
+        T = Transform.from_matrix(value)
+        return T.inverse() if c.transform_inverse else T
+    first, second = check_six(value, "value")
+    swap = c.force_moment_first if kind is Wrench else not c.motion_angular_first
+    return kind(second, first) if swap else kind(first, second)

@@ -1,0 +1,243 @@
+"""Transform: SE(3) with exact values, the ray-order adjoint and apply."""
+
+from __future__ import annotations
+
+import pickle
+
+import numpy as np
+import pytest
+from _motions import quaternion_rotation, random_transform, rational_vector
+from sympy import (
+    Float,
+    ImmutableMatrix,
+    Matrix,
+    Rational,
+    cancel,
+    latex,
+    pi,
+    sqrt,
+    symbols,
+    trigsimp,
+)
+
+from screwsym import (
+    LineVector,
+    Screw,
+    Transform,
+    Twist,
+    Wrench,
+    pitch,
+    power,
+    reciprocal_product,
+    shift_origin,
+    vector,
+)
+from screwsym.transform import adjoint, skew
+
+t, u = symbols("theta phi", real=True)
+
+
+def zero_matrix(m) -> bool:
+    """Exact zero of every entry after trigsimp and cancel (a checker that can fail)."""
+    return all(cancel(trigsimp(e)) == 0 for e in m)
+
+
+def test_zero_matrix_checker_rejects_a_wrong_identity():
+    assert not zero_matrix(Matrix([trigsimp(1) - 1 + t]))
+    assert zero_matrix(Matrix([t * (t + 1) - t**2 - t]))
+
+
+# ------------------------------------------------------------------ constructors
+def test_symbolic_rotation_is_exactly_a_rotation():
+    T = Transform.rotation([1, 2, 2], t, point=vector("c"))
+    R = T.R
+    assert zero_matrix(R.T * R - ImmutableMatrix.eye(3))
+    assert trigsimp(R.det()) == 1
+    # the axis is fixed (R a = a) and the points of the line stay put
+    assert zero_matrix(R * Matrix([1, 2, 2]) - Matrix([1, 2, 2]))
+    c = vector("c")
+    assert zero_matrix(T.apply(c + 3 * Matrix([1, 2, 2])) - (c + 3 * Matrix([1, 2, 2])))
+
+
+def test_rotation_is_right_handed_and_exact():
+    assert Transform.rotation([0, 0, 1], pi / 2).apply([1, 0, 0]) == Matrix([0, 1, 0])
+    R = Transform.rotation([1, 1, 1], 2 * pi / 3).R  # the cyclic permutation x -> y -> z
+    assert R == Matrix([[0, 0, 1], [1, 0, 0], [0, 1, 0]])
+    R = Transform.rotation([0, 0, 1], pi / 6).R
+    assert R[0, 0] == sqrt(3) / 2 and R[1, 0] == Rational(1, 2)
+
+
+def test_identity_translation_and_from_matrix_round_trip():
+    rng = np.random.default_rng(1)
+    for _ in range(20):
+        T = random_transform(rng)
+        assert Transform.from_matrix(T.matrix) == T
+        assert T.func(*T.args) == T
+    assert Transform.identity().matrix == ImmutableMatrix.eye(4)
+    assert Transform.translation([1, 2, 3]).p == Matrix([1, 2, 3])
+    assert Transform.from_matrix(np.eye(4)).equals(Transform.identity())
+
+
+# -------------------------------------------------------------------- the group
+def test_composition_inverse_and_associativity_are_exact():
+    rng = np.random.default_rng(2)
+    for _ in range(20):
+        A, B, C = (random_transform(rng) for _ in range(3))
+        assert (A @ B) @ C == A @ (B @ C)
+        assert A @ A.inverse() == Transform.identity()
+        assert A.inverse() @ A == Transform.identity()
+        assert (A @ B).matrix == A.matrix * B.matrix
+        assert (A @ B).inverse() == B.inverse() @ A.inverse()
+
+
+def test_adjoint_is_a_homomorphism_exactly_and_symbolically():
+    rng = np.random.default_rng(3)
+    for _ in range(20):
+        A, B = random_transform(rng), random_transform(rng)
+        assert (A @ B).adjoint() == A.adjoint() * B.adjoint()
+        assert A.inverse().adjoint() == A.adjoint().inv()
+    A = Transform.rotation([0, 0, 1], t, point=[1, 0, 0])
+    B = Transform.rotation([1, 0, 0], u, point=[0, 2, 0])
+    assert zero_matrix((A @ B).adjoint() - A.adjoint() * B.adjoint())
+    assert adjoint(A) == A.adjoint()
+
+
+# ------------------------------------------------------------------------ apply
+def test_apply_keeps_the_kind():
+    T = Transform.rotation([0, 0, 1], pi / 2, point=[1, 0, 0])
+    line = LineVector.from_point([0, 0, 0], [1, 0, 0])
+    assert isinstance(T.apply(line), LineVector)
+    assert isinstance(T.apply(Twist([0, 0, 1], [0, 0, 0])), Twist)
+    assert isinstance(T.apply(Wrench([0, 0, 1], [0, 0, 0])), Wrench)
+    assert type(T.apply(Screw([1, 0, 0], [1, 0, 0]))) is Screw
+    assert T.apply(Transform.identity()) == T
+    assert T.apply(line) == LineVector.from_point([1, 0, 0], [0, 1, 0])  # x axis onto x = 1
+
+
+def test_apply_a_line_is_the_line_through_the_moved_points():
+    rng = np.random.default_rng(4)
+    for _ in range(20):
+        T = random_transform(rng)
+        A, B = rational_vector(rng), rational_vector(rng)
+        if A == B:
+            continue
+        moved = T.apply(LineVector.through(A, B))
+        assert moved == LineVector.through(T.apply(A), T.apply(B))
+
+
+def test_apply_with_generic_symbols_keeps_pitch_and_reciprocal_product():
+    """Pitch (1.34) and the reciprocal product (1.45) are invariant under motions."""
+    T = Transform.rotation([0, 0, 1], t, point=vector("c"))
+    s1, s2 = Screw(vector("S"), vector("S0")), Screw(vector("P"), vector("P0"))
+    assert cancel(trigsimp(pitch(T.apply(s1)) - pitch(s1))) == 0
+    residual = reciprocal_product(T.apply(s1), T.apply(s2)) - reciprocal_product(s1, s2)
+    assert trigsimp(residual.expand()) == 0
+    # the check can fail: a wrench moved and a twist left alone do not keep their power
+    tw, wr = Twist(vector("w"), vector("v")), Wrench(vector("f"), vector("C"))
+    assert trigsimp((power(tw, T.apply(wr)) - power(tw, wr)).expand()) != 0
+
+
+def test_translation_by_minus_a_is_the_origin_shift_of_the_book():
+    """Moving a screw by -a is viewing it from A: (1.32)."""
+    s, a = Screw(vector("S"), vector("S0")), vector("a")
+    assert Transform.translation(-a).apply(s).expand() == shift_origin(s, a).expand()
+
+
+def test_twist_moves_with_the_velocity_field():
+    """The moved twist gives the moved body's velocities: v'(T x) = R v(x)."""
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        T = random_transform(rng)
+        tw = Twist(rational_vector(rng), rational_vector(rng))
+        x = Matrix(rational_vector(rng))
+        assert T.apply(tw).velocity_at(T.apply(x)) == T.R * tw.velocity_at(x)
+
+
+def test_direction_and_point():
+    T = Transform.translation([1, 2, 3])
+    assert T.apply([1, 0, 0]) == Matrix([2, 2, 3])
+    assert T.apply([1, 0, 0], direction=True) == Matrix([1, 0, 0])
+
+
+# -------------------------------------------------------------------- validation
+@pytest.mark.parametrize(
+    "R, match",
+    [
+        ([[1, 0, 0], [0, 1, 0], [0, 0, -1]], r"R: expected a rotation \(det R = 1\), got det R = -1"),
+        ([[2, 0, 0], [0, 1, 0], [0, 0, 1]], r"R: expected an orthonormal matrix \(R\^T R = I\)"),
+        ([[1, 0], [0, 1]], r"R: expected a 3x3 matrix, got shape \(2, 2\)"),
+    ],
+)
+def test_not_a_rotation_is_refused(R, match):
+    with pytest.raises(ValueError, match=match):
+        Transform(R, [0, 0, 0])
+
+
+def test_symbolic_rotation_part_refused_only_when_provably_wrong():
+    x = symbols("x", real=True)
+    Transform([[x, 0, 0], [0, 1, 0], [0, 0, 1]], [0, 0, 0])  # orthonormal for x = +-1
+    with pytest.raises(ValueError, match="orthonormal"):
+        Transform([[x, 1, 0], [0, 1, 0], [0, 0, 1]], [0, 0, 0])  # (R^T R)[1, 1] = 2
+
+
+def test_quaternion_rotations_are_accepted_and_a_perturbed_one_is_not():
+    R = quaternion_rotation(1, 2, 3, 4)
+    Transform(R, [0, 0, 0])
+    with pytest.raises(ValueError, match="orthonormal"):
+        Transform(R + Matrix.diag(Rational(1, 10**9), 0, 0), [0, 0, 0])
+
+
+def test_bad_arguments_are_refused_with_the_argument_named():
+    with pytest.raises(TypeError, match=r"R\[0, 0\]: expected a real number .*strings"):
+        Transform([["1", 0, 0], [0, 1, 0], [0, 0, 1]], [0, 0, 0])
+    with pytest.raises(ValueError, match=r"p: expected a 3-vector, got shape \(2,\)"):
+        Transform(ImmutableMatrix.eye(3), [0, 0])
+    with pytest.raises(ValueError, match=r"axis: expected a non-zero direction, got \[0, 0, 0\]"):
+        Transform.rotation([0, 0, 0], 1)
+    with pytest.raises(TypeError, match="angle: expected a real number"):
+        Transform.rotation([0, 0, 1], "pi")
+    with pytest.raises(ValueError, match=r"M: expected the last row \[0, 0, 0, 1\]"):
+        Transform.from_matrix(2 * ImmutableMatrix.eye(4))
+    with pytest.raises(ValueError, match=r"M: expected a 4x4 matrix, got shape \(3, 3\)"):
+        Transform.from_matrix(ImmutableMatrix.eye(3))
+    with pytest.raises(TypeError, match="obj: expected a point or direction"):
+        Transform.identity().apply([1, 0, 0, 0, 0, 0])
+    with pytest.raises(TypeError, match="compose transforms with '@'"):
+        Transform.identity() * Transform.identity()
+    with pytest.raises(TypeError, match="cannot compose a ImmutableDenseMatrix with a Transform"):
+        ImmutableMatrix.eye(4) @ Transform.identity()
+    with pytest.raises(TypeError, match="other: expected a Transform, got int"):
+        Transform.identity().equals(1)
+    with pytest.raises(TypeError, match="T: expected a Transform, got int"):
+        adjoint(1)
+
+
+# ------------------------------------------------------------- SymPy integration
+def test_args_subs_pickle_diff_evalf_and_printing():
+    T = Transform.rotation([0, 0, 1], t, point=[1, 0, 0])
+    assert T.func(*T.args) == T
+    assert T.subs(t, 0).equals(Transform.identity())
+    assert pickle.loads(pickle.dumps(T)) == T
+    with pytest.raises(TypeError, match="subs: strings are never evaluated"):
+        T.subs(t, "0")
+    d = T.diff(t)
+    assert d.shape == (4, 4) and d[0, 0] == -Matrix([[__import__("sympy").sin(t)]])[0]
+    n = Transform.rotation([0, 0, 1], 1).evalf(20)
+    assert isinstance(n, Transform) and n.R[0, 0].has(Float)
+    assert str(Transform.identity()) == (
+        "Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[0, 0, 0])"
+    )
+    assert latex(Transform.translation([1, 0, 0])).startswith(r"\left[\begin{matrix}")
+    assert T.free_symbols == {t}
+
+
+def test_equals_decides_and_can_say_no():
+    A = Transform.rotation([0, 0, 1], t)
+    assert A.equals(Transform.rotation([0, 0, -1], -t)) is True
+    assert A.equals(Transform.rotation([0, 0, 1], -t)) is not True
+    assert Transform.identity().equals(Transform.translation([0, 0, 1])) is False
+
+
+def test_skew():
+    a, b = vector("a"), vector("b")
+    assert skew(a) * b == a.cross(b)
