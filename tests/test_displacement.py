@@ -1,0 +1,136 @@
+"""exp and log: the finite screw displacement and the Mozzi-Chasles screw of a motion."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from _motions import random_transform, random_twist, rational_vector
+from sympy import (
+    ImmutableMatrix,
+    Matrix,
+    Rational,
+    cancel,
+    pi,
+    sqrt,
+    symbols,
+    trigsimp,
+)
+
+from screwsym import Transform, Twist, Wrench, exp, log, pitch, vector
+from screwsym.displacement import se3_matrix
+
+t, s = symbols("theta s", real=True)
+h = symbols("h", real=True)
+
+
+def is_exactly_zero(m) -> bool:
+    return all(cancel(trigsimp(e.expand())) == 0 for e in m)
+
+
+def solves_the_exponential_ode(twist, T) -> bool:
+    """T(theta) = exp([$] theta) exactly when T(0) = I and dT/dtheta = [$] T."""
+    M = T.matrix
+    return is_exactly_zero(M.subs(t, 0) - ImmutableMatrix.eye(4)) and is_exactly_zero(
+        M.diff(t) - se3_matrix(twist) * M
+    )
+
+
+@pytest.mark.parametrize(
+    "twist",
+    [
+        Twist.rotation(1, [0, 0, 1], [1, 2, 0]),  # revolute, unit
+        Twist.screw_motion(1, [0, 0, 1], [1, 0, 0], h),  # helical, symbolic pitch
+        Twist([1, 2, 2], [0, 1, -1]),  # |omega| = 3, non-unit
+        Twist([1, 1, 0], [3, 0, 1]),  # |omega| = sqrt(2)
+        Twist.translation([1, -2, 5]),  # infinite pitch
+    ],
+    ids=["revolute", "helical", "non-unit", "irrational-norm", "translation"],
+)
+def test_exp_is_the_matrix_exponential(twist):
+    assert solves_the_exponential_ode(twist, exp(twist, t))
+
+
+def test_the_ode_check_can_fail():
+    twist = Twist.rotation(1, [0, 0, 1], [1, 2, 0])
+    wrong = Twist.screw_motion(1, [0, 0, 1], [1, 2, 0], 1)
+    assert not solves_the_exponential_ode(wrong, exp(twist, t))
+
+
+def test_exp_with_a_generic_twist_is_the_exponential_where_omega_is_not_zero():
+    twist = Twist([0, 0, symbols("w", positive=True)], vector("v"))
+    assert solves_the_exponential_ode(twist, exp(twist, t))
+
+
+def test_exp_is_a_one_parameter_group():
+    twist = Twist.screw_motion(1, [0, 1, 0], [2, 0, 1], Rational(1, 3))
+    lhs = exp(twist, t) @ exp(twist, s)
+    assert is_exactly_zero(trigsimp(lhs.matrix - exp(twist, t + s).matrix))
+
+
+def test_exp_turns_about_the_axis_and_slides_h_theta():
+    """A point of the axis slides by h theta along it (Mozzi-Chasles)."""
+    r, direction = Matrix([1, -2, 3]), Matrix([0, 0, 1])
+    twist = Twist.screw_motion(1, direction, r, h)
+    assert is_exactly_zero(exp(twist, t).apply(r) - (r + h * t * direction))
+
+
+def test_log_inverts_exp_exactly_on_random_motions():
+    rng = np.random.default_rng(11)
+    for _ in range(40):
+        T = random_transform(rng)
+        twist, theta = log(T)
+        assert exp(twist, theta).equals(T) is True
+        assert twist.omega.dot(twist.omega) == 1
+
+
+def test_exp_then_log_gives_the_twist_back():
+    rng = np.random.default_rng(12)
+    for _ in range(20):
+        twist = random_twist(rng)
+        unit = twist / sqrt(twist.omega.dot(twist.omega))
+        T = exp(unit, pi / 3)
+        back, theta = log(T)
+        assert theta == pi / 3
+        assert (back.as_matrix() - unit.as_matrix()).applyfunc(
+            lambda e: e.expand().simplify()  # a test may use simplify; the library does not
+        ) == ImmutableMatrix.zeros(6, 1)
+
+
+def test_log_special_cases_are_exact():
+    assert log(Transform.identity()) == (Twist([0, 0, 0], [0, 0, 0]), 0)
+    assert log(Transform.translation([0, 0, -2])) == (Twist([0, 0, 0], [0, 0, -1]), 2)
+    # half-turns: about a coordinate axis, about a diagonal, and with a slide
+    assert log(Transform.rotation([0, 1, 0], pi)) == (Twist([0, 1, 0], [0, 0, 0]), pi)
+    T = Transform.rotation([1, 1, 0], pi, point=[0, 0, 1]) @ Transform.translation([2, 2, 0])
+    twist, theta = log(T)
+    assert theta == pi
+    assert twist.omega == Matrix([sqrt(2) / 2, sqrt(2) / 2, 0])
+    assert exp(twist, theta).equals(T) is True
+    assert pitch(twist).expand() == 2 * sqrt(2) / pi  # slide 2 sqrt(2) over the half-turn
+    # the axis sign of a half-turn: the first non-zero component positive
+    assert log(Transform.rotation([-1, 0, 0], pi))[0].omega == Matrix([1, 0, 0])
+
+
+def test_log_of_a_symbolic_motion_is_the_generic_formula():
+    """For 0 < theta < pi the generic formula holds; checked at a value."""
+    T = Transform.rotation([0, 0, 1], t, point=[1, 0, 0])
+    twist, theta = log(T)
+    at = {t: Rational(1, 2)}
+    assert exp(twist.subs(at), theta.subs(at)).equals(T.subs(at)) is True
+
+
+def test_bad_arguments():
+    with pytest.raises(TypeError, match="twist: expected a Twist, got Wrench"):
+        exp(Wrench([0, 0, 1], [0, 0, 0]), 1)
+    with pytest.raises(TypeError, match="theta: expected a real number"):
+        exp(Twist([0, 0, 1], [0, 0, 0]), "1")
+    with pytest.raises(ValueError, match=r"twist: expected a 6-vector \(S; S0\), got shape \(3,\)"):
+        exp([0, 0, 1], 1)
+    with pytest.raises(TypeError, match="T: expected a Transform, got ImmutableDenseMatrix"):
+        log(ImmutableMatrix.eye(4))
+
+
+def test_exp_of_a_six_vector_and_se3_matrix():
+    assert exp([0, 0, 0, 1, 2, 3], 2) == Transform.translation([2, 4, 6])
+    v = rational_vector(np.random.default_rng(13))
+    assert se3_matrix(Twist([0, 0, 0], v))[:3, 3] == Matrix(v)
