@@ -45,7 +45,9 @@ spatial_v2 ``spatial/crm.m`` (motion ``(omega; v)``), ``crf.m``
 (``crf = -crm'``: force ``(n; f)``) and ``pluho.m`` (``T = [E, -E r; 0 1]``).
 
 Every conversion is a permutation (or, for Featherstone's transform, the
-exact inverse), so round trips are exact.
+exact inverse), so round trips are exact: equal structurally, except that
+Featherstone's transform of a symbolic motion comes back as ``R R^T p``,
+equal to ``p`` by ``R R^T = I`` (``Transform.equals`` decides it).
 """
 
 from __future__ import annotations
