@@ -198,7 +198,7 @@ class Transform(ScrewsymBasic):
         """
         M = check_matrix(M, "M", (4, 4))
         last = list(M[3, :])
-        if any((e - target).is_zero is not True for e, target in zip(last, (0, 0, 0, 1))):
+        if any((e - target).is_zero is not True for e, target in zip(last, (0, 0, 0, 1), strict=True)):
             raise ValueError(f"M: expected the last row [0, 0, 0, 1], got {last}")
         return cls._new(check_rotation(M[:3, :3], "M[:3, :3]"), M[:3, 3])
 

@@ -16,11 +16,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _motions import random_transform, random_twist, rational_vector, to_float
 from sympy import Matrix, Rational, pi, symbols
 
 from screwsym import Chain, Transform, Twist, Wrench, convert, exp, lambdify, log, power
-
-from _motions import random_transform, random_twist, rational_vector, to_float
 
 mr = pytest.importorskip("modern_robotics")
 
