@@ -48,9 +48,9 @@ def monkeypatch_module():
     mp.undo()
 
 
-def test_the_seven_notebooks_are_there():
+def test_the_eight_notebooks_are_there():
     numbers = [p.name[:2] for p in PATHS]
-    assert numbers == ["01", "02", "03", "04", "05", "06", "07"], numbers
+    assert numbers == ["01", "02", "03", "04", "05", "06", "07", "08"], numbers
 
 
 @pytest.mark.parametrize("path", PATHS, ids=[p.stem for p in PATHS])
