@@ -133,8 +133,8 @@ class Chain(ScrewsymBasic):
     >>> from sympy import symbols
     >>> from screwsym import Chain, Transform, Twist
     >>> q1, q2 = symbols("q1 q2", real=True)
-    >>> arm = Chain([Twist.rotation(1, [0, 0, 1], [0, 0, 0]),
-    ...              Twist.rotation(1, [0, 0, 1], [1, 0, 0])],
+    >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+    ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])],
     ...             Transform.translation([2, 0, 0]))
     >>> arm.forward([q1, q2]).p.T
     Matrix([[cos(q1) + cos(q1 + q2), sin(q1) + sin(q1 + q2), 0]])
@@ -225,7 +225,7 @@ class Chain(ScrewsymBasic):
 
         >>> from sympy import pi
         >>> from screwsym import Chain, Transform, Twist
-        >>> arm = Chain([Twist.rotation(1, [0, 0, 1], [0, 0, 0])], Transform.translation([1, 0, 0]))
+        >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])], Transform.translation([1, 0, 0]))
         >>> arm.forward([pi/2])
         Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[0, 1, 0])
         """

@@ -83,10 +83,10 @@ def exp(twist: Any, theta: Any) -> Transform:
     >>> from sympy import pi, symbols
     >>> from screwsym import Twist, exp
     >>> t = symbols("theta", real=True)
-    >>> hinge = Twist.rotation(1, [0, 0, 1], [1, 0, 0])    # unit twist of a hinge on x = 1
+    >>> hinge = Twist.rotation([0, 0, 1], point=[1, 0, 0])    # unit twist of a hinge on x = 1
     >>> exp(hinge, pi/2)
     Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[1, -1, 0])
-    >>> exp(Twist.screw_motion(1, [0, 0, 1], [0, 0, 0], 2), t)   # pitch 2: a helix
+    >>> exp(Twist.screw_motion([0, 0, 1], point=[0, 0, 0], pitch=2), t)   # pitch 2: a helix
     Transform(R=[[cos(theta), -sin(theta), 0], [sin(theta), cos(theta), 0], [0, 0, 1]], p=[0, 0, 2*theta])
     >>> exp(Twist.translation([1, 0, 0]), t).p.T
     Matrix([[theta, 0, 0]])
@@ -155,8 +155,9 @@ def log(T: Any) -> tuple[Twist, Expr]:
 
     Exact: the angle is ``acos((tr R - 1)/2)`` (a number such as ``pi/3`` when
     SymPy knows it), the axis and the moment are exact algebraic numbers.
-    For a symbolic motion whose cases the symbols do not decide, the formula
-    of the first case is returned: it holds where ``0 < theta < pi``.
+    The translation ``p`` may be symbolic; a rotation whose angle is symbolic
+    (``tr R`` not a number) is refused: ``acos`` of a symbolic cosine is not
+    known to be real, and which case applies is not decided.
 
     Examples
     ========
@@ -183,6 +184,11 @@ def log(T: Any) -> tuple[Twist, Expr]:
         raise TypeError(f"T: expected a Transform, got {type(T).__name__}")
     R, p = T.R, T.p
     c = (R.trace() - 1) / 2
+    if not c.is_number:
+        raise ValueError(
+            "T: log needs a rotation whose angle is a number, got cos(theta) = (tr R - 1)/2 "
+            f"= {c}"
+        )
     if is_zero_vector(R - ImmutableMatrix.eye(3)) is True:
         if is_zero_vector(p) is True:
             return Twist(zeros(3, 1), zeros(3, 1)), S.Zero

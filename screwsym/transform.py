@@ -101,7 +101,7 @@ class Transform(ScrewsymBasic):
     >>> Q = Transform.rotation([0, 0, 1], pi/2) @ Transform.translation([1, 0, 0])
     >>> Q
     Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[0, 1, 0])
-    >>> Q.apply(Twist.rotation(1, [1, 0, 0], [0, 0, 0]))   # the x axis turned onto y
+    >>> Q.apply(Twist.rotation([1, 0, 0], point=[0, 0, 0]))   # the x axis turned onto y
     Twist([0, 1, 0], [0, 0, 0])
     >>> Transform([[1, 1, 0], [0, 1, 0], [0, 0, 1]], [0, 0, 0])
     Traceback (most recent call last):
@@ -288,7 +288,7 @@ class Transform(ScrewsymBasic):
 
         >>> from screwsym import LineVector, Wrench
         >>> T = Transform.translation([0, 0, 1])
-        >>> T.apply(LineVector.from_point([0, 0, 0], [1, 0, 0]))
+        >>> T.apply(LineVector.from_axis([0, 0, 0], [1, 0, 0]))
         LineVector([1, 0, 0], [0, 1, 0])
         >>> T.apply([1, 0, 0]).T, T.apply([1, 0, 0], direction=True).T
         (Matrix([[1, 0, 1]]), Matrix([[1, 0, 0]]))

@@ -34,9 +34,9 @@ def rph():
     """Revolute about z, prismatic along a skew direction, helical of pitch 1/2 about x."""
     return Chain(
         [
-            Twist.rotation(1, [0, 0, 1], [1, 0, 0]),
+            Twist.rotation([0, 0, 1], point=[1, 0, 0]),
             Twist.translation([Rational(3, 5), 0, Rational(4, 5)]),
-            Twist.screw_motion(1, [1, 0, 0], [0, 1, 2], Rational(1, 2)),
+            Twist.screw_motion([1, 0, 0], point=[0, 1, 2], pitch=Rational(1, 2)),
         ],
         Transform.rotation([0, 1, 0], pi / 2, point=[1, 1, 1]),
     )

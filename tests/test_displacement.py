@@ -38,8 +38,8 @@ def solves_the_exponential_ode(twist, T) -> bool:
 @pytest.mark.parametrize(
     "twist",
     [
-        Twist.rotation(1, [0, 0, 1], [1, 2, 0]),  # revolute, unit
-        Twist.screw_motion(1, [0, 0, 1], [1, 0, 0], h),  # helical, symbolic pitch
+        Twist.rotation([0, 0, 1], point=[1, 2, 0]),  # revolute, unit
+        Twist.screw_motion([0, 0, 1], point=[1, 0, 0], pitch=h),  # helical, symbolic pitch
         Twist([1, 2, 2], [0, 1, -1]),  # |omega| = 3, non-unit
         Twist([1, 1, 0], [3, 0, 1]),  # |omega| = sqrt(2)
         Twist.translation([1, -2, 5]),  # infinite pitch
@@ -51,8 +51,8 @@ def test_exp_is_the_matrix_exponential(twist):
 
 
 def test_the_ode_check_can_fail():
-    twist = Twist.rotation(1, [0, 0, 1], [1, 2, 0])
-    wrong = Twist.screw_motion(1, [0, 0, 1], [1, 2, 0], 1)
+    twist = Twist.rotation([0, 0, 1], point=[1, 2, 0])
+    wrong = Twist.screw_motion([0, 0, 1], point=[1, 2, 0], pitch=1)
     assert not solves_the_exponential_ode(wrong, exp(twist, t))
 
 
@@ -62,7 +62,7 @@ def test_exp_with_a_generic_twist_is_the_exponential_where_omega_is_not_zero():
 
 
 def test_exp_is_a_one_parameter_group():
-    twist = Twist.screw_motion(1, [0, 1, 0], [2, 0, 1], Rational(1, 3))
+    twist = Twist.screw_motion([0, 1, 0], point=[2, 0, 1], pitch=Rational(1, 3))
     lhs = exp(twist, t) @ exp(twist, s)
     assert is_exactly_zero(trigsimp(lhs.matrix - exp(twist, t + s).matrix))
 
@@ -70,7 +70,7 @@ def test_exp_is_a_one_parameter_group():
 def test_exp_turns_about_the_axis_and_slides_h_theta():
     """A point of the axis slides by h theta along it (Mozzi-Chasles)."""
     r, direction = Matrix([1, -2, 3]), Matrix([0, 0, 1])
-    twist = Twist.screw_motion(1, direction, r, h)
+    twist = Twist.screw_motion(direction, point=r, pitch=h)
     assert is_exactly_zero(exp(twist, t).apply(r) - (r + h * t * direction))
 
 
@@ -111,12 +111,15 @@ def test_log_special_cases_are_exact():
     assert log(Transform.rotation([-1, 0, 0], pi))[0].omega == Matrix([1, 0, 0])
 
 
-def test_log_of_a_symbolic_motion_is_the_generic_formula():
-    """For 0 < theta < pi the generic formula holds; checked at a value."""
-    T = Transform.rotation([0, 0, 1], t, point=[1, 0, 0])
+def test_log_with_a_symbolic_translation_and_a_refused_symbolic_angle():
+    p = vector("p")
+    T = Transform.rotation([0, 0, 1], pi / 3, point=[1, 0, 0]) @ Transform.translation(p)
     twist, theta = log(T)
-    at = {t: Rational(1, 2)}
-    assert exp(twist.subs(at), theta.subs(at)).equals(T.subs(at)) is True
+    assert theta == pi / 3
+    assert is_exactly_zero(exp(twist, theta).matrix - T.matrix)
+    with pytest.raises(ValueError, match=r"T: log needs a rotation whose angle is a number, "
+                                         r"got cos\(theta\) = \(tr R - 1\)/2 = cos\(theta\)"):
+        log(Transform.rotation([0, 0, 1], t))
 
 
 def test_bad_arguments():

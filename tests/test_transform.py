@@ -105,13 +105,13 @@ def test_adjoint_is_a_homomorphism_exactly_and_symbolically():
 # ------------------------------------------------------------------------ apply
 def test_apply_keeps_the_kind():
     T = Transform.rotation([0, 0, 1], pi / 2, point=[1, 0, 0])
-    line = LineVector.from_point([0, 0, 0], [1, 0, 0])
+    line = LineVector.from_axis([0, 0, 0], [1, 0, 0])
     assert isinstance(T.apply(line), LineVector)
     assert isinstance(T.apply(Twist([0, 0, 1], [0, 0, 0])), Twist)
     assert isinstance(T.apply(Wrench([0, 0, 1], [0, 0, 0])), Wrench)
     assert type(T.apply(Screw([1, 0, 0], [1, 0, 0]))) is Screw
     assert T.apply(Transform.identity()) == T
-    assert T.apply(line) == LineVector.from_point([1, 0, 0], [0, 1, 0])  # x axis onto x = 1
+    assert T.apply(line) == LineVector.from_axis([1, 0, 0], [0, 1, 0])  # x axis onto x = 1
 
 
 def test_apply_a_line_is_the_line_through_the_moved_points():
