@@ -366,6 +366,21 @@ class Transform(ScrewsymBasic):
     def _latex(self, printer) -> str:
         return printer._print(self.matrix)
 
+    def _pretty(self, printer):
+        """The 4x4 matrix, as SymPy draws matrices.
+
+        >>> from sympy import pretty
+        >>> print(pretty(Transform.translation([1, 2, 3])))
+        ⎡1  0  0  1⎤
+        ⎢          ⎥
+        ⎢0  1  0  2⎥
+        ⎢          ⎥
+        ⎢0  0  1  3⎥
+        ⎢          ⎥
+        ⎣0  0  0  1⎦
+        """
+        return printer._print(self.matrix)
+
 
 def adjoint(T: Transform) -> ImmutableMatrix:
     r"""The 6x6 adjoint ``[[R, 0], [[p]x R, R]]`` of ``T`` in ray order; see :meth:`Transform.adjoint`.
