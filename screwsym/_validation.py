@@ -281,7 +281,6 @@ def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple
         raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")
 
 
-
 # --------------------------------------------------------------------------
 # Rigid motions (screwsym.transform, screwsym.displacement, screwsym.chain,
 # screwsym.conventions)
