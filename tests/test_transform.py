@@ -7,6 +7,8 @@ import pickle
 import numpy as np
 import pytest
 from _motions import quaternion_rotation, random_transform, rational_vector
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from sympy import (
     Float,
     ImmutableMatrix,
@@ -241,3 +243,25 @@ def test_equals_decides_and_can_say_no():
 def test_skew():
     a, b = vector("a"), vector("b")
     assert skew(a) * b == a.cross(b)
+
+
+# ------------------------------------------------------------ property tests
+_ints = st.integers(-6, 6)
+_quaternions = st.tuples(_ints, _ints, _ints, _ints).filter(lambda q: any(q))
+_rationals = st.fractions(min_value=-5, max_value=5, max_denominator=9)
+_vectors = st.lists(_rationals, min_size=3, max_size=3).map(
+    lambda v: [Rational(x.numerator, x.denominator) for x in v]
+)
+_transforms = st.builds(
+    lambda q, p: Transform(quaternion_rotation(*q), p), _quaternions, _vectors
+)
+
+
+@settings(max_examples=30, deadline=None)
+@given(_transforms, _transforms, _vectors, _vectors)
+def test_property_apply_is_an_action_and_keeps_the_reciprocal_product(A, B, S, S0):
+    s = Screw(S, S0)
+    assert A.apply(B.apply(s)) == (A @ B).apply(s)
+    assert A.inverse().apply(A.apply(s)) == s
+    w = Wrench(S0, S)
+    assert reciprocal_product(A.apply(s), A.apply(w)) == reciprocal_product(s, w)
