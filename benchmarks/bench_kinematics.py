@@ -10,8 +10,9 @@ Measured side by side in one process:
 1. Symbolic: ``Chain.forward`` and ``Chain.jacobian`` (space) of the 6R arm
    with six symbolic joint angles, first call (cold SymPy caches), and the
    Jacobian's ``count_ops`` against SymPy's ``simplify`` applied entrywise to
-   the same Jacobian built as the plain product of adjoints (the one place in
-   screwsym where ``simplify`` is called: it is the yardstick).
+   the same Jacobian built as the plain product of adjoints, and to the tidied
+   one (the one place in screwsym where ``simplify`` is called: it is the
+   yardstick).
 2. Numeric: the forward kinematics generated with ``screwsym.lambdify``
    (NumPy and numba back ends) on N poses, against modern_robotics
    ``FKinSpace`` called in a Python loop (timed on a subset, per pose) and a
@@ -115,6 +116,8 @@ def main(argv=None):
             f"simplify(raw), entrywise {t_simp:6.2f} s   count_ops {count_ops(simplified)}"
             f"   ratio ours/simplify {count_ops(J) / count_ops(simplified):.2f}"
         )
+        again, t_again = timed(lambda m: m.applyfunc(simplify), J)
+        print(f"simplify(ours), entrywise {t_again:5.2f} s   count_ops {count_ops(again)}")
 
     print(f"\n== numeric: forward kinematics on N = {args.n:,} poses ==")
     qv = Matrix(q)
