@@ -402,3 +402,64 @@ def check_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
     if value not in choices:
         raise ValueError(f"{name}: expected one of {', '.join(map(repr, choices))}, got {value!r}")
     return value
+
+
+def check_instance(value: Any, name: str, cls: type) -> Any:
+    """Return ``value`` if it is an instance of ``cls``, else raise ``TypeError``.
+
+    >>> check_instance(3, "n", int)
+    3
+    >>> check_instance(3.0, "n", int)
+    Traceback (most recent call last):
+    ...
+    TypeError: n: expected a int, got float
+    """
+    if not isinstance(value, cls):
+        raise TypeError(f"{name}: expected a {cls.__name__}, got {type(value).__name__}")
+    return value
+
+
+def check_sequence(value: Any, name: str, what: str, length: int | None = None) -> list:
+    """Return the items of a list, tuple, SymPy ``Tuple``, matrix or array as a list.
+
+    ``what`` names the items in messages; with ``length`` the count is checked.
+
+    >>> check_sequence((1, 2), "q", "joint values", 2)
+    [1, 2]
+    >>> check_sequence("q1", "q", "joint values")
+    Traceback (most recent call last):
+    ...
+    TypeError: q: expected a sequence of joint values, got str
+    >>> check_sequence([1], "q", "joint values", 2)
+    Traceback (most recent call last):
+    ...
+    ValueError: q: expected 2 joint values, got 1
+    """
+    from sympy import Tuple
+
+    ok = isinstance(value, (list, tuple, Tuple, MatrixBase)) or (
+        isinstance(value, np.ndarray) and value.ndim == 1
+    )
+    if not ok:
+        raise TypeError(f"{name}: expected a sequence of {what}, got {type(value).__name__}")
+    items = list(value)
+    if length is not None and len(items) != length:
+        raise ValueError(f"{name}: expected {length} {what}, got {len(items)}")
+    return items
+
+
+def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
+    """:func:`check_vector` for what a motion carries, refusing a bare 6-vector by name.
+
+    >>> check_point_or_direction([1, 0, 0, 0, 0, 0], "obj")
+    Traceback (most recent call last):
+    ...
+    TypeError: obj: expected a point or direction (3-vector), a screw or a Transform, got list [1, 0, 0, 0, 0, 0]; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix or Wrench.from_matrix
+    """
+    if _shape_of(value) in ((6,), (6, 1), (1, 6)):
+        raise TypeError(
+            f"{name}: expected a point or direction (3-vector), a screw or a Transform, got "
+            f"{_describe(value)}; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix "
+            "or Wrench.from_matrix"
+        )
+    return check_vector(value, name)

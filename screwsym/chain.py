@@ -46,7 +46,13 @@ from sympy.simplify.fu import TR10i
 
 from ._basic import ScrewsymBasic
 from ._decide import is_zero_vector
-from ._validation import check_choice, check_scalar, check_screw
+from ._validation import (
+    check_choice,
+    check_instance,
+    check_scalar,
+    check_screw,
+    check_sequence,
+)
 from .displacement import exp
 from .screw import foot, pitch
 from .transform import Transform
@@ -169,20 +175,14 @@ class Chain(ScrewsymBasic):
     __slots__ = ()
 
     def __new__(cls, twists: Sequence[Any], home: Transform | None = None):
-        if isinstance(twists, (str, bytes)) or not isinstance(twists, (Sequence, Tuple)):
-            raise TypeError(
-                f"twists: expected a sequence of twists, got {type(twists).__name__}"
-            )
+        twists = check_sequence(twists, "twists", "twists")
         if len(twists) == 0:
             raise ValueError("twists: expected at least one joint twist, got none")
         joints = Tuple(*(check_screw(t, f"twists[{i}]", Twist) for i, t in enumerate(twists)))
         for i, t in enumerate(joints):
             if is_zero_vector(t.as_matrix()) is True:
                 raise ValueError(f"twists[{i}]: a joint twist cannot be zero, got {t}")
-        if home is None:
-            home = Transform.identity()
-        if not isinstance(home, Transform):
-            raise TypeError(f"home: expected a Transform, got {type(home).__name__}")
+        home = Transform.identity() if home is None else check_instance(home, "home", Transform)
         return ScrewsymBasic.__new__(cls, joints, home)
 
     @property
@@ -211,13 +211,7 @@ class Chain(ScrewsymBasic):
         return tuple(Minv.apply(t) for t in self.twists)
 
     def _check_q(self, q: Any) -> tuple[Expr, ...]:
-        if isinstance(q, (str, bytes)) or not hasattr(q, "__len__"):
-            raise TypeError(
-                f"q: expected a sequence of {self.dof} joint values, got {type(q).__name__}"
-            )
-        values = list(q)
-        if len(values) != self.dof:
-            raise ValueError(f"q: expected {self.dof} joint values, got {len(values)}")
+        values = check_sequence(q, "q", "joint values", self.dof)
         return tuple(check_scalar(v, f"q[{i}]") for i, v in enumerate(values))
 
     def forward(self, q: Any) -> Transform:

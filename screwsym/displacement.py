@@ -30,7 +30,7 @@ from typing import Any
 from sympy import Expr, ImmutableMatrix, S, acos, cos, pi, sin, sqrt, zeros
 
 from ._decide import is_zero, is_zero_vector
-from ._validation import check_scalar, check_screw
+from ._validation import check_instance, check_scalar, check_screw
 from .transform import Transform, skew
 from .twist import Twist
 
@@ -180,8 +180,7 @@ def log(T: Any) -> tuple[Twist, Expr]:
 
     exp
     """
-    if not isinstance(T, Transform):
-        raise TypeError(f"T: expected a Transform, got {type(T).__name__}")
+    check_instance(T, "T", Transform)
     R, p = T.R, T.p
     c = (R.trace() - 1) / 2
     if not c.is_number:

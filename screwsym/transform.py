@@ -39,7 +39,9 @@ from sympy import Expr, ImmutableMatrix, cos, sin, sqrt, trigsimp, zeros
 from ._basic import ScrewsymBasic
 from ._decide import is_zero_vector
 from ._validation import (
+    check_instance,
     check_matrix,
+    check_point_or_direction,
     check_rotation,
     check_scalar,
     check_vector,
@@ -303,18 +305,7 @@ class Transform(ScrewsymBasic):
             S = self.R * obj.S
             S0 = self.R * obj.S0 + self.p.cross(S)
             return type(obj)(S, S0)
-        shape = getattr(obj, "shape", None) or (
-            (len(obj),) if isinstance(obj, (list, tuple)) else None
-        )
-        if shape not in ((3,), (3, 1), (1, 3)):
-            from ._validation import _describe
-
-            raise TypeError(
-                "obj: expected a point or direction (3-vector), a screw or a Transform, got "
-                f"{_describe(obj)}; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix "
-                "or Wrench.from_matrix"
-            )
-        x = check_vector(obj, "obj")
+        x = check_point_or_direction(obj, "obj")
         return ImmutableMatrix(self.R * x) if direction else ImmutableMatrix(self.R * x + self.p)
 
     def equals(self, other: Any) -> bool | None:
@@ -326,8 +317,7 @@ class Transform(ScrewsymBasic):
         >>> Transform.rotation([0, 0, 1], 2*pi).equals(Transform.identity())
         True
         """
-        if not isinstance(other, Transform):
-            raise TypeError(f"other: expected a Transform, got {type(other).__name__}")
+        check_instance(other, "other", Transform)
         diff = (self.matrix - other.matrix).applyfunc(_tidy)
         return is_zero_vector(diff)
 
@@ -390,8 +380,7 @@ def adjoint(T: Transform) -> ImmutableMatrix:
     >>> adjoint(Transform.identity()) == ImmutableMatrix.eye(6)
     True
     """
-    if not isinstance(T, Transform):
-        raise TypeError(f"T: expected a Transform, got {type(T).__name__}")
+    check_instance(T, "T", Transform)
     top = T.R.row_join(zeros(3, 3))
     bottom = (skew(T.p) * T.R).row_join(T.R)
     return ImmutableMatrix(top.col_join(bottom))
