@@ -165,7 +165,9 @@ class Transform(ScrewsymBasic):
         ``K = [u]x`` for the unit axis ``u = axis/|axis|``, and ``p = (I - R) point``
         so that the points of the line stay put.  Right-handed about ``axis``.
         Exact for symbolic angles and axes; a non-unit axis brings its length
-        ``|axis|`` (a root) into the formula.  A zero axis is refused.
+        ``|axis|`` (a root) into the formula.  A zero axis is refused; a
+        symbolic axis that is not provably zero gives the formula, which holds
+        where ``axis != 0``.
 
         >>> from sympy import pi
         >>> Transform.rotation([1, 1, 0], pi).R         # a half-turn about x = y

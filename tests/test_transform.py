@@ -265,3 +265,25 @@ def test_property_apply_is_an_action_and_keeps_the_reciprocal_product(A, B, S, S
     assert A.inverse().apply(A.apply(s)) == s
     w = Wrench(S0, S)
     assert reciprocal_product(A.apply(s), A.apply(w)) == reciprocal_product(s, w)
+
+
+def test_a_symbolic_forward_kinematics_rotation_is_accepted():
+    from screwsym import Chain
+
+    q = symbols("q1:5", real=True)
+    chain = Chain([Twist.rotation(a, point=[i, 0, 1]) for i, a in
+                   enumerate([[0, 0, 1], [0, 1, 0], [1, 0, 0], [0, 1, 0]])])
+    M = chain.forward(q).matrix
+    assert Transform.from_matrix(M).matrix == M
+
+
+def test_entries_beyond_the_size_limit_are_not_decided(monkeypatch):
+    """Beyond ROTATION_CHECK_OPS a symbolic entry is accepted undecided (documented)."""
+    import screwsym._validation as validation
+
+    y = symbols("y", positive=True)
+    wrong = [[1, y, 0], [0, 1, 0], [0, 0, 1]]  # (R^T R)[0, 1] = y != 0: provably wrong
+    with pytest.raises(ValueError, match="orthonormal"):
+        Transform(wrong, [0, 0, 0])
+    monkeypatch.setattr(validation, "ROTATION_CHECK_OPS", 0)
+    Transform(wrong, [0, 0, 0])  # ...but too large to look at under a limit of 0
