@@ -282,7 +282,7 @@ def test_entries_beyond_the_size_limit_are_not_decided(monkeypatch):
     import screwsym._validation as validation
 
     y = symbols("y", positive=True)
-    wrong = [[1, y, 0], [0, 1, 0], [0, 0, 1]]  # (R^T R)[0, 1] = y != 0: provably wrong
+    wrong = [[1, 2 * y, 0], [0, 1, 0], [0, 0, 1]]  # (R^T R)[0, 1] = 2 y != 0: provably wrong
     with pytest.raises(ValueError, match="orthonormal"):
         Transform(wrong, [0, 0, 0])
     monkeypatch.setattr(validation, "ROTATION_CHECK_OPS", 0)
