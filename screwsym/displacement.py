@@ -29,7 +29,7 @@ from typing import Any
 
 from sympy import Expr, ImmutableMatrix, S, acos, cos, pi, sin, sqrt, zeros
 
-from ._decide import is_zero, is_zero_vector
+from ._decide import is_zero, is_zero_scaled, is_zero_vector, is_zero_vector_scaled
 from ._validation import check_instance, check_scalar, check_screw
 from .transform import Transform, skew
 from .twist import Twist
@@ -119,10 +119,15 @@ def exp(twist: Any, theta: Any) -> Transform:
     return Transform._new(R, p)
 
 
+def _half_turn(c: Expr) -> bool:
+    """Whether ``cos theta = c`` is -1: exactly, or for floats by the float policy."""
+    return is_zero_scaled(c + 1, S.One) is True
+
+
 def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
     """The unit axis and ``sin`` of the angle of ``R``, whose angle's cosine is ``c``."""
     s = sqrt(1 - c**2)
-    if is_zero(c + 1) is True:
+    if _half_turn(c):
         # a half-turn: R = I + 2 K^2, so omega omega^T = (R + I)/2; pick a column with a
         # non-zero diagonal (the sign of the axis does not matter for a half-turn)
         P = (R + ImmutableMatrix.eye(3)) / 2
@@ -188,14 +193,16 @@ def log(T: Any) -> tuple[Twist, Expr]:
             "T: log needs a rotation whose angle is a number, got cos(theta) = (tr R - 1)/2 "
             f"= {c}"
         )
-    if is_zero_vector(R - ImmutableMatrix.eye(3)) is True:
+    # R = I decided exactly, or for floats by the float policy (entries of size 1)
+    if is_zero_vector_scaled((R - ImmutableMatrix.eye(3)).reshape(9, 1), S.One) is True:
         if is_zero_vector(p) is True:
             return Twist(zeros(3, 1), zeros(3, 1)), S.Zero
         d = sqrt(p.dot(p))
         return Twist(zeros(3, 1), (p / d).applyfunc(_expand_number)), d
-    theta = pi if is_zero(c + 1) is True else acos(c)
+    half_turn = _half_turn(c)
+    theta = pi if half_turn else acos(c)
     omega, s = _rotation_axis(R, c)
-    if is_zero(c + 1) is True:
+    if half_turn:
         # fix the sign: the first non-zero component positive
         for e in omega:
             if is_zero(e) is False:

@@ -137,3 +137,16 @@ def test_exp_of_a_six_vector_and_se3_matrix():
     assert exp([0, 0, 0, 1, 2, 3], 2) == Transform.translation([2, 4, 6])
     v = rational_vector(np.random.default_rng(13))
     assert se3_matrix(Twist([0, 0, 0], v))[:3, 3] == Matrix(v)
+
+
+def test_log_of_float_motions_follows_the_float_policy():
+    half = Transform.rotation([0, 1, 1], pi, point=[1, 0, 0]).evalf()
+    twist, theta = log(half)
+    assert theta == pi
+    np.testing.assert_allclose(
+        np.array(exp(twist, theta).matrix.evalf(), dtype=float),
+        np.array(half.matrix, dtype=float),
+        atol=1e-12,
+    )
+    twist, d = log(Transform.translation([0.0, 3.0, 4.0]))
+    assert abs(d - 5) < 1e-12 and twist.omega == Matrix([0, 0, 0])
