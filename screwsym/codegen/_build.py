@@ -1,0 +1,293 @@
+"""Turn printed plans into functions: exec, numba, C; the caches.
+
+In memory: a bounded LRU cache of built functions, one build per signature
+even when many threads ask at once.  On disk (numba's modules, C's shared
+libraries): a content-addressed cache in the user's cache directory, see
+:func:`cache_dir`.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import importlib.util
+import linecache
+import math
+import os
+import shutil
+import stat
+import subprocess
+import sys
+import tempfile
+import threading
+from collections import OrderedDict
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+from . import _emit
+from ._plan import Plan, with_cse
+from ._printers import PY_HELPERS
+from ._runtime import prepare
+
+#: rows per block in the NumPy back end: 16384 rows of float64 temporaries
+#: (128 KiB each) stay in the L2 cache; measured best between 4096 and 65536.
+BLOCK: int = 16384
+
+#: at most this many generated functions are kept in memory (least recently used go first)
+CACHE_SIZE: int = 512
+
+_CACHE: OrderedDict[tuple, Callable] = OrderedDict()
+_LOCK = threading.Lock()
+_BUILDING: dict[tuple, threading.Lock] = {}
+
+
+def cached(key: tuple, build: Callable[[], Callable]) -> Callable:
+    """The function cached under ``key``, built once (per key) by ``build``."""
+    with _LOCK:
+        fn = _CACHE.get(key)
+        if fn is not None:
+            _CACHE.move_to_end(key)
+            return fn
+        lock = _BUILDING.setdefault(key, threading.Lock())
+    with lock:  # one build per key; other threads asking for it wait here
+        with _LOCK:
+            fn = _CACHE.get(key)
+        if fn is None:
+            fn = build()
+            with _LOCK:
+                _CACHE[key] = fn
+                while len(_CACHE) > CACHE_SIZE:
+                    _CACHE.popitem(last=False)
+        with _LOCK:
+            _BUILDING.pop(key, None)
+    return fn
+
+
+def clear_cache() -> None:
+    """Forget every generated function held in memory (the disk cache stays)."""
+    with _LOCK:
+        _CACHE.clear()
+
+
+def cache_dir() -> Path | None:
+    """The directory of generated modules and libraries, created with mode 0o700.
+
+    ``$SCREWSYM_CACHE_DIR`` if set, else ``$XDG_CACHE_HOME/screwsym``, else
+    ``~/.cache/screwsym``.  None (no disk cache) when it cannot be created
+    or is not a directory owned by this user that others cannot write.
+    """
+    root = os.environ.get("SCREWSYM_CACHE_DIR")
+    if not root:
+        base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+        root = os.path.join(base, "screwsym")
+    path = Path(root)
+    try:
+        path.mkdir(mode=0o700, parents=True, exist_ok=True)
+        st = path.lstat()
+    except OSError:
+        return None
+    if (
+        not stat.S_ISDIR(st.st_mode)
+        or (hasattr(os, "getuid") and st.st_uid != os.getuid())
+        or st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+    ):
+        return None
+    return path
+
+
+def _subdir(name: str) -> Path | None:
+    root = cache_dir()
+    if root is None:
+        return None
+    sub = root / name
+    try:
+        sub.mkdir(mode=0o700, exist_ok=True)
+    except OSError:
+        return None
+    return sub
+
+
+def _write_atomic(path: Path, data: bytes) -> None:
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-")
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(data)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+# ------------------------------------------------------------------ finishing
+
+
+def _finish(fn: Callable, plan: Plan, doc: str) -> Callable:
+    """Give the generated ``_fn`` the user's names, as data on its code object."""
+    code = fn.__code__
+    n = len(plan.specs)
+    varnames = tuple(spec.name for spec in plan.specs) + code.co_varnames[n:]
+    changes = {"co_varnames": varnames, "co_name": plan.name}
+    if hasattr(code, "co_qualname"):
+        changes["co_qualname"] = plan.name
+    fn.__code__ = code.replace(**changes)
+    fn.__name__ = fn.__qualname__ = plan.name
+    fn.__doc__ = doc
+    fn.__module__ = "screwsym.generated"
+    return fn
+
+
+def _namespace(plan: Plan) -> dict:
+    ns = {
+        "_m": math,
+        "_np": np,
+        "_type": type,
+        "_ndarray": np.ndarray,
+        "_f64": np.float64,
+        "_array": np.array,
+        "_errstate": np.errstate,
+        "_prepare": prepare,
+        "_SPECS": tuple(plan.specs),
+        "_OUTS": tuple(out.trailing for out in plan.outs),
+        "_BLOCK": BLOCK,
+    }
+    exec(compile(PY_HELPERS, "<screwsym-codegen-helpers>", "exec"), ns)  # noqa: S102 - ours
+    return ns
+
+
+def _exec(source: str, plan: Plan, backend: str, ns: dict) -> Callable:
+    filename = f"<screwsym-codegen-{backend}-{plan.key}>"
+    linecache.cache[filename] = (len(source), None, source.splitlines(True), filename)
+    exec(compile(source, filename, "exec"), ns)  # noqa: S102 - our own generated code
+    return ns["_fn"]
+
+
+def build_numpy(plan: Plan, use_cse: bool, doc: str) -> Callable:
+    plan = with_cse(plan) if use_cse else plan
+    fn = _exec(_emit.numpy_source(plan), plan, "numpy", _namespace(plan))
+    return _finish(fn, plan, doc)
+
+
+def _numba_module(plan: Plan, use_cse: bool):
+    """Import (writing it first if new) the module of ``plan`` from the disk cache."""
+    modname = f"screwsym_generated_{plan.key}"
+    if modname in sys.modules:
+        return sys.modules[modname]
+    sub = _subdir("numba")
+    if sub is None:
+        # no usable cache directory: compile in memory, without numba's disk cache
+        full = with_cse(plan) if use_cse else plan
+        source = _emit.numba_source(full, PY_HELPERS).replace("cache=True", "cache=False")
+        ns = _namespace(full)
+        ns["__name__"] = modname
+        _exec(source, full, "numba", ns)
+        mod = type(sys)(modname)
+        mod.__dict__.update(ns)
+        return mod
+    path = sub / f"{modname}.py"
+    if not path.exists():
+        full = with_cse(plan) if use_cse else plan
+        _write_atomic(path, _emit.numba_source(full, PY_HELPERS).encode())
+    spec = importlib.util.spec_from_file_location(modname, path)
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[modname] = mod
+    try:
+        spec.loader.exec_module(mod)
+    except BaseException:
+        del sys.modules[modname]
+        raise
+    return mod
+
+
+def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
+    try:
+        import numba  # noqa: F401
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise ImportError(
+            "backend 'numba' needs numba: pip install 'screwsym[fast]' (or use backend='numpy')"
+        ) from None
+    mod = _numba_module(plan, use_cse)
+    mod._SPECS = tuple(plan.specs)
+    mod._OUTS = tuple(out.trailing for out in plan.outs)
+    # a fresh function object per plan: the user's names are set on it, not on the module's
+    base = mod._fn
+    fn = type(base)(base.__code__, mod.__dict__, "_fn", None, base.__closure__)
+    fn.__kwdefaults__ = dict(base.__kwdefaults__ or {})
+    fn = _finish(fn, plan, doc)
+    fn.kernel = mod._kernel
+    return fn
+
+
+# ------------------------------------------------------------------------ C
+
+
+def compiler() -> str | None:
+    for cc in (os.environ.get("CC"), "cc", "gcc", "clang"):
+        if cc and shutil.which(cc):
+            return cc
+    return None
+
+
+def _compile_c(source: str, so_path: Path) -> None:
+    cc = compiler()
+    if cc is None:
+        raise RuntimeError("backend 'c' needs a C compiler: none of $CC, cc, gcc, clang found")
+    with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
+        c_path = os.path.join(tmp, "generated.c")
+        tmp_so = os.path.join(tmp, "generated.so")
+        with open(c_path, "w") as fh:
+            fh.write(source)
+        cmd = [cc, "-O3", "-std=c99", "-shared", "-fPIC", c_path, "-o", tmp_so, "-lm"]
+        done = subprocess.run(cmd, capture_output=True, text=True)
+        if done.returncode != 0:
+            raise RuntimeError(f"backend 'c': {' '.join(cmd)} failed:\n{done.stderr}")
+        _write_atomic(so_path, Path(tmp_so).read_bytes())
+
+
+def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
+    plan = with_cse(plan) if use_cse else plan
+    cname = f"screwsym_k{plan.key}"
+    source = _emit.c_source(plan, cname)
+    sub = _subdir("c")
+    if sub is not None:
+        so_path = sub / f"{cname}.so"
+        if not so_path.exists():
+            _compile_c(source, so_path)
+        lib = ctypes.CDLL(str(so_path))
+    else:
+        with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
+            so_path = Path(tmp) / f"{cname}.so"
+            _compile_c(source, so_path)
+            lib = ctypes.CDLL(str(so_path))  # stays mapped after the file is removed
+    cfunc = getattr(lib, cname)
+    ptr = ctypes.POINTER(ctypes.c_double)
+    argtypes: list = [ctypes.c_size_t]
+    for _ in plan.specs:
+        argtypes += [ptr, ctypes.c_ssize_t]
+    argtypes += [ptr] * len(plan.outs)
+    cfunc.argtypes = argtypes
+    cfunc.restype = None
+    steps = [spec.size for spec in plan.specs]
+
+    def kernel(n: int, *arrays: np.ndarray) -> None:
+        ins, outs = arrays[: len(steps)], arrays[len(steps) :]
+        call: list = [n]
+        for arr, step in zip(ins, steps, strict=True):
+            call += [arr.ctypes.data_as(ptr), step if arr.shape[0] != 1 else 0]
+        call += [o.ctypes.data_as(ptr) for o in outs]
+        cfunc(*call)
+
+    ns = _namespace(plan)
+    ns["_kernel"] = kernel
+    text = _emit.c_wrapper_source(plan) + "\n# C source compiled for this function:\n" + "".join(
+        "# " + line + "\n" for line in source.splitlines()
+    )
+    fn = _finish(_exec(text, plan, "c", ns), plan, doc)
+    fn.kernel = kernel
+    fn.c_library = lib
+    fn.c_source = source
+    return fn
+
+
+BUILDERS = {"numpy": build_numpy, "numba": build_numba, "c": build_c}

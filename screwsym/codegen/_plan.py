@@ -1,0 +1,380 @@
+"""The one plan of a generated function: unpack, CSE assignments, store.
+
+Every identifier in the plan is chosen here: argument ``k`` is ``_a<k>``,
+its components ``_x<m>``, common subexpressions ``_c<m>``, results ``_o<j>``.
+A user's symbol names and argument names never reach generated source;
+the parameter names the user sees are set on the finished function's code
+object (data, not source).  Expressions are checked against one list of
+supported constructs before anything is printed.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import keyword
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from sympy import (
+    Abs,
+    Add,
+    And,
+    Basic,
+    Eq,
+    Expr,
+    Float,
+    I,
+    Ge,
+    Gt,
+    ImmutableMatrix,
+    Integer,
+    Le,
+    Lt,
+    Max,
+    Min,
+    Mod,
+    Mul,
+    Ne,
+    Not,
+    Or,
+    Piecewise,
+    Pow,
+    Rational,
+    Symbol,
+    acos,
+    acosh,
+    asin,
+    asinh,
+    atan,
+    atan2,
+    atanh,
+    ceiling,
+    cos,
+    cosh,
+    cse,
+    exp,
+    floor,
+    log,
+    numbered_symbols,
+    sign,
+    sin,
+    sinh,
+    srepr,
+    sympify,
+    tan,
+    tanh,
+)
+from sympy.core.numbers import Exp1, Infinity, NaN, NegativeInfinity, Pi
+from sympy.core.sympify import SympifyError
+from sympy.functions.elementary.piecewise import ExprCondPair
+from sympy.logic.boolalg import BooleanFalse, BooleanTrue
+from sympy.matrices import MatrixBase
+
+from ._runtime import Arg
+
+#: bump when the generated code changes, so that disk caches are not reused
+VERSION = "2"
+
+# The constructs every back end prints with the same semantics (see the
+# printers).  Anything else is refused before printing.
+SUPPORTED: tuple[type, ...] = (
+    Symbol, Integer, Rational, Float, Pi, Exp1, Infinity, NegativeInfinity, NaN,
+    Add, Mul, Pow, exp, log, sin, cos, tan, asin, acos, atan, atan2, sinh, cosh, tanh,
+    asinh, acosh, atanh, Abs, sign, floor, ceiling, Mod, Min, Max, Piecewise, ExprCondPair,
+    Lt, Le, Gt, Ge, Eq, Ne, And, Or, Not, BooleanTrue, BooleanFalse,
+)  # fmt: skip
+SUPPORTED_NAMES = ", ".join(
+    sorted({"pi" if t is Pi else "E" if t is Exp1 else t.__name__ for t in SUPPORTED}
+           - {"ExprCondPair", "BooleanTrue", "BooleanFalse", "Infinity", "NegativeInfinity",
+              "NaN", "Integer", "Rational", "Float", "Symbol", "Add", "Mul"})
+)
+
+
+@dataclass(frozen=True)
+class Out:
+    """One result: its trailing shape."""
+
+    trailing: tuple[int, ...]
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.trailing)
+
+
+@dataclass(frozen=True)
+class Plan:
+    """What a generated function computes, independent of the back end.
+
+    ``unpack`` lists ``(argument, component, local)``; ``assigns`` the CSE
+    assignments ``(local, expr)`` in order; ``stores`` ``(result, entry,
+    expr)``.  ``key`` is a content hash of everything that determines the
+    generated code.
+    """
+
+    specs: tuple[Arg, ...]
+    outs: tuple[Out, ...]
+    is_tuple: bool
+    unpack: tuple[tuple[int, int, Symbol], ...]
+    assigns: tuple[tuple[Symbol, Expr], ...]
+    stores: tuple[tuple[int, int, Expr], ...]
+    name: str
+    key: str
+
+
+# ---------------------------------------------------------------- arguments
+
+
+def _stem(symbols: Sequence[Symbol]) -> str | None:
+    """``A`` for ``A_x, A_y, A_z``; None when the names share no such stem."""
+    stems = {s.name.rpartition("_")[0] for s in symbols}
+    if len(stems) == 1:
+        return stems.pop() or None
+    return None
+
+
+def is_identifier(name: Any) -> bool:
+    """A name usable as a parameter or function name (never as source text)."""
+    return (
+        isinstance(name, str)
+        and name.isidentifier()
+        and name.isascii()
+        and not keyword.iskeyword(name)
+        and not name.startswith("_")
+        and name != "out"
+    )
+
+
+def _matrix_symbols(m: MatrixBase, where: str) -> tuple[Symbol, ...]:
+    entries = tuple(m)
+    for e in entries:
+        if not isinstance(e, Symbol):
+            raise TypeError(f"{where}: expected symbols as entries, got {e!r} ({type(e).__name__})")
+    return entries
+
+
+def normalise_args(args: Any, names: Any) -> tuple[list[Arg], list[tuple[Symbol, ...]]]:
+    from ..screw import Screw
+
+    if isinstance(args, (Basic, MatrixBase)):
+        args = [args]
+    if not isinstance(args, (list, tuple)):
+        raise TypeError(
+            f"args: expected a list of symbols, vectors and screws, got {type(args).__name__}"
+        )
+    if not args:
+        raise ValueError("args: expected at least one symbol, vector or screw, got an empty list")
+    if names is not None:
+        if not isinstance(names, (list, tuple)):
+            raise TypeError(f"names: expected a list of strings, got {type(names).__name__}")
+        if len(names) != len(args):
+            raise ValueError(
+                f"names: expected {len(args)} names, one per argument, got {len(names)}"
+            )
+    specs: list[Arg] = []
+    symbols: list[tuple[Symbol, ...]] = []
+    used: set[str] = set()
+    for i, a in enumerate(args):
+        where = f"args[{i}]"
+        if isinstance(a, Screw):
+            syms = _matrix_symbols(a.as_matrix(), where)
+            trailing: tuple[int, ...] = (6,)
+            what = f"a {type(a).__name__.lower()} (S; S0)"
+            stems = (_stem(syms[:3]), _stem(syms[3:]))
+            default = "s" if None in stems else (stems[0] or "s").lower()
+        elif isinstance(a, MatrixBase):
+            if len(a) == 0:
+                raise ValueError(f"{where}: expected a non-empty matrix of symbols, got {a!r}")
+            syms = _matrix_symbols(a, where)
+            trailing = (len(syms),) if 1 in a.shape else tuple(a.shape)
+            what = f"a {len(syms)}-vector" if len(trailing) == 1 else f"a {a.rows}x{a.cols} matrix"
+            default = _stem(syms) or "v"
+        elif isinstance(a, Symbol):
+            syms, trailing, what, default = (a,), (), "a scalar", a.name
+        else:
+            raise TypeError(
+                f"{where}: expected a Symbol, a matrix of symbols (vector('A')) or a screw "
+                f"with symbolic components, got {type(a).__name__} {a!r}"
+            )
+        if names is not None:
+            name = names[i]
+            if not is_identifier(name):
+                raise ValueError(
+                    f"names[{i}]: expected a Python identifier not starting with '_' and not "
+                    f"'out', got {name!r}"
+                )
+            if name in used:
+                raise ValueError(f"names[{i}]: expected distinct names, got {name!r} twice")
+        else:
+            name = default
+            if not is_identifier(name) or name in used:
+                base = name if is_identifier(name) else "arg"
+                name = next(f"{base}{j}" for j in range(len(args) + 1) if f"{base}{j}" not in used)
+        used.add(name)
+        specs.append(Arg(name, trailing, what))
+        symbols.append(syms)
+    seen: dict[Symbol, str] = {}
+    for spec, syms in zip(specs, symbols, strict=True):
+        for sym in syms:
+            if sym in seen:
+                raise ValueError(
+                    f"args: the symbol {sym} appears twice (in {seen[sym]} and {spec.name})"
+                )
+            seen[sym] = spec.name
+    return specs, symbols
+
+
+# ---------------------------------------------------------------- results
+
+
+def normalise_expr(expr: Any) -> tuple[list[tuple[Out, tuple[Expr, ...]]], bool]:
+    """Flatten ``expr`` to results; the flag says whether a tuple was given.
+
+    An object with a method ``_lambdify_outputs()`` (for instance the core's
+    common normal) stands for the tuple that method returns.
+    """
+    from ..screw import Screw
+
+    hook = getattr(type(expr), "_lambdify_outputs", None)
+    if hook is not None and not isinstance(expr, type):
+        expr = expr._lambdify_outputs()
+        if not isinstance(expr, tuple):
+            raise TypeError(
+                f"expr: _lambdify_outputs() must return a tuple, got {type(expr).__name__}"
+            )
+    is_tuple = isinstance(expr, (tuple, list))
+    items = list(expr) if is_tuple else [expr]
+    if not items:
+        raise ValueError("expr: expected at least one result, got an empty tuple")
+    outs = []
+    for i, e in enumerate(items):
+        where = f"expr[{i}]" if is_tuple else "expr"
+        if isinstance(e, Screw):
+            outs.append((Out((6,)), tuple(e.as_matrix())))
+        elif isinstance(e, MatrixBase):
+            if len(e) == 0:
+                raise ValueError(f"{where}: expected a non-empty matrix, got {e!r}")
+            trailing = (len(e),) if 1 in e.shape else tuple(e.shape)
+            entries = []
+            for x in e:
+                entries.append(_scalar(x, where))
+            outs.append((Out(trailing), tuple(entries)))
+        else:
+            outs.append((Out(()), (_scalar(e, where),)))
+    return outs, is_tuple
+
+
+def _scalar(e: Any, where: str) -> Expr:
+    # bool is an int to Python, but True is not the number 1 to a user
+    x = None
+    if not isinstance(e, (bool, str)):
+        try:
+            x = sympify(e, strict=True)
+        except SympifyError:
+            x = None
+    if not isinstance(x, Expr):
+        raise TypeError(
+            f"{where}: expected a SymPy expression, matrix, screw or a tuple of these, "
+            f"got {type(e).__name__} {e!r}"
+        )
+    return x
+
+
+def check_supported(x: Expr, backend: str) -> None:
+    """Raise ``TypeError`` naming the first construct the back ends cannot print."""
+    if x.has(I):
+        raise ValueError(
+            f"expr: expected real expressions (screwsym generates real arithmetic), got {x}"
+        )
+    for node in _preorder(x):
+        if not isinstance(node, SUPPORTED):
+            what = type(node).__name__
+            raise TypeError(
+                f"expr: backend {backend!r} cannot generate code for {what} ({node}); "
+                f"supported: arithmetic, {SUPPORTED_NAMES}"
+            )
+        if isinstance(node, log) and len(node.args) != 1:  # pragma: no cover - SymPy folds it
+            raise TypeError(f"expr: backend {backend!r} cannot generate code for {node}")
+
+
+def _preorder(x: Basic):
+    stack = [x]
+    while stack:
+        node = stack.pop()
+        yield node
+        stack.extend(node.args)
+
+
+# ---------------------------------------------------------------- the plan
+
+
+def key_of(specs, symbols, outs, is_tuple, use_cse, name, backend) -> tuple[str, list[Expr]]:
+    """Content hash of the generated code, and the expressions with screwsym's names."""
+    mapping: dict[Symbol, Symbol] = {}
+    k = 0
+    for syms in symbols:
+        for sym in syms:
+            mapping[sym] = Symbol(f"_x{k}", real=True)
+            k += 1
+    flat = [x.xreplace(mapping) for _, exprs in outs for x in exprs]
+    text = srepr((
+        tuple((s.name, s.trailing, s.what) for s in specs),
+        tuple(out.trailing for out, _ in outs),
+        is_tuple, bool(use_cse), name, backend, VERSION, tuple(flat),
+    ))  # fmt: skip
+    return hashlib.sha256(text.encode()).hexdigest()[:24], flat
+
+
+def build_plan(args: Any, expr: Any, use_cse: bool, name: Any, names: Any, backend: str) -> Plan:
+    """Check everything and return the plan (without CSE: see :func:`with_cse`)."""
+    if name is not None and not isinstance(name, str):
+        raise TypeError(f"name: expected a string, got {type(name).__name__} {name!r}")
+    if name is not None and not is_identifier(name):
+        raise ValueError(f"name: expected a Python identifier not starting with '_', got {name!r}")
+    specs, symbols = normalise_args(args, names)
+    outs, is_tuple = normalise_expr(expr)
+    allowed = {s for syms in symbols for s in syms}
+    free = set().union(*(x.free_symbols for _, exprs in outs for x in exprs))
+    missing = free - allowed
+    if missing:
+        listed = ", ".join(sorted(str(s) for s in missing))
+        raise ValueError(f"expr: the symbols {listed} are not among args")
+    for _, exprs in outs:
+        for x in exprs:
+            check_supported(x, backend)
+    key, flat = key_of(specs, symbols, outs, is_tuple, use_cse, name, backend)
+    unpack = []
+    k = 0
+    for i, syms in enumerate(symbols):
+        for c in range(len(syms)):
+            unpack.append((i, c, Symbol(f"_x{k}", real=True)))
+            k += 1
+    stores, m = [], 0
+    for j, (_, exprs) in enumerate(outs):
+        for c in range(len(exprs)):
+            stores.append((j, c, flat[m]))
+            m += 1
+    for _, _, e in stores:  # after renaming, only screwsym's symbols are left
+        assert all(s.name.startswith("_x") for s in e.free_symbols)
+    return Plan(
+        tuple(specs), tuple(out for out, _ in outs), is_tuple, tuple(unpack), (),
+        tuple(stores), name or f"lambdified_{key[:10]}", key,
+    )  # fmt: skip
+
+
+def with_cse(plan: Plan) -> Plan:
+    """The plan with common subexpressions assigned to ``c0, c1, ...``."""
+    exprs = [e for _, _, e in plan.stores]
+    replacements, reduced = cse(exprs, symbols=numbered_symbols("_c", real=True))
+    stores = tuple((j, c, e) for (j, c, _), e in zip(plan.stores, reduced, strict=True))
+    return Plan(plan.specs, plan.outs, plan.is_tuple, plan.unpack, tuple(replacements),
+                stores, plan.name, plan.key)
+
+
+def frozen(x: Any) -> Any:
+    if isinstance(x, (list, tuple)):
+        return tuple(frozen(i) for i in x)
+    if isinstance(x, MatrixBase):
+        return ImmutableMatrix(x)
+    return x

@@ -1,0 +1,316 @@
+"""Thin printers: SymPy's code printers with one semantics for every back end.
+
+Each printer is SymPy's own (Python, NumPy, C99) with the few constructs
+overridden where the stock printers disagree with each other:
+
+* integer literals beyond 2**53 print as the nearest double everywhere (C
+  would truncate them to 64 bits; Python would compute exactly);
+* ``pi``, ``E`` and every ``Float`` print as the nearest double (C99 has no
+  ``M_PI``);
+* a power with a non-integer exponent is the real ``pow``: ``nan`` for a
+  negative base (C's ``cbrt`` and Python's complex power disagreed);
+* ``Mod`` takes the sign of the divisor (Python's ``%``, ``numpy.mod``; C
+  gets a helper around ``fmod``);
+* ``Min``/``Max`` and ``sign`` propagate ``nan`` (C's ``fmin`` does not);
+* ``Piecewise`` is a chain of conditionals, ``nan`` where no branch holds;
+* ``floor``/``ceiling`` stay floating point (``math.floor`` is an int).
+
+Module references print as ``_m`` (math) and ``_np`` (NumPy), names only
+screwsym binds.
+"""
+
+from __future__ import annotations
+
+from sympy import Expr, Float, Integer
+from sympy.printing.c import C99CodePrinter
+from sympy.printing.numpy import NumPyPrinter
+from sympy.printing.pycode import PythonCodePrinter
+
+_EXACT = 2**53
+
+
+def _double(value) -> str:
+    """The nearest double to a SymPy number, as a literal valid in Python and C."""
+    x = float(value)
+    text = repr(x)
+    if text in ("inf", "-inf"):
+        return text  # replaced by the caller
+    return text if ("." in text or "e" in text) else text + ".0"
+
+
+class _Common:
+    """Overrides shared by the Python-syntax printers."""
+
+    _inf = "_m.inf"
+    _nan = "_m.nan"
+
+    def _module_format(self, fqn, register=True):  # noqa: D401 - SymPy's protocol
+        head, _, tail = fqn.partition(".")
+        if head == "math":
+            return "_m." + tail
+        if head == "numpy":
+            return "_np." + tail
+        raise TypeError(f"screwsym printers: unexpected module reference {fqn!r}")
+
+    def _number(self, value) -> str:
+        text = _double(value)
+        if text == "inf":
+            return self._inf
+        if text == "-inf":
+            return f"(-{self._inf})"
+        return text
+
+    def _print_Integer(self, expr):
+        p = int(expr)
+        return str(p) if abs(p) <= _EXACT else self._number(p)
+
+    def _print_Rational(self, expr):
+        return f"({self._print(Integer(expr.p))}/{self._print(Integer(expr.q))})"
+
+    def _print_Half(self, expr):
+        return "0.5"
+
+    def _print_Float(self, expr):
+        return self._number(expr)
+
+    def _print_NumberSymbol(self, expr):
+        return self._number(expr)
+
+    _print_Pi = _print_Exp1 = _print_NumberSymbol
+
+    def _print_Infinity(self, expr):
+        return self._inf
+
+    def _print_NegativeInfinity(self, expr):
+        return f"(-{self._inf})"
+
+    def _print_NaN(self, expr):
+        return self._nan
+
+
+class ScalarPrinter(_Common, PythonCodePrinter):
+    """Python floats, ``math``: the single-point path (and, via a subclass, numba)."""
+
+    def __init__(self):
+        super().__init__({"fully_qualified_modules": True, "strict": True})
+
+    def _print_Pow(self, expr, rational=False):
+        b, e = expr.base, expr.exp
+        if e.is_Integer:
+            return f"({self._print(b)})**({self._print(e)})"
+        if e == Float(0.5) or e == Integer(1) / 2:
+            return f"_m.sqrt({self._print(b)})"
+        if e == -Integer(1) / 2:
+            return f"(1.0/_m.sqrt({self._print(b)}))"
+        return f"_m.pow({self._print(b)}, {self._print(e)})"
+
+    def _print_Mod(self, expr):
+        a, b = expr.args
+        return f"(({self._print(a)}) % ({self._print(b)}))"
+
+    def _fold(self, args, fn):
+        items = [self._print(a) for a in args]
+        text = items[0]
+        for other in items[1:]:
+            text = f"{fn}({text}, {other})"
+        return text
+
+    def _print_Min(self, expr):
+        return self._fold(expr.args, "_min")  # see PY_HELPERS: nan propagates
+
+    def _print_Max(self, expr):
+        return self._fold(expr.args, "_max")
+
+    def _print_sign(self, expr):
+        return f"_sign({self._print(expr.args[0])})"
+
+    def _print_Abs(self, expr):
+        return f"abs({self._print(expr.args[0])})"
+
+    def _print_floor(self, expr):
+        return f"float(_m.floor({self._print(expr.args[0])}))"
+
+    def _print_ceiling(self, expr):
+        return f"float(_m.ceil({self._print(expr.args[0])}))"
+
+    def _print_Piecewise(self, expr):
+        text = None
+        for e, c in reversed(expr.args):
+            if c == True:  # noqa: E712 - SymPy's true
+                text = self._print(e)
+            elif c == False:  # noqa: E712
+                continue
+            else:
+                text = f"(({self._print(e)}) if ({self._print(c)}) else ({text or self._nan}))"
+        return text or self._nan
+
+    def _print_BooleanTrue(self, expr):
+        return "True"
+
+    def _print_BooleanFalse(self, expr):
+        return "False"
+
+
+class NumbaPrinter(ScalarPrinter):
+    """The fused loop: as the scalar path, with NumPy's float ``floor``/``ceil``."""
+
+    def _print_floor(self, expr):
+        return f"_np.floor({self._print(expr.args[0])})"
+
+    def _print_ceiling(self, expr):
+        return f"_np.ceil({self._print(expr.args[0])})"
+
+
+class BlockPrinter(_Common, NumPyPrinter):
+    """NumPy array expressions on blocks of rows."""
+
+    _inf = "_np.inf"
+    _nan = "_np.nan"
+
+    def __init__(self):
+        super().__init__({"strict": True})
+
+    def _print_Piecewise(self, expr):
+        # nested where (numpy.select costs microseconds per call); nan where no branch holds
+        text = None
+        for e, c in reversed(expr.args):
+            if c == True:  # noqa: E712 - SymPy's true
+                text = self._print(e)
+            elif c == False:  # noqa: E712
+                continue
+            else:
+                text = f"_np.where({self._print(c)}, {self._print(e)}, {text or self._nan})"
+        return text or self._nan
+
+    def _fold(self, args, fn):
+        items = [self._print(a) for a in args]
+        text = items[0]
+        for other in items[1:]:
+            text = f"_np.{fn}({text}, {other})"
+        return text
+
+    def _print_Min(self, expr):
+        return self._fold(expr.args, "minimum")  # propagates nan
+
+    def _print_Max(self, expr):
+        return self._fold(expr.args, "maximum")
+
+    def _print_sign(self, expr):
+        return f"_np.sign({self._print(expr.args[0])})"
+
+    def _print_Abs(self, expr):
+        return f"_np.abs({self._print(expr.args[0])})"
+
+    def _print_Mod(self, expr):
+        a, b = expr.args
+        return f"_np.mod({self._print(a)}, {self._print(b)})"
+
+    def _print_BooleanTrue(self, expr):
+        return "True"
+
+    def _print_BooleanFalse(self, expr):
+        return "False"
+
+
+#: helpers of the single-point path and (compiled by numba) of the fused loop
+PY_HELPERS = """\
+def _min(a, b):
+    return a if (a <= b or a != a) else b
+
+
+def _max(a, b):
+    return a if (a >= b or a != a) else b
+
+
+def _sign(x):
+    return 1.0 if x > 0 else (-1.0 if x < 0 else 0.0 * x)
+"""
+
+#: helpers every generated C file defines (static inline: no unused warnings)
+C_HELPERS = """\
+static inline double ss_mod(double a, double b)
+{
+    /* the sign of the divisor, as Python's % and numpy.mod */
+    double r = fmod(a, b);
+    return (r != 0.0 && ((r < 0.0) != (b < 0.0))) ? r + b : r;
+}
+static inline double ss_min(double a, double b) { return (a <= b || a != a) ? a : b; }
+static inline double ss_max(double a, double b) { return (a >= b || a != a) ? a : b; }
+static inline double ss_sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0 * x); }
+"""
+
+
+class CPrinter(_Common, C99CodePrinter):
+    """C99 with the same semantics."""
+
+    _inf = "INFINITY"
+    _nan = "NAN"
+
+    def __init__(self):
+        super().__init__({"strict": True})
+
+    def _module_format(self, fqn, register=True):  # pragma: no cover - C has no modules
+        raise TypeError(f"screwsym C printer: unexpected module reference {fqn!r}")
+
+    def _print_Integer(self, expr):
+        p = int(expr)
+        return f"{p}.0" if abs(p) <= _EXACT else self._number(p)
+
+    def _print_Pow(self, expr, rational=False):
+        b, e = expr.base, expr.exp
+        if e == Integer(1) / 2:
+            return f"sqrt({self._print(b)})"
+        if e == -Integer(1) / 2:
+            return f"(1.0/sqrt({self._print(b)}))"
+        if e == -1:
+            return f"(1.0/({self._print(b)}))"
+        return f"pow({self._print(b)}, {self._print(e)})"
+
+    def _print_Mod(self, expr):
+        a, b = expr.args
+        return f"ss_mod({self._print(a)}, {self._print(b)})"
+
+    def _fold(self, args, fn):
+        items = [self._print(a) for a in args]
+        text = items[0]
+        for other in items[1:]:
+            text = f"{fn}({text}, {other})"
+        return text
+
+    def _print_Min(self, expr):
+        return self._fold(expr.args, "ss_min")
+
+    def _print_Max(self, expr):
+        return self._fold(expr.args, "ss_max")
+
+    def _print_sign(self, expr):
+        return f"ss_sign({self._print(expr.args[0])})"
+
+    def _print_Abs(self, expr):
+        return f"fabs({self._print(expr.args[0])})"
+
+    def _print_floor(self, expr):
+        return f"floor({self._print(expr.args[0])})"
+
+    def _print_ceiling(self, expr):
+        return f"ceil({self._print(expr.args[0])})"
+
+    def _print_Piecewise(self, expr):
+        text = None
+        for e, c in reversed(expr.args):
+            if c == True:  # noqa: E712 - SymPy's true
+                text = self._print(e)
+            elif c == False:  # noqa: E712
+                continue
+            else:
+                text = f"(({self._print(c)}) ? ({self._print(e)}) : ({text or self._nan}))"
+        return text or self._nan
+
+    def _print_BooleanTrue(self, expr):
+        return "1"
+
+    def _print_BooleanFalse(self, expr):
+        return "0"
+
+    def doprint_line(self, e: Expr) -> str:
+        return " ".join(self.doprint(e).split())
