@@ -23,9 +23,11 @@ the pitch of a couple ``(0; C)`` is ``inf`` (the symbolic
 symbolic one raises); the foot point of a couple, whose axis lies at
 infinity, is ``nan`` (the symbolic one raises).
 
-The functions here use the ``"numpy"`` back end.  :func:`functions` gives
-the same set for another back end, e.g. ``functions("numba")`` (``pip
-install 'screwsym[fast]'``) for one fused compiled loop per call.
+The functions here use the compiled (numba) back end when numba is installed
+(``pip install 'screwsym[fast]'``) and NumPy otherwise; each is generated on
+first use, and numba's on-disk cache (see :func:`screwsym.codegen.cache_dir`)
+spares a new process the compilation.  :func:`functions` gives the same set
+for a chosen back end, e.g. ``functions("numpy")`` or ``functions("c")``.
 
 Examples
 ========
@@ -49,12 +51,14 @@ screwsym.codegen.lambdify
 
 from __future__ import annotations
 
+import threading
 import types
 from collections.abc import Callable
 
 from sympy import Eq, Ne, Piecewise, nan
 
 from . import screw as _core
+from . import codegen as _codegen
 from .codegen import lambdify
 from .line import LineVector
 from .screw import Screw
@@ -174,67 +178,92 @@ _DOCS = {
 NAMES: tuple[str, ...] = tuple(_DOCS)
 
 
+def _definition(name: str) -> tuple[list, object, list[str]]:
+    """The function ``name`` as ``(args, expr, parameter names)``, from the core's operations."""
+    s = Screw(vector("S"), vector("S0"))
+    if name == "pitch":
+        SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
+        # Only the general branch is the book's formula; the special cases say
+        # what the symbolic pitch gives for a couple (oo) and that the zero screw
+        # has none (nan here, an error there).
+        pitch_expr = Piecewise(
+            (_core.pitch(Screw.couple(s.S0)), Eq(SS, 0) & Ne(S0S0, 0)),
+            (nan, Eq(SS, 0)),
+            (_core.pitch(s), True),
+        )
+        return [s], pitch_expr, ["s"]
+    if name == "foot":
+        return [s], _core.foot(s), ["s"]
+    if name == "reciprocal_product":
+        s2 = Screw(vector("T"), vector("T0"))
+        return [s, s2], _core.reciprocal_product(s, s2), ["s1", "s2"]
+    if name == "shift_origin":
+        A = vector("A")
+        return [s, A], _core.shift_origin(s, A), ["s", "A"]
+    if name == "line_through":
+        A, B = vector("A"), vector("B")
+        return [A, B], LineVector.through(A, B), ["A", "B"]
+    if name == "velocity_at":
+        t, P = Twist(vector("omega"), vector("v")), vector("P")
+        return [t, P], t.velocity_at(P), ["twist", "point"]
+    if name == "moment_about":
+        w, P = Wrench(vector("f"), vector("C")), vector("P")
+        return [w, P], w.moment_about(P), ["wrench", "point"]
+    raise ValueError(f"name: expected one of {', '.join(NAMES)}, got {name!r}")
+
+
 def _definitions() -> dict[str, tuple[list, object, list[str]]]:
     """Each function as ``(args, expr, parameter names)``, from the core's operations."""
-    s = Screw(vector("S"), vector("S0"))
-    s2 = Screw(vector("T"), vector("T0"))
-    A, B, P = vector("A"), vector("B"), vector("P")
-    t = Twist(vector("omega"), vector("v"))
-    w = Wrench(vector("f"), vector("C"))
-    SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
-    # Only the general branch is the book's formula; the special cases say
-    # what the symbolic pitch gives for a couple (oo) and that the zero screw
-    # has none (nan here, an error there).
-    pitch_expr = Piecewise(
-        (_core.pitch(Screw.couple(s.S0)), Eq(SS, 0) & Ne(S0S0, 0)),
-        (nan, Eq(SS, 0)),
-        (_core.pitch(s), True),
-    )
-    return {
-        "pitch": ([s], pitch_expr, ["s"]),
-        "foot": ([s], _core.foot(s), ["s"]),
-        "reciprocal_product": ([s, s2], _core.reciprocal_product(s, s2), ["s1", "s2"]),
-        "shift_origin": ([s, A], _core.shift_origin(s, A), ["s", "A"]),
-        "line_through": ([A, B], LineVector.through(A, B), ["A", "B"]),
-        "velocity_at": ([t, P], t.velocity_at(P), ["twist", "point"]),
-        "moment_about": ([w, P], w.moment_about(P), ["wrench", "point"]),
-    }
+    return {name: _definition(name) for name in NAMES}
 
 
-_BY_BACKEND: dict[str, types.SimpleNamespace] = {}
+_BUILT: dict[tuple[str, str], Callable] = {}
+_LOCK = threading.Lock()
 
 
-def functions(backend: str = "numpy") -> types.SimpleNamespace:
+def _function(name: str, backend: str | None = None) -> Callable:
+    backend = _codegen._check_backend(backend)
+    key = (name, backend)
+    fn = _BUILT.get(key)
+    if fn is None:
+        with _LOCK:
+            fn = _BUILT.get(key)
+            if fn is None:
+                args, expr, names = _definition(name)
+                fn = lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
+                _BUILT[key] = fn
+    return fn
+
+
+def functions(backend: str | None = None) -> types.SimpleNamespace:
     """The generated functions for ``backend``, as attributes named as in :data:`NAMES`.
 
-    Built on first use and cached; ``functions("numpy").pitch is pitch``.
+    ``backend=None`` (default) is numba when installed, else NumPy, as for
+    the module's own functions.  Built on first use and cached;
+    ``functions().pitch is pitch``.
 
     Examples
     ========
 
     >>> from screwsym import numeric
-    >>> numeric.functions("numpy").pitch is numeric.pitch
+    >>> numeric.functions().pitch is numeric.pitch
     True
-    >>> sorted(vars(numeric.functions()))[:3]
+    >>> sorted(vars(numeric.functions("numpy")))[:3]
     ['foot', 'line_through', 'moment_about']
     """
-    if backend not in _BY_BACKEND:
-        built = {
-            name: lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
-            for name, (args, expr, names) in _definitions().items()
-        }
-        _BY_BACKEND[backend] = types.SimpleNamespace(**built)
-    return _BY_BACKEND[backend]
+    return types.SimpleNamespace(**{name: _function(name, backend) for name in NAMES})
 
 
-_numpy = functions("numpy")
-pitch: Callable = _numpy.pitch
-foot: Callable = _numpy.foot
-reciprocal_product: Callable = _numpy.reciprocal_product
-shift_origin: Callable = _numpy.shift_origin
-line_through: Callable = _numpy.line_through
-velocity_at: Callable = _numpy.velocity_at
-moment_about: Callable = _numpy.moment_about
+def __getattr__(name: str) -> Callable:
+    # PEP 562: the module's functions are generated on first use
+    if name in NAMES:
+        return _function(name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(NAMES))
+
 
 # The generated functions live in their own namespaces, so doctest would not
 # find their examples among this module's members; list them here.

@@ -168,17 +168,16 @@ def numba_source(plan: Plan, helpers: str) -> str:
         "_SPECS = _OUTS = None  # set by the loader",
         "",
         helpers,
-        "_min_py, _max_py, _sign_py = _min, _max, _sign",
-        "_min = _njit(cache=True)(_min_py)",
-        "_max = _njit(cache=True)(_max_py)",
-        "_sign = _njit(cache=True)(_sign_py)",
+        "_nb_min = _njit(cache=True)(_min)",
+        "_nb_max = _njit(cache=True)(_max)",
+        "_nb_sign = _njit(cache=True)(_sign)",
+        "_nb_mod = _njit(error_model='numpy', cache=True)(_mod)",
         "",
     ]
     lines += kernel_source(plan)
     lines += ["", "", "_kernel = _njit(error_model='numpy', cache=True)(_kernel_py)", "", ""]
     body = [f"    _kernel(_n, {_params(plan)}, {_outs(plan)})"]
-    lines += [ln.replace("_min(", "_min_py(").replace("_max(", "_max_py(")
-              .replace("_sign(", "_sign_py(") for ln in _wrapper(plan, body, True)]
+    lines += _wrapper(plan, body, True)
     return "\n".join(lines) + "\n"
 
 

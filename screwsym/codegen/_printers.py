@@ -96,6 +96,8 @@ class ScalarPrinter(_Common, PythonCodePrinter):
 
     def _print_Pow(self, expr, rational=False):
         b, e = expr.base, expr.exp
+        if e.is_Integer and e < 0:  # numba raises for 0.0**-n; 1/0.0 follows error_model
+            return f"(1.0/({self._print(b)})**({self._print(-e)}))"
         if e.is_Integer:
             return f"({self._print(b)})**({self._print(e)})"
         if e == Float(0.5) or e == Integer(1) / 2:
@@ -104,9 +106,11 @@ class ScalarPrinter(_Common, PythonCodePrinter):
             return f"(1.0/_m.sqrt({self._print(b)}))"
         return f"_m.pow({self._print(b)}, {self._print(e)})"
 
+    _helper = "_"  # helpers are _min, _max, _sign, _mod (see PY_HELPERS)
+
     def _print_Mod(self, expr):
         a, b = expr.args
-        return f"(({self._print(a)}) % ({self._print(b)}))"
+        return f"{self._helper}mod({self._print(a)}, {self._print(b)})"
 
     def _fold(self, args, fn):
         items = [self._print(a) for a in args]
@@ -116,13 +120,13 @@ class ScalarPrinter(_Common, PythonCodePrinter):
         return text
 
     def _print_Min(self, expr):
-        return self._fold(expr.args, "_min")  # see PY_HELPERS: nan propagates
+        return self._fold(expr.args, f"{self._helper}min")  # nan propagates
 
     def _print_Max(self, expr):
-        return self._fold(expr.args, "_max")
+        return self._fold(expr.args, f"{self._helper}max")
 
     def _print_sign(self, expr):
-        return f"_sign({self._print(expr.args[0])})"
+        return f"{self._helper}sign({self._print(expr.args[0])})"
 
     def _print_Abs(self, expr):
         return f"abs({self._print(expr.args[0])})"
@@ -153,6 +157,8 @@ class ScalarPrinter(_Common, PythonCodePrinter):
 
 class NumbaPrinter(ScalarPrinter):
     """The fused loop: as the scalar path, with NumPy's float ``floor``/``ceil``."""
+
+    _helper = "_nb_"  # the helpers compiled by numba
 
     def _print_floor(self, expr):
         return f"_np.floor({self._print(expr.args[0])})"
@@ -224,6 +230,10 @@ def _max(a, b):
 
 def _sign(x):
     return 1.0 if x > 0 else (-1.0 if x < 0 else 0.0 * x)
+
+
+def _mod(a, b):
+    return a % b if b != 0.0 else _m.nan
 """
 
 #: helpers every generated C file defines (static inline: no unused warnings)
