@@ -8,11 +8,11 @@ import warnings
 
 import numpy as np
 import pytest
-from _backends import BACKENDS
+from _backends import BACKENDS, HAS_NUMBA
 from sympy import Rational, symbols
 
 import screwsym
-from screwsym import LineVector, Screw, Twist, Wrench, numeric
+from screwsym import LineVector, Screw, Twist, Wrench, codegen, numeric
 
 
 def rationals(rng: random.Random, n: int) -> list[Rational]:
@@ -73,14 +73,38 @@ def test_agrees_with_the_symbolic_core(name, backend):
     assert_close(got.reshape((n,) + got.shape[2:]), np.stack(wants))
 
 
-def test_module_functions_are_the_numpy_back_end_and_generated():
-    assert numeric.pitch is numeric.functions("numpy").pitch
+def test_module_functions_are_the_default_back_end_and_generated():
+    # compiled by default when numba is installed (the issue's "fast by default")
+    default = "numba" if HAS_NUMBA else "numpy"
+    assert codegen.default_backend() == default
+    assert numeric.pitch is numeric.functions().pitch is numeric.functions(default).pitch
+    assert numeric.pitch is not numeric.functions("numpy").pitch or default == "numpy"
+    assert set(numeric.NAMES) <= set(dir(numeric))
     for name in numeric.NAMES:
         fn = getattr(numeric, name)
+        assert fn.__name__ == name
         source = inspect.getsource(fn)
-        assert source.startswith(f"def {name}(")
+        assert source.startswith("def _fn(")
         assert "_prepare(_SPECS" in source
         assert fn.__doc__ and "Generated from" in fn.__doc__
+    with pytest.raises(AttributeError, match="has no attribute 'nope'"):
+        numeric.nope  # noqa: B018
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_out_may_be_an_input(backend):
+    # issue 9: numeric.velocity_at(tw, q, out=q) gave wrong numbers in the NumPy back end
+    f = numeric.functions(backend)
+    rng = np.random.default_rng(9)
+    tw, q = rng.standard_normal((40000, 6)), rng.standard_normal((40000, 3))
+    want = f.velocity_at(tw, q)
+    got = f.velocity_at(tw, q, out=q)
+    assert got is not None and np.shares_memory(got, q)
+    np.testing.assert_array_equal(q, want)
+    s, A = rng.standard_normal((5, 6)), rng.standard_normal((5, 3))
+    want = f.shift_origin(s, A)
+    f.shift_origin(s, A, out=s)
+    np.testing.assert_array_equal(s, want)
 
 
 def test_broadcasting_one_screw_against_many_points():
