@@ -57,8 +57,8 @@ from collections.abc import Callable
 
 from sympy import Eq, Ne, Piecewise, nan
 
-from . import screw as _core
 from . import codegen as _codegen
+from . import screw as _core
 from .codegen import lambdify
 from .line import LineVector
 from .screw import Screw
@@ -66,7 +66,8 @@ from .twist import Twist
 from .vectors import vector
 from .wrench import Wrench
 
-__all__ = [
+#: the names of the generated functions, in a fixed order
+NAMES: tuple[str, ...] = (
     "pitch",
     "foot",
     "reciprocal_product",
@@ -74,9 +75,10 @@ __all__ = [
     "line_through",
     "velocity_at",
     "moment_about",
-    "functions",
-    "NAMES",
-]
+)
+
+# the generated functions are module attributes made on first use (__getattr__ below)
+__all__ = [*NAMES, "functions", "NAMES"]
 
 _DOCS = {
     "pitch": r"""The pitch ``h = S . S0 / S . S`` (1.34) of screws ``(..., 6)``; returns ``(...)``.
@@ -174,8 +176,7 @@ _DOCS = {
     """,
 }
 
-#: the names of the generated functions, in a fixed order
-NAMES: tuple[str, ...] = tuple(_DOCS)
+assert tuple(_DOCS) == NAMES
 
 
 def _definition(name: str) -> tuple[list, object, list[str]]:

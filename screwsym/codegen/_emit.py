@@ -122,7 +122,7 @@ def numpy_source(plan: Plan) -> str:
         "            _j = _i + _BLOCK",
     ]
     ind = "            "
-    for i, spec in enumerate(plan.specs):
+    for i in range(len(plan.specs)):
         body.append(f"{ind}_b = _a{i} if _a{i}.shape[0] == 1 else _a{i}[_i:_j]")
         for k, c, x in plan.unpack:
             if k == i:

@@ -195,6 +195,13 @@ class BlockPrinter(_Common, NumPyPrinter):
             text = f"_np.{fn}({text}, {other})"
         return text
 
+    def _print_And(self, expr):
+        # logical_and.reduce (SymPy's) fails on operands of different batch shapes
+        return self._fold(expr.args, "logical_and")
+
+    def _print_Or(self, expr):
+        return self._fold(expr.args, "logical_or")
+
     def _print_Min(self, expr):
         return self._fold(expr.args, "minimum")  # propagates nan
 
