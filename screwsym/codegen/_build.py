@@ -145,6 +145,7 @@ def _namespace(plan: Plan) -> dict:
         "_type": type,
         "_ndarray": np.ndarray,
         "_f64": np.float64,
+        "_dt": np.dtype(np.float64),
         "_array": np.array,
         "_errstate": np.errstate,
         "_prepare": prepare,

@@ -56,14 +56,19 @@ def _unpack_scalar(plan: Plan, ind: str) -> list[str]:
 
 
 def _scalar_path(plan: Plan) -> list[str]:
-    """Pure-Python float evaluation for a single point; IEEE cases fall through."""
+    """Pure-Python float evaluation for a single point; IEEE cases fall through.
+
+    Taken when every argument is a native ``float64`` array of its own shape
+    (no batch) or a Python/NumPy float; integer input takes the array path,
+    so that no Python integer arithmetic (exact, unlike the other paths) runs.
+    """
     printer = ScalarPrinter()
     conds = []
     for i, spec in enumerate(plan.specs):
         if spec.trailing:
             conds.append(
                 f"_type(_a{i}) is _ndarray and _a{i}.shape == {spec.trailing!r} "
-                f"and _a{i}.dtype.kind == 'f'"
+                f"and _a{i}.dtype is _dt"
             )
         else:
             conds.append(f"(_type(_a{i}) is float or _type(_a{i}) is _f64)")
@@ -76,12 +81,10 @@ def _scalar_path(plan: Plan) -> list[str]:
         items = [printer.doprint(e) for jj, _, e in plan.stores if jj == j]
         if not out.trailing:
             results.append(f"_f64({items[0]})")
-        elif len(out.trailing) == 1:
-            results.append(f"_array(({', '.join(items)},), _f64)")
+        elif len(out.trailing) == 1:  # a list is faster to convert than a tuple
+            results.append(f"_array([{', '.join(items)}], _dt)")
         else:
-            m, n = out.trailing
-            rows = ", ".join("(" + ", ".join(items[r * n : (r + 1) * n]) + ",)" for r in range(m))
-            results.append(f"_array(({rows},), _f64)")
+            results.append(f"_array([{', '.join(items)}], _dt).reshape({out.trailing!r})")
     ret = ", ".join(results) + ("," if plan.is_tuple and len(results) == 1 else "")
     lines.append(f"            return {ret}")
     lines.append("        except (ZeroDivisionError, ValueError, OverflowError):")
@@ -165,6 +168,7 @@ def numba_source(plan: Plan, helpers: str) -> str:
         "from screwsym.codegen._runtime import prepare as _prepare",
         "",
         "_type, _ndarray, _f64, _array = type, _np.ndarray, _np.float64, _np.array",
+        "_dt = _np.dtype(_np.float64)",
         "_SPECS = _OUTS = None  # set by the loader",
         "",
         helpers,

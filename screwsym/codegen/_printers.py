@@ -96,6 +96,8 @@ class ScalarPrinter(_Common, PythonCodePrinter):
 
     def _print_Pow(self, expr, rational=False):
         b, e = expr.base, expr.exp
+        if e == -1:
+            return f"(1.0/({self._print(b)}))"
         if e.is_Integer and e < 0:  # numba raises for 0.0**-n; 1/0.0 follows error_model
             return f"(1.0/({self._print(b)})**({self._print(-e)}))"
         if e.is_Integer:
