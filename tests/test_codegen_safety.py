@@ -342,3 +342,17 @@ def test_numba_disk_cache_serves_a_new_process(tmp_path):
 def test_pitch_is_still_a_screw_function():
     s = Screw(vector("S"), vector("S0"))
     assert lambdify([s], pitch(s), "numpy")(np.array([1.0, 0, 0, 2, 0, 0])) == 2.0
+
+
+def test_the_cores_common_normal_lambdifies_to_its_five_parts():
+    from screwsym import LineVector, common_normal
+
+    h = symbols("h", real=True)
+    cn = common_normal(LineVector.from_axis([0, 0, 0], [1, 0, 0]),
+                       LineVector.from_axis([0, 0, h], [0, 1, 1]))
+    a12, normal, alpha12, foot1, foot2 = lambdify([h], cn, "numpy")(np.array([2.0, -1.0]))
+    np.testing.assert_allclose(a12, [np.sqrt(2), np.sqrt(2) / 2])
+    np.testing.assert_allclose(normal[0], [0, -np.sqrt(0.5), np.sqrt(0.5)])
+    np.testing.assert_allclose(alpha12, np.pi / 2 * np.sign([2.0, -1.0]))
+    np.testing.assert_array_equal(foot1, np.zeros((2, 3)))
+    np.testing.assert_allclose(foot2, [[0, -1, 1], [0, 0.5, -0.5]])
