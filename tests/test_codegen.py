@@ -158,7 +158,7 @@ def test_names_source_and_cache():
 def test_numba_kernel_source_is_visible():
     f = lambdify([s], pitch(s), "numba", name="pitch_nb")
     assert "_kernel(_n, _a0, _o0)" in inspect.getsource(f)
-    assert "for _i in range(_n):" in inspect.getsource(f.kernel.py_func)
+    assert "for _i in range(_n):" in inspect.getsource(f.load_kernel().py_func)
 
 
 def test_numba_missing_gives_a_clear_error(monkeypatch):

@@ -202,12 +202,10 @@ def _numba_module(plan: Plan, use_cse: bool):
 
 
 def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    try:
-        import numba  # noqa: F401
-    except ImportError:  # pragma: no cover - depends on the environment
+    if importlib.util.find_spec("numba") is None:
         raise ImportError(
             "backend 'numba' needs numba: pip install 'screwsym[fast]' (or use backend='numpy')"
-        ) from None
+        )
     mod = _numba_module(plan, use_cse)
     mod._SPECS = tuple(plan.specs)
     mod._OUTS = tuple(out.trailing for out in plan.outs)
@@ -216,7 +214,7 @@ def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
     fn = type(base)(base.__code__, mod.__dict__, "_fn", None, base.__closure__)
     fn.__kwdefaults__ = dict(base.__kwdefaults__ or {})
     fn = _finish(fn, plan, doc)
-    fn.kernel = mod._kernel
+    fn.load_kernel = mod._load  # the numba dispatcher (imports numba, compiles or loads)
     return fn
 
 

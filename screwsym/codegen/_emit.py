@@ -158,28 +158,52 @@ def kernel_source(plan: Plan) -> list[str]:
 
 
 def numba_source(plan: Plan, helpers: str) -> str:
-    """A module: helpers and kernel compiled by numba (cached on disk), and the wrapper."""
+    """A module: helpers and kernel compiled by numba (cached on disk), and the wrapper.
+
+    numba is imported, and the loop compiled or loaded from numba's disk
+    cache, on the first call that needs the loop: a single point never does.
+    """
     lines = _header(plan, "numba") + [
         "import math as _m",
+        "import threading as _threading",
         "",
         "import numpy as _np",
-        "from numba import njit as _njit",
         "",
         "from screwsym.codegen._runtime import prepare as _prepare",
         "",
         "_type, _ndarray, _f64, _array = type, _np.ndarray, _np.float64, _np.array",
         "_dt = _np.dtype(_np.float64)",
         "_SPECS = _OUTS = None  # set by the loader",
+        "_LOCK = _threading.Lock()",
         "",
         helpers,
-        "_nb_min = _njit(cache=True)(_min)",
-        "_nb_max = _njit(cache=True)(_max)",
-        "_nb_sign = _njit(cache=True)(_sign)",
-        "_nb_mod = _njit(error_model='numpy', cache=True)(_mod)",
-        "",
     ]
     lines += kernel_source(plan)
-    lines += ["", "", "_kernel = _njit(error_model='numpy', cache=True)(_kernel_py)", "", ""]
+    lines += [
+        "",
+        "",
+        "def _load():",
+        "    global _kernel, _nb_min, _nb_max, _nb_sign, _nb_mod",
+        "    with _LOCK:",
+        "        if _kernel is _stub:",
+        "            from numba import njit as _njit",
+        "",
+        "            _nb_min = _njit(cache=True)(_min)",
+        "            _nb_max = _njit(cache=True)(_max)",
+        "            _nb_sign = _njit(cache=True)(_sign)",
+        "            _nb_mod = _njit(error_model='numpy', cache=True)(_mod)",
+        "            _kernel = _njit(error_model='numpy', cache=True)(_kernel_py)",
+        "    return _kernel",
+        "",
+        "",
+        "def _stub(*args):",
+        "    return _load()(*args)",
+        "",
+        "",
+        "_kernel = _stub",
+        "",
+        "",
+    ]
     body = [f"    _kernel(_n, {_params(plan)}, {_outs(plan)})"]
     lines += _wrapper(plan, body, True)
     return "\n".join(lines) + "\n"

@@ -75,7 +75,7 @@ from sympy.matrices import MatrixBase
 from ._runtime import Arg
 
 #: bump when the generated code changes, so that disk caches are not reused
-VERSION = "6"
+VERSION = "7"
 
 # The constructs every back end prints with the same semantics (see the
 # printers).  Anything else is refused before printing.
