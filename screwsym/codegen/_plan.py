@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
+import sympy
 from sympy import (
     Abs,
     Add,
@@ -321,7 +322,7 @@ def key_of(specs, symbols, outs, is_tuple, use_cse, name, backend) -> tuple[str,
     text = srepr((
         tuple((s.name, s.trailing, s.what) for s in specs),
         tuple(out.trailing for out, _ in outs),
-        is_tuple, bool(use_cse), name, backend, VERSION, tuple(flat),
+        is_tuple, bool(use_cse), name, backend, VERSION, sympy.__version__, tuple(flat),
     ))  # fmt: skip
     return hashlib.sha256(text.encode()).hexdigest()[:24], flat
 
