@@ -51,15 +51,18 @@ screwsym.codegen.lambdify
 
 from __future__ import annotations
 
+import hashlib
 import threading
 import types
 from collections.abc import Callable
+from pathlib import Path
 
+import sympy
 from sympy import Eq, Ne, Piecewise, nan
 
 from . import codegen as _codegen
 from . import screw as _core
-from .codegen import lambdify
+from .codegen import _build, lambdify
 from .line import LineVector
 from .screw import Screw
 from .twist import Twist
@@ -220,6 +223,22 @@ def _definitions() -> dict[str, tuple[list, object, list[str]]]:
 
 _BUILT: dict[tuple[str, str], Callable] = {}
 _LOCK = threading.Lock()
+_DIGEST: list[str] = []
+
+
+def _source_digest() -> str:
+    """A digest of screwsym's own source and SymPy's version: the tag of a numba index.
+
+    A new process finds its compiled functions by this tag without building
+    the symbolic expressions again; any change to a formula changes it.
+    """
+    if not _DIGEST:
+        root = Path(__file__).resolve().parent
+        h = hashlib.sha256(sympy.__version__.encode())
+        for path in sorted([*root.glob("*.py"), *root.glob("codegen/*.py")]):
+            h.update(path.name.encode() + b"\0" + path.read_bytes())
+        _DIGEST.append(h.hexdigest()[:24])
+    return _DIGEST[0]
 
 
 def _function(name: str, backend: str | None = None) -> Callable:
@@ -229,10 +248,15 @@ def _function(name: str, backend: str | None = None) -> Callable:
     if fn is None:
         with _LOCK:
             fn = _BUILT.get(key)
+            if fn is None and backend == "numba":
+                tag = f"{name}-{_source_digest()}"
+                fn = _build.load_index(tag, _DOCS[name])
             if fn is None:
                 args, expr, names = _definition(name)
                 fn = lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
-                _BUILT[key] = fn
+                if backend == "numba":
+                    _build.save_index(tag, fn)
+            _BUILT[key] = fn
     return fn
 
 

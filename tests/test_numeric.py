@@ -3,8 +3,13 @@
 from __future__ import annotations
 
 import inspect
+import os
 import random
+import subprocess
+import sys
+import textwrap
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -172,3 +177,34 @@ def test_symbolic_and_numeric_share_the_formula():
     s = np.array([1.0, 2, 3, 4, 5, 6])
     assert numeric.pitch(s) == pytest.approx((4 + 10 + 18) / 14)
     np.testing.assert_allclose(numeric.foot(s), np.cross(s[:3], s[3:]) / 14)
+
+
+@pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
+def test_a_new_process_loads_the_compiled_functions_without_rebuilding_them(tmp_path):
+    script = textwrap.dedent("""
+        import sys
+        import numpy as np
+        from screwsym import numeric
+        if sys.argv[1] == "second":
+            def boom(name):
+                raise AssertionError("rebuilt " + name)
+            numeric._definition = boom
+        print(numeric.pitch(np.array([1.0, 1, 0, 1, 0, 0])), numeric.foot(np.ones((2, 6)))[1, 1])
+    """)
+    env = dict(os.environ, SCREWSYM_CACHE_DIR=str(tmp_path))
+    root = Path(__file__).resolve().parents[1]
+
+    def run(mode):
+        return subprocess.run([sys.executable, "-c", script, mode], env=env, cwd=root,
+                              capture_output=True, text=True)
+
+    first = run("first")
+    assert first.returncode == 0, first.stderr
+    second = run("second")
+    assert second.returncode == 0, second.stderr
+    assert first.stdout == second.stdout == "0.5 0.0\n"
+    # an unreadable index is ignored: the function is built again
+    for index in (tmp_path / "numba").glob("index-pitch-*.json"):
+        index.write_text('{"key": "../../evil"}')
+    third = run("second")
+    assert third.returncode != 0 and "rebuilt pitch" in third.stderr

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ctypes
 import importlib.util
+import json
 import linecache
 import math
 import os
@@ -26,9 +27,9 @@ from pathlib import Path
 import numpy as np
 
 from . import _emit
-from ._plan import Plan, with_cse
+from ._plan import Out, Plan, with_cse
 from ._printers import PY_HELPERS
-from ._runtime import prepare
+from ._runtime import Arg, prepare
 
 #: rows per block in the NumPy back end: 16384 rows of float64 temporaries
 #: (128 KiB each) stay in the L2 cache; measured best between 4096 and 65536.
@@ -201,12 +202,7 @@ def _numba_module(plan: Plan, use_cse: bool):
     return mod
 
 
-def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    if importlib.util.find_spec("numba") is None:
-        raise ImportError(
-            "backend 'numba' needs numba: pip install 'screwsym[fast]' (or use backend='numpy')"
-        )
-    mod = _numba_module(plan, use_cse)
+def _numba_function(mod, plan: Plan, doc: str) -> Callable:
     mod._SPECS = tuple(plan.specs)
     mod._OUTS = tuple(out.trailing for out in plan.outs)
     # a fresh function object per plan: the user's names are set on it, not on the module's
@@ -215,7 +211,62 @@ def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
     fn.__kwdefaults__ = dict(base.__kwdefaults__ or {})
     fn = _finish(fn, plan, doc)
     fn.load_kernel = mod._load  # the numba dispatcher (imports numba, compiles or loads)
+    fn._screwsym_meta = {
+        "key": plan.key,
+        "name": plan.name,
+        "is_tuple": plan.is_tuple,
+        "specs": [[spec.name, list(spec.trailing), spec.what] for spec in plan.specs],
+        "outs": [list(out.trailing) for out in plan.outs],
+    }
     return fn
+
+
+def _index_path(tag: str) -> Path | None:
+    sub = _subdir("numba")
+    return None if sub is None else sub / f"index-{tag}.json"
+
+
+def save_index(tag: str, fn: Callable) -> None:
+    """Remember, under ``tag``, which generated module ``fn`` (numba) came from.
+
+    :mod:`screwsym.numeric` tags its functions with a digest of screwsym's
+    source, so that a new process can load them without rebuilding the
+    symbolic expressions; any change to the source changes the tag.
+    """
+    path = _index_path(tag)
+    meta = getattr(fn, "_screwsym_meta", None)
+    if path is not None and meta is not None:
+        _write_atomic(path, json.dumps(meta).encode())
+
+
+def load_index(tag: str, doc: str) -> Callable | None:
+    """The numba function saved under ``tag``, or None (never saved, or unreadable)."""
+    path = _index_path(tag)
+    if path is None or not path.exists() or importlib.util.find_spec("numba") is None:
+        return None
+    try:
+        meta = json.loads(path.read_text())
+        key = meta["key"]
+        if not (isinstance(key, str) and key.isalnum() and key.isascii()):
+            return None
+        plan = Plan(
+            tuple(Arg(str(n), tuple(int(d) for d in t), str(w)) for n, t, w in meta["specs"]),
+            tuple(Out(tuple(int(d) for d in t)) for t in meta["outs"]),
+            bool(meta["is_tuple"]), (), (), (), str(meta["name"]), key,
+        )  # fmt: skip
+        if not (path.parent / f"screwsym_generated_{key}.py").exists():
+            return None
+        return _numba_function(_numba_module(plan, False), plan, doc)
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
+    if importlib.util.find_spec("numba") is None:
+        raise ImportError(
+            "backend 'numba' needs numba: pip install 'screwsym[fast]' (or use backend='numpy')"
+        )
+    return _numba_function(_numba_module(plan, use_cse), plan, doc)
 
 
 # ------------------------------------------------------------------------ C
