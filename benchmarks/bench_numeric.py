@@ -183,7 +183,9 @@ def main() -> None:
         print(f"  numba: generate {t_gen:.3f}, first-call JIT compile {t_jit:.3f} "
               f"({t_jit / len(numeric.NAMES):.3f} per function)")
         backends["numba"] = nb
-    backends = {"default": numeric.functions(), **backends}
+    default = codegen.default_backend()
+    same = all(getattr(numeric, k) is getattr(backends[default], k) for k in numeric.NAMES)
+    print(f"  default of screwsym.numeric: {default!r} (the same function objects: {same})")
     if shutil.which("cc"):
         t0 = time.perf_counter()
         backends["c"] = numeric.functions("c")
@@ -194,10 +196,10 @@ def main() -> None:
     # --------------------------------------------------------- throughput
     bw = bandwidth(n, repeat)
     print(f"\nN = {n:,}, ns per screw (best of {repeat}); streaming bandwidth {bw:.1f} B/ns")
-    cols = ["default", "numpy", "numba", "numba out=", "c", "hand NumPy", "symengine llvm",
+    cols = ["numpy", "numba", "numba out=", "c", "hand NumPy", "symengine llvm",
             "floor"]
     print(f"  {'operation':<20}" + "".join(f"{c:>12}" for c in cols)
-          + f"{'hand/numpy':>12}{'default/floor':>15}{'def/fl(meas)':>14}")
+          + f"{'hand/numpy':>12}{'default/floor':>15}{'def/fl(meas)':>14}{'out=/fl(meas)':>15}")
     for name in numeric.NAMES:
         args = inputs(name, n, rng)
         calls = {label: (getattr(funcs, name), args) for label, funcs in backends.items()}
@@ -214,8 +216,9 @@ def main() -> None:
         floor = ISSUE_FLOOR.get(name, row["floor"])
         print(f"  {name:<20}" + "".join(
             f"{row[c]:>12.2f}" if c in row else f"{'-':>12}" for c in cols)
-            + f"{row['hand NumPy'] / row['numpy']:>12.2f}{row['default'] / floor:>15.2f}"
-            + f"{row['default'] / row['floor']:>14.2f}")
+            + f"{row['hand NumPy'] / row['numpy']:>12.2f}{row[default] / floor:>15.2f}"
+            + f"{row[default] / row['floor']:>14.2f}"
+            + (f"{row['numba out='] / row['floor']:>15.2f}" if "numba out=" in row else ""))
     print("  (default/floor uses the issue's floor where it gives one: "
           + ", ".join(f"{k} {v}" for k, v in ISSUE_FLOOR.items()) + ")")
 

@@ -307,3 +307,13 @@ def test_out_arrays_are_filled_and_checked(backend):
     with pytest.raises(ValueError, match=r"out\[0\]: .* got float64 array of shape \(4, 3\), "
                        r"not C-contiguous"):
         f(x, P, out=(np.empty((4, 6))[:, :3], o1))
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_single_point_results_are_ordinary_writeable_arrays(backend):
+    f = lambdify([s], (foot(s), Matrix([[S[0], S[1]], [S0[0], 1]])), backend, names=["s"])
+    P, M = f(np.array([1.0, 1, 0, 1, 0, 0]))
+    assert P.dtype == np.float64 and P.shape == (3,) and P.flags.writeable
+    assert M.shape == (2, 2) and M.flags.writeable
+    P[0] = 7.0
+    np.testing.assert_array_equal(M, [[1.0, 1.0], [1.0, 1.0]])

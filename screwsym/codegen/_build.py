@@ -16,6 +16,7 @@ import math
 import os
 import shutil
 import stat
+import struct
 import subprocess
 import sys
 import tempfile
@@ -147,6 +148,10 @@ def _namespace(plan: Plan) -> dict:
         "_ndarray": np.ndarray,
         "_f64": np.float64,
         "_dt": np.dtype(np.float64),
+        "_fb": np.frombuffer,
+        "_ba": bytearray,
+        "_StructError": struct.error,
+        **{f"_pk{out.size}": struct.Struct(f"{out.size}d").pack for out in plan.outs},
         "_array": np.array,
         "_errstate": np.errstate,
         "_prepare": prepare,

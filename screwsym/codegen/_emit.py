@@ -81,13 +81,12 @@ def _scalar_path(plan: Plan) -> list[str]:
         items = [printer.doprint(e) for jj, _, e in plan.stores if jj == j]
         if not out.trailing:
             results.append(f"_f64({items[0]})")
-        elif len(out.trailing) == 1:  # a list is faster to convert than a tuple
-            results.append(f"_array([{', '.join(items)}], _dt)")
-        else:
-            results.append(f"_array([{', '.join(items)}], _dt).reshape({out.trailing!r})")
+        else:  # packed doubles into a writeable buffer: faster than numpy.array of a list
+            arr = f"_fb(_ba(_pk{out.size}({', '.join(items)})))"
+            results.append(arr if len(out.trailing) == 1 else f"{arr}.reshape({out.trailing!r})")
     ret = ", ".join(results) + ("," if plan.is_tuple and len(results) == 1 else "")
     lines.append(f"            return {ret}")
-    lines.append("        except (ZeroDivisionError, ValueError, OverflowError):")
+    lines.append("        except (ZeroDivisionError, ValueError, OverflowError, _StructError):")
     lines.append("            pass  # IEEE 754 inf/nan: the array code below gives it")
     return lines
 
@@ -165,6 +164,7 @@ def numba_source(plan: Plan, helpers: str) -> str:
     """
     lines = _header(plan, "numba") + [
         "import math as _m",
+        "import struct as _struct",
         "import threading as _threading",
         "",
         "import numpy as _np",
@@ -173,6 +173,8 @@ def numba_source(plan: Plan, helpers: str) -> str:
         "",
         "_type, _ndarray, _f64, _array = type, _np.ndarray, _np.float64, _np.array",
         "_dt = _np.dtype(_np.float64)",
+        "_fb, _ba, _StructError = _np.frombuffer, bytearray, _struct.error",
+        *[f"_pk{k} = _struct.Struct('{k}d').pack" for k in sorted({o.size for o in plan.outs})],
         "_SPECS = _OUTS = None  # set by the loader",
         "_LOCK = _threading.Lock()",
         "",
