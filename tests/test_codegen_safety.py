@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import inspect
 import linecache
 import os
 import stat
@@ -133,6 +134,10 @@ def test_user_names_never_clash_with_generated_names(backend):
     assert g(np.array([[5.0, 0, 2]])) == 3.0
     out = np.empty(1)
     assert f(*[np.array([v]) for v in vals], out=out) is not None and out[0] == want
+    # a symbol called out keeps its value apart from the out= keyword
+    o = Symbol("out", real=True)
+    k = lambdify([o], o * 2, backend)
+    assert str(inspect.signature(k)) == "(arg0, *, out=None)" and k(4.0) == 8.0
 
 
 @pytest.mark.skipif(not HAS_CC, reason="no C compiler")
