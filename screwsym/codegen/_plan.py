@@ -76,7 +76,7 @@ from sympy.matrices import MatrixBase
 from ._runtime import Arg
 
 #: bump when the generated code changes, so that disk caches are not reused
-VERSION = "8"
+VERSION = "9"
 
 # The constructs every back end prints with the same semantics (see the
 # printers).  Anything else is refused before printing.

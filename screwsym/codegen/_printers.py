@@ -100,6 +100,8 @@ class ScalarPrinter(_Common, PythonCodePrinter):
             return f"(1.0/({self._print(b)}))"
         if e.is_Integer and e < 0:  # numba raises for 0.0**-n; 1/0.0 follows error_model
             return f"(1.0/({self._print(b)})**({self._print(-e)}))"
+        if e == 2 and b.is_Symbol:  # one correctly rounded product, as pow(b, 2); faster
+            return f"({self._print(b)}*{self._print(b)})"
         if e.is_Integer:
             return f"({self._print(b)})**({self._print(e)})"
         if e == Float(0.5) or e == Integer(1) / 2:
