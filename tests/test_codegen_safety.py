@@ -23,6 +23,7 @@ from sympy import (
     Integral,
     Lambda,
     Matrix,
+    Min,
     Subs,
     Sum,
     Symbol,
@@ -364,3 +365,16 @@ def test_the_cores_common_normal_lambdifies_to_its_five_parts():
     np.testing.assert_allclose(alpha12, np.pi / 2 * np.sign([2.0, -1.0]))
     np.testing.assert_array_equal(foot1, np.zeros((2, 3)))
     np.testing.assert_allclose(foot2, [[0, -1, 1], [0, 0.5, -0.5]])
+
+
+@pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
+def test_numba_without_a_usable_cache_directory_compiles_in_memory(tmp_path, monkeypatch):
+    (tmp_path / "file").write_text("")
+    monkeypatch.setenv("SCREWSYM_CACHE_DIR", str(tmp_path / "file"))
+    f = lambdify([x, y], Min(x, y) * 3 + 0.25, "numba")  # not built elsewhere
+    assert f(np.array([1.0, 5.0]), 2.0).tolist() == [3.25, 6.25]
+    kernel = f.load_kernel()
+    assert f(np.array([4.0]), 2.0).tolist() == [6.25] and f.load_kernel() is kernel
+    source = "".join(linecache.getlines(f.__code__.co_filename))
+    assert "cache=False" in source and "cache=True" not in source
+    assert list(tmp_path.iterdir()) == [tmp_path / "file"]

@@ -186,11 +186,9 @@ def _numba_module(plan: Plan, use_cse: bool):
         # no usable cache directory: compile in memory, without numba's disk cache
         full = with_cse(plan) if use_cse else plan
         source = _emit.numba_source(full, PY_HELPERS).replace("cache=True", "cache=False")
-        ns = _namespace(full)
-        ns["__name__"] = modname
-        _exec(source, full, "numba", ns)
         mod = type(sys)(modname)
-        mod.__dict__.update(ns)
+        _exec(source, full, "numba", mod.__dict__)
+        sys.modules[modname] = mod
         return mod
     path = sub / f"{modname}.py"
     if not path.exists():
