@@ -53,16 +53,18 @@ def cached(key: tuple, build: Callable[[], Callable]) -> Callable:
             return fn
         lock = _BUILDING.setdefault(key, threading.Lock())
     with lock:  # one build per key; other threads asking for it wait here
-        with _LOCK:
-            fn = _CACHE.get(key)
-        if fn is None:
-            fn = build()
+        try:
             with _LOCK:
-                _CACHE[key] = fn
-                while len(_CACHE) > CACHE_SIZE:
-                    _CACHE.popitem(last=False)
-        with _LOCK:
-            _BUILDING.pop(key, None)
+                fn = _CACHE.get(key)
+            if fn is None:
+                fn = build()
+                with _LOCK:
+                    _CACHE[key] = fn
+                    while len(_CACHE) > CACHE_SIZE:
+                        _CACHE.popitem(last=False)
+        finally:
+            with _LOCK:
+                _BUILDING.pop(key, None)
     return fn
 
 
