@@ -378,3 +378,12 @@ def test_numba_without_a_usable_cache_directory_compiles_in_memory(tmp_path, mon
     source = "".join(linecache.getlines(f.__code__.co_filename))
     assert "cache=False" in source and "cache=True" not in source
     assert list(tmp_path.iterdir()) == [tmp_path / "file"]
+
+
+@pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
+def test_disk_cache_is_bounded(tmp_path, monkeypatch):
+    monkeypatch.setenv("SCREWSYM_CACHE_DIR", str(tmp_path))
+    monkeypatch.setattr(_build, "DISK_FILES", 2)
+    fns = [lambdify([x], x * 3 + k + 2000, "numba") for k in range(4)]  # written, not compiled
+    assert len(list((tmp_path / "numba").glob("screwsym_generated_*.py"))) == 2
+    assert [f(1.0) for f in fns] == [2003.0, 2004.0, 2005.0, 2006.0]  # loaded ones still run

@@ -80,6 +80,9 @@ def cache_dir() -> Path | None:
     ``$SCREWSYM_CACHE_DIR`` if set, else ``$XDG_CACHE_HOME/screwsym``, else
     ``~/.cache/screwsym``.  None (no disk cache) when it cannot be created
     or is not a directory owned by this user that others cannot write.
+    Files are named by a content hash of the generated code (which includes
+    a digest of screwsym's code generator), written atomically, and at most
+    :data:`DISK_FILES` of each kind are kept.
     """
     root = os.environ.get("SCREWSYM_CACHE_DIR")
     if not root:
@@ -110,6 +113,22 @@ def _subdir(name: str) -> Path | None:
     except OSError:
         return None
     return sub
+
+
+#: at most this many generated modules (numba) or libraries (C) are kept on disk
+DISK_FILES: int = 1000
+
+
+def _prune(sub: Path, suffix: str) -> None:
+    """Remove the least recently written files beyond :data:`DISK_FILES` (and numba's caches)."""
+    try:
+        files = sorted(sub.glob(f"screwsym_*{suffix}"), key=lambda p: p.stat().st_mtime)
+        for old in files[: max(0, len(files) - DISK_FILES)]:
+            old.unlink(missing_ok=True)
+            for cached in (sub / "__pycache__").glob(f"{old.stem}.*"):
+                cached.unlink(missing_ok=True)
+    except OSError:  # another process pruned first
+        pass
 
 
 def _write_atomic(path: Path, data: bytes) -> None:
@@ -196,6 +215,7 @@ def _numba_module(plan: Plan, use_cse: bool):
     if not path.exists():
         full = with_cse(plan) if use_cse else plan
         _write_atomic(path, _emit.numba_source(full, PY_HELPERS).encode())
+        _prune(sub, ".py")
     spec = importlib.util.spec_from_file_location(modname, path)
     mod = importlib.util.module_from_spec(spec)
     sys.modules[modname] = mod
@@ -309,6 +329,7 @@ def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
         so_path = sub / f"{cname}.so"
         if not so_path.exists():
             _compile_c(source, so_path)
+            _prune(sub, ".so")
         lib = ctypes.CDLL(str(so_path))
     else:
         with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:

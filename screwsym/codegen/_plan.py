@@ -15,6 +15,7 @@ import keyword
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import sympy
@@ -74,9 +75,6 @@ from sympy.logic.boolalg import BooleanFalse, BooleanTrue
 from sympy.matrices import MatrixBase
 
 from ._runtime import Arg
-
-#: bump when the generated code changes, so that disk caches are not reused
-VERSION = "9"
 
 # The constructs every back end prints with the same semantics (see the
 # printers).  Anything else is refused before printing.
@@ -310,6 +308,19 @@ def _preorder(x: Basic):
 # ---------------------------------------------------------------- the plan
 
 
+_DIGEST: list[str] = []
+
+
+def code_digest() -> str:
+    """A digest of this package's source: generated code from another version never matches."""
+    if not _DIGEST:
+        h = hashlib.sha256(sympy.__version__.encode())
+        for path in sorted(Path(__file__).resolve().parent.glob("*.py")):
+            h.update(path.name.encode() + b"\0" + path.read_bytes())
+        _DIGEST.append(h.hexdigest()[:16])
+    return _DIGEST[0]
+
+
 def key_of(specs, symbols, outs, is_tuple, use_cse, name, backend) -> tuple[str, list[Expr]]:
     """Content hash of the generated code, and the expressions with screwsym's names."""
     mapping: dict[Symbol, Symbol] = {}
@@ -322,7 +333,7 @@ def key_of(specs, symbols, outs, is_tuple, use_cse, name, backend) -> tuple[str,
     text = srepr((
         tuple((s.name, s.trailing, s.what) for s in specs),
         tuple(out.trailing for out, _ in outs),
-        is_tuple, bool(use_cse), name, backend, VERSION, sympy.__version__, tuple(flat),
+        is_tuple, bool(use_cse), name, backend, code_digest(), tuple(flat),
     ))  # fmt: skip
     return hashlib.sha256(text.encode()).hexdigest()[:24], flat
 
