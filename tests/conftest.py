@@ -1,4 +1,9 @@
+"""Shared fixtures.  Importing ``_backends`` first points screwsym's disk cache of compiled
+code at a temporary directory for the whole session (doctests included), so tests never
+write to the user's cache directory."""
+
 import pytest
+from _backends import BACKENDS  # noqa: F401  (sets SCREWSYM_CACHE_DIR before screwsym loads code)
 from sympy import symbols
 
 from screwsym import vector
