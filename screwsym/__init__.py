@@ -26,6 +26,7 @@ from .line import (
     is_coplanar,
     mutual_moment,
 )
+from .mechanism import Limb, Mobility, ParallelMechanism
 from .printing import init_printing
 from .screw import (
     Screw,
@@ -42,6 +43,7 @@ from .screw import (
     unit,
 )
 from .transform import Transform
+from .system import ScrewSystem
 from .twist import Twist
 from .vectors import vector
 from .wrench import Wrench, power
@@ -83,6 +85,10 @@ __all__ = [
     "Chain",
     "convert",
     "convert_from",
+    "ScrewSystem",
+    "Limb",
+    "ParallelMechanism",
+    "Mobility",
 ]
 
 # Subpackages that pull in more (the book registry, code generation, plotting)

@@ -463,3 +463,60 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
             "or Wrench.from_matrix"
         )
     return check_vector(value, name)
+def check_screw_system_members(values: Any, name: str) -> tuple:
+    """Return ``values`` as a tuple of screws of one kind: all twists, all wrenches or all screws.
+
+    Screw objects are passed through; 6-vectors (S; S0) become plain screws,
+    or the kind of the screw objects among them.
+
+    >>> from screwsym import Twist, Wrench
+    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0])], "screws")
+    (Twist([1, 0, 0], [0, 0, 0]),)
+    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0]),
+    ...                             Wrench([1, 0, 0], [0, 0, 0])], "screws")
+    Traceback (most recent call last):
+    ...
+    TypeError: screws: expected screws of one kind, got Twist and Wrench
+    """
+    from .screw import Screw
+
+    values = tuple(values)
+    kinds = []
+    for v in values:
+        if isinstance(v, Screw) and type(v) not in kinds:
+            kinds.append(type(v))
+    if len(kinds) > 1:
+        raise TypeError(
+            f"{name}: expected screws of one kind, got {' and '.join(k.__name__ for k in kinds)}"
+        )
+    cls = kinds[0] if kinds else Screw
+    return tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
+
+
+def check_direction(value: Any, name: str) -> ImmutableMatrix:
+    """Return ``value`` as a 3-vector that is not provably zero (an axis direction).
+
+    >>> check_direction([0, 0, 0], "direction")
+    Traceback (most recent call last):
+    ...
+    ValueError: direction: expected a non-zero direction, got [0, 0, 0]
+    """
+    v = check_vector(value, name)
+    if is_zero_vector(v) is True:
+        raise ValueError(f"{name}: expected a non-zero direction, got {list(v)}")
+    return v
+
+
+def check_count(value: Any, name: str) -> int:
+    """Return ``value`` if it is a positive ``int`` (not a bool).
+
+    >>> check_count(0, "max_cases")
+    Traceback (most recent call last):
+    ...
+    ValueError: max_cases: expected a positive integer, got 0
+    """
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise TypeError(f"{name}: expected a positive integer, got {_describe(value)}")
+    if value < 1:
+        raise ValueError(f"{name}: expected a positive integer, got {value}")
+    return value

@@ -1,0 +1,402 @@
+r"""Kinematic pairs, limbs and the mobility of parallel mechanisms.
+
+A joint is the screw system of the unit twists it allows; a limb (a serial
+chain from the base to the moving platform) is the union of its joints' twist
+systems, and the wrenches it transmits to the platform, its *constraints*, are
+the reciprocal system.  A parallel mechanism is a platform carried by limbs:
+its constraint system is the union of the limbs' constraint systems, and the
+platform's instantaneous motions are the reciprocal of that.
+
+Mobility by the modified Grübler–Kutzbach criterion (Huang, Li & Ding,
+Chapters 2 and 5; Huang, Zhao & Zhao 2003, 2011)::
+
+    M = d (n - g - 1) + sum f_i + nu - zeta,    d = 6 - lambda
+
+with n links (base and platform included), g joints of f_i freedoms each, and,
+found here from the screw systems of the k limbs (T_i the twist system of limb
+i, W_i = T_i^r its constraint system, c_i = rank W_i):
+
+- ``lambda``, the common constraints: the wrenches reciprocal to every joint
+  twist of the whole mechanism, ``lambda = 6 - rank(T_1 u ... u T_k)``
+  (the rank of the intersection of all W_i);
+- ``nu``, the redundant constraints once the common ones are set aside:
+  ``nu = sum_i (c_i - lambda) - (rank(W_1 u ... u W_k) - lambda)``;
+- ``zeta``, the passive (local) freedoms: ``zeta = sum_i (f(limb i) - rank T_i)``,
+  joint motions that move no link of the platform (a S-S leg spinning about
+  itself).
+
+With these definitions M equals ``6 - rank(W_1 u ... u W_k)``, the dimension
+of the platform's twist system, which the tests check.  The classical count
+``6 (n - g - 1) + sum f_i`` is reported beside it; it fails for
+over-constrained mechanisms (the planar four-bar gives -2).
+
+All ranks are generic in the symbols (see :mod:`screwsym.system`);
+:meth:`ParallelMechanism.mobility_cases` splits the analysis where the rank of
+the constraint system changes.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+from sympy import ImmutableMatrix
+
+from ._basic import ScrewsymBasic
+from ._validation import check_direction, check_scalar, check_vector
+from .system import MAX_CASES, ScrewSystem, _analysis
+from .twist import Twist
+
+__all__ = [
+    "Joint",
+    "R",
+    "P",
+    "H",
+    "C",
+    "U",
+    "S",
+    "Limb",
+    "ParallelMechanism",
+    "Mobility",
+    "motion_type",
+]
+
+_E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
+
+
+def _rotation(point: ImmutableMatrix, direction: ImmutableMatrix) -> Twist:
+    """The unit-rate rotation about the line through ``point`` along ``direction`` (1.48)."""
+    return Twist(direction, point.cross(direction))
+
+
+class Joint(ScrewsymBasic):
+    """A kinematic pair: the screw system of the unit twists it allows.
+
+    Subclasses: :class:`R`, :class:`P`, :class:`H`, :class:`C`, :class:`U`,
+    :class:`S`.  ``freedom`` is the number of joint variables (f_i).
+    """
+
+    __slots__ = ()
+    freedom: int = 0
+
+    def twists(self) -> ScrewSystem:
+        """The joint's twists, one per freedom, as a :class:`~screwsym.system.ScrewSystem`."""
+        return ScrewSystem(*self._twists())
+
+    def _twists(self) -> list[Twist]:  # pragma: no cover - every subclass defines it
+        raise NotImplementedError
+
+
+class R(Joint):
+    """Revolute joint: rotation about the line through ``point`` along ``direction``.
+
+    >>> from screwsym.mechanism import R
+    >>> R([1, 0, 0], [0, 0, 1]).twists()
+    ScrewSystem(Twist([0, 0, 1], [0, -1, 0]))
+    """
+
+    __slots__ = ()
+    freedom = 1
+
+    def __new__(cls, point: Any, direction: Any):
+        return ScrewsymBasic.__new__(
+            cls, check_vector(point, "point"), check_direction(direction, "direction")
+        )
+
+    def _twists(self):
+        return [_rotation(*self.args)]
+
+
+class P(Joint):
+    """Prismatic joint: translation along ``direction``, the twist ``(0; direction)``.
+
+    >>> from screwsym.mechanism import P
+    >>> P([0, 0, 1]).twists()
+    ScrewSystem(Twist([0, 0, 0], [0, 0, 1]))
+    """
+
+    __slots__ = ()
+    freedom = 1
+
+    def __new__(cls, direction: Any):
+        return ScrewsymBasic.__new__(cls, check_direction(direction, "direction"))
+
+    def _twists(self):
+        return [Twist([0, 0, 0], self.args[0])]
+
+
+class H(Joint):
+    """Helical joint: the screw motion of ``pitch`` about the line (point, direction) (1.52).
+
+    >>> from screwsym.mechanism import H
+    >>> H([0, 0, 0], [0, 0, 1], 2).twists()
+    ScrewSystem(Twist([0, 0, 1], [0, 0, 2]))
+    """
+
+    __slots__ = ()
+    freedom = 1
+
+    def __new__(cls, point: Any, direction: Any, pitch: Any):
+        return ScrewsymBasic.__new__(
+            cls,
+            check_vector(point, "point"),
+            check_direction(direction, "direction"),
+            check_scalar(pitch, "pitch"),
+        )
+
+    def _twists(self):
+        r, u, h = self.args
+        return [Twist(u, r.cross(u) + h * u)]
+
+
+class C(Joint):
+    """Cylindrical joint: rotation about and translation along one line (2 freedoms)."""
+
+    __slots__ = ()
+    freedom = 2
+
+    def __new__(cls, point: Any, direction: Any):
+        return ScrewsymBasic.__new__(
+            cls, check_vector(point, "point"), check_direction(direction, "direction")
+        )
+
+    def _twists(self):
+        r, u = self.args
+        return [_rotation(r, u), Twist([0, 0, 0], u)]
+
+
+class U(Joint):
+    """Universal (Hooke) joint: rotations about two axes through ``point`` (2 freedoms).
+
+    ``dir1`` is the axis fixed in the link nearer the base, ``dir2`` the other.
+    """
+
+    __slots__ = ()
+    freedom = 2
+
+    def __new__(cls, point: Any, dir1: Any, dir2: Any):
+        return ScrewsymBasic.__new__(
+            cls,
+            check_vector(point, "point"),
+            check_direction(dir1, "dir1"),
+            check_direction(dir2, "dir2"),
+        )
+
+    def _twists(self):
+        r, u1, u2 = self.args
+        return [_rotation(r, u1), _rotation(r, u2)]
+
+
+class S(Joint):
+    """Spherical joint: the three rotations about the axes x, y, z through ``point``."""
+
+    __slots__ = ()
+    freedom = 3
+
+    def __new__(cls, point: Any):
+        return ScrewsymBasic.__new__(cls, check_vector(point, "point"))
+
+    def _twists(self):
+        return [_rotation(self.args[0], ImmutableMatrix(e)) for e in _E]
+
+
+def _check_joints(joints: tuple, name: str) -> tuple:
+    if not joints:
+        raise ValueError(f"{name}: expected at least one joint, got none")
+    for i, j in enumerate(joints):
+        if not isinstance(j, Joint):
+            raise TypeError(
+                f"{name}[{i}]: expected a joint (R, P, H, C, U or S), got {type(j).__name__}"
+            )
+    return joints
+
+
+class Limb(ScrewsymBasic):
+    """A serial chain of joints from the base to the platform.
+
+    >>> from screwsym.mechanism import Limb, R, P, S
+    >>> leg = Limb(R([1, 0, 0], [0, 1, 0]), P([0, 0, 1]), S([1, 0, 1]))   # R-P-S
+    >>> leg.freedom, leg.twists().rank
+    (5, 5)
+    >>> leg.constraints()          # one force through the sphere, along the R axis
+    ScrewSystem(Wrench([0, 1, 0], [-1, 0, 1]))
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, *joints: Joint):
+        return ScrewsymBasic.__new__(cls, *_check_joints(joints, "joints"))
+
+    @property
+    def joints(self) -> tuple[Joint, ...]:
+        return self.args
+
+    @property
+    def freedom(self) -> int:
+        """The number of joint variables, the sum of the joints' freedoms."""
+        return sum(j.freedom for j in self.args)
+
+    def twists(self) -> ScrewSystem:
+        """The limb's twist system: every joint's twists, base to platform."""
+        return ScrewSystem(*(t for j in self.args for t in j._twists()))
+
+    def constraints(self) -> ScrewSystem:
+        """The limb's constraint (wrench) system, the reciprocal of :meth:`twists`."""
+        return self.twists().reciprocal()
+
+    @property
+    def passive(self) -> int:
+        """Passive freedoms: ``freedom - rank`` of the twist system (generic)."""
+        return self.freedom - self.twists().rank
+
+
+class Mobility(NamedTuple):
+    """The result of :meth:`ParallelMechanism.mobility` (see the module docstring)."""
+
+    dof: int  #: M, by the modified Grübler–Kutzbach criterion
+    order: int  #: d = 6 - lambda
+    common: int  #: lambda, common constraints
+    redundant: int  #: nu, redundant constraints
+    passive: int  #: zeta, passive freedoms
+    classical: int  #: 6 (n - g - 1) + sum f_i
+    rotations: int  #: independent rotations of the platform
+    translations: int  #: independent translations of the platform
+    motion: str  #: e.g. "2R1T"
+    twists: ScrewSystem  #: the platform's twist system
+    links: int  #: n, base and platform included
+    joints: int  #: g
+    freedoms: int  #: sum f_i
+
+
+def motion_type(rotations: int, translations: int) -> str:
+    """``"2R1T"``, ``"3T"``, ``"1R"``; ``"0"`` for a structure.
+
+    >>> motion_type(2, 1), motion_type(0, 3), motion_type(0, 0)
+    ('2R1T', '3T', '0')
+    """
+    text = (f"{rotations}R" if rotations else "") + (f"{translations}T" if translations else "")
+    return text or "0"
+
+
+class ParallelMechanism(ScrewsymBasic):
+    """A moving platform carried by limbs, each a serial chain from the base.
+
+    Examples
+    ========
+
+    The 3-RPS platform (Hunt 1983): three R-P-S legs, each R axis tangent to
+    the base circle, every leg in the plane normal to its R axis.
+
+    >>> from sympy import sqrt, Rational
+    >>> from screwsym.mechanism import ParallelMechanism, Limb, R, P, S
+    >>> def leg(b, u, top):
+    ...     d = [t - s for t, s in zip(top, b)]
+    ...     return Limb(R(b, u), P(d), S(top))
+    >>> m = ParallelMechanism(
+    ...     leg([2, 0, 0], [0, 1, 0], [1, 0, 2]),
+    ...     leg([-1, sqrt(3), 0], [-sqrt(3), -1, 0], [-Rational(1, 2), sqrt(3)/2, 2]),
+    ...     leg([-1, -sqrt(3), 0], [sqrt(3), -1, 0], [-Rational(1, 2), -sqrt(3)/2, 2]),
+    ... ).mobility()
+    >>> m.dof, m.motion, m.classical, (m.common, m.redundant, m.passive)
+    (3, '2R1T', 3, (0, 0, 0))
+
+    Parameters
+    ==========
+
+    *limbs : Limb
+
+    References
+    ==========
+
+    Huang, Li & Ding, *Theory of Parallel Mechanisms*, Chapters 2 and 5.
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, *limbs: Limb):
+        if not limbs:
+            raise ValueError("limbs: expected at least one limb, got none")
+        for i, limb in enumerate(limbs):
+            if not isinstance(limb, Limb):
+                raise TypeError(f"limbs[{i}]: expected a Limb, got {type(limb).__name__}")
+        return ScrewsymBasic.__new__(cls, *limbs)
+
+    @property
+    def limbs(self) -> tuple[Limb, ...]:
+        return self.args
+
+    def constraint_system(self) -> ScrewSystem:
+        """The union of the limbs' constraint systems: every wrench on the platform."""
+        return ScrewSystem(*(w for limb in self.args for w in limb.constraints()))
+
+    def twist_system(self) -> ScrewSystem:
+        """The platform's instantaneous motions: the reciprocal of :meth:`constraint_system`."""
+        return self.constraint_system().reciprocal()
+
+    def mobility(self) -> Mobility:
+        """The mobility by the modified Grübler–Kutzbach criterion, generic in the symbols.
+
+        See the module docstring for how ``common`` (lambda), ``redundant``
+        (nu) and ``passive`` (zeta) come from the screw systems.
+        """
+        return _mobility(self)
+
+    def mobility_cases(self, *, max_cases: int = MAX_CASES) -> list[tuple[Any, Mobility | None]]:
+        """The mobility in each case of the constraint system's rank conditions.
+
+        Each case's condition comes from
+        :meth:`ScrewSystem.rank_conditions` of :meth:`constraint_system`; its
+        mobility is the generic analysis of the mechanism with the case's
+        substitution made (``None`` where the rank of the case is ``None``).
+        The platform's freedom is exact on the whole case; ``common``,
+        ``redundant`` and ``passive`` are generic within it.
+        """
+        W = self.constraint_system()
+        out = []
+        for (cond, rank), (_, subs) in zip(
+            W.rank_conditions(max_cases=max_cases), W.substitutions(max_cases=max_cases),
+            strict=True,
+        ):
+            if rank is None:
+                out.append((cond, None))
+                continue
+            mech = self.xreplace(subs) if subs else self
+            out.append((cond, _mobility(mech)))
+        return out
+
+
+def _mobility(mech: ParallelMechanism) -> Mobility:
+    limbs = mech.args
+    freedoms = sum(limb.freedom for limb in limbs)
+    g = sum(len(limb.args) for limb in limbs)
+    n = 2 + sum(len(limb.args) - 1 for limb in limbs)
+    limb_twists = [limb.twists() for limb in limbs]
+    limb_ranks = [T.rank for T in limb_twists]
+    all_twists = ScrewSystem(*(t for T in limb_twists for t in T))
+    common = 6 - all_twists.rank
+    constraint_counts = [6 - r for r in limb_ranks]
+    W = mech.constraint_system()
+    union = W.rank
+    redundant = sum(c - common for c in constraint_counts) - (union - common)
+    passive = freedoms - sum(limb_ranks)
+    order = 6 - common
+    dof = order * (n - g - 1) + freedoms + redundant - passive
+    twists = W.reciprocal()
+    omega = twists.matrix[:3, :] if len(twists) else ImmutableMatrix.zeros(3, 0)
+    rotations = _analysis(ImmutableMatrix.vstack(omega, ImmutableMatrix.zeros(3, omega.cols))).rank
+    translations = twists.rank - rotations
+    return Mobility(
+        dof=dof,
+        order=order,
+        common=common,
+        redundant=redundant,
+        passive=passive,
+        classical=6 * (n - g - 1) + freedoms,
+        rotations=rotations,
+        translations=translations,
+        motion=motion_type(rotations, translations),
+        twists=twists,
+        links=n,
+        joints=g,
+        freedoms=freedoms,
+    )
+

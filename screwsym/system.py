@@ -1,0 +1,649 @@
+r"""Screw systems: the span of a set of screws, its reciprocal system and its singular cases.
+
+A *screw system* is the linear span of screws (twists or wrenches), written as
+the 6 x n matrix of their columns in the book's ray order ``(S; S0)``.  Its
+*reciprocal system* is the set of screws whose reciprocal product (1.45)
+
+    $1 o $2 = S1 . S2^0 + S2 . S1^0 = x^T Delta y,   Delta = [[0, I], [I, 0]]
+
+with every member is zero (1.46, 1.47): the null space of ``(Delta A)^T``, that
+is of ``A^T`` with its two halves swapped.  The reciprocal of the twists of a
+kinematic chain are the wrenches it transmits (its constraints); the reciprocal
+of the constraints on a platform are its instantaneous motions.
+
+Everything is exact.  The entries are taken as polynomials (rational functions
+are brought to polynomials column by column) in their symbols, with rational
+or algebraic-number coefficients such as ``sqrt(3)``; the arithmetic is
+fraction-free in SymPy's ``DomainMatrix`` over that polynomial ring, so zero is
+decided exactly and no ``simplify`` is ever called.
+
+*Generic* means: for all values of the symbols outside a proper algebraic
+subset, the one that :meth:`ScrewSystem.rank_conditions` lists exhaustively.
+
+References
+==========
+
+Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Sections 1.5
+(reciprocity), Chapters 2 and 5 (screw systems, constraints, mobility).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from itertools import combinations
+from typing import Any
+
+from sympy import (
+    QQ,
+    And,
+    Dummy,
+    Eq,
+    ImmutableMatrix,
+    Ne,
+    Symbol,
+    cancel,
+    factor_list,
+    fraction,
+    true,
+    zeros,
+)
+from sympy.logic.boolalg import Boolean
+from sympy.polys.matrices import DomainMatrix
+from sympy.polys.polyutils import parallel_dict_from_expr
+
+from ._basic import ScrewsymBasic
+from ._decide import is_zero
+from ._validation import check_count, check_screw, check_screw_system_members
+from .screw import Screw
+from .twist import Twist
+from .wrench import Wrench
+
+__all__ = ["ScrewSystem"]
+
+#: the kind of the reciprocal system: twists and wrenches are each other's reciprocals
+_DUAL_KIND = {Twist: Wrench, Wrench: Twist, Screw: Screw}
+#: at most this many r x r minors are compared when choosing the one that states a case
+_MINOR_BUDGET = 64
+#: the default limit on the number of cases of ``rank_conditions``
+MAX_CASES = 200
+
+
+class ScrewSystem(ScrewsymBasic):
+    r"""The screw system spanned by ``screws``: twists, wrenches or plain screws.
+
+    Explanation
+    ===========
+
+    ``args`` are the member screws, in order; two systems with the same span
+    but other members are different objects (compare spans with
+    :meth:`contains` or the rank of the union).  Members are all twists, all
+    wrenches or all plain screws; 6-vectors in the order ``(S; S0)`` are read
+    as plain screws.  The system of no screws is ``ScrewSystem()``.
+
+    ``rank``, :meth:`basis`, :meth:`contains` and :meth:`reciprocal` are
+    generic (see the module docstring); :meth:`rank_conditions` and
+    :meth:`reciprocal_cases` give the exhaustive case split.
+
+    Examples
+    ========
+
+    The three rotations of a spherical joint centred at a symbolic point ``p``
+    and the wrenches they transmit, three forces through ``p``: a basis
+    polynomial in ``p``, valid for every ``p`` (a hand-made null space gives
+    ``p_x/p_z``, which blows up at ``p_z = 0``):
+
+    >>> from screwsym import ScrewSystem, Twist, Wrench, vector
+    >>> p = vector("p")
+    >>> ball = ScrewSystem(*(Twist.rotation(1, e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+    >>> ball.rank
+    3
+    >>> W = ball.reciprocal()
+    >>> W.matrix
+    Matrix([
+    [   1,    0,    0],
+    [   0,    1,    0],
+    [   0,    0,    1],
+    [   0, -p_z,  p_y],
+    [ p_z,    0, -p_x],
+    [-p_y,  p_x,    0]])
+    >>> W == ScrewSystem(*(Wrench.force(e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+    True
+    >>> ball.rank_conditions()
+    [(True, 3)]
+
+    Two revolute axes, parallel to z, through the origin and through ``(a, 0, 0)``:
+    the rank drops where the axes coincide, and each case has its own
+    reciprocal basis.
+
+    >>> from sympy import symbols
+    >>> a = symbols("a", real=True)
+    >>> RR = ScrewSystem(Twist.rotation(1, [0, 0, 1], [0, 0, 0]),
+    ...                  Twist.rotation(1, [0, 0, 1], [a, 0, 0]))
+    >>> RR.rank_conditions()
+    [(Ne(a, 0), 2), (Eq(a, 0), 1)]
+    >>> [(c, w.rank) for c, w in RR.reciprocal_cases()]
+    [(Ne(a, 0), 4), (Eq(a, 0), 5)]
+
+    Parameters
+    ==========
+
+    *screws : Screw, Twist, Wrench or 6-vector
+        The members, all of one kind.
+
+    See Also
+    ========
+
+    screwsym.screw.reciprocal_product, screwsym.mechanism.Limb
+
+    References
+    ==========
+
+    Huang, Li & Ding, Sections 1.5 (1.45)-(1.47) and 2.x (screw systems).
+    """
+
+    __slots__ = ()
+
+    def __new__(cls, *screws: Any):
+        members = check_screw_system_members(screws, "screws")
+        return ScrewsymBasic.__new__(cls, *members)
+
+    def _eval_diff_parts(self, *symbols, **kwargs):
+        return self.func(*(s.diff(*symbols, **kwargs) for s in self.args))
+
+    # --------------------------------------------------------------- parts
+    @property
+    def screws(self) -> tuple[Screw, ...]:
+        """The member screws, in order."""
+        return self.args
+
+    @property
+    def kind(self) -> type:
+        """``Twist``, ``Wrench`` or ``Screw``: the class of the members (``Screw`` if none)."""
+        return type(self.args[0]) if self.args else Screw
+
+    @property
+    def matrix(self) -> ImmutableMatrix:
+        """The 6 x n matrix whose columns are the members ``(S; S0)``, in order."""
+        if not self.args:
+            return ImmutableMatrix(zeros(6, 0))
+        return ImmutableMatrix.hstack(*(s.as_matrix() for s in self.args))
+
+    def __len__(self) -> int:
+        return len(self.args)
+
+    def __iter__(self):
+        return iter(self.args)
+
+    # ----------------------------------------------------------- generic
+    @property
+    def rank(self) -> int:
+        """The generic rank: the dimension of the span for generic values of the symbols."""
+        return _analysis(self.matrix).rank
+
+    def basis(self) -> ScrewSystem:
+        """The members that span the system generically: the first independent ones, in order.
+
+        >>> from screwsym import ScrewSystem
+        >>> ScrewSystem([1, 0, 0, 0, 0, 0], [2, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0]).basis()
+        ScrewSystem(Screw([1, 0, 0], [0, 0, 0]), Screw([0, 0, 0], [1, 0, 0]))
+        """
+        pivots = _analysis(self.matrix).pivots
+        return self.func(*(self.args[i] for i in pivots))
+
+    def contains(self, screw: Any) -> bool:
+        """Whether ``screw`` lies in the span, generically (for generic values of the symbols).
+
+        Exact for numeric systems.  Decided by the generic rank of the system
+        with ``screw`` added.
+
+        >>> from screwsym import ScrewSystem
+        >>> s = ScrewSystem([1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0])
+        >>> s.contains([1, 1, 0, 0, 0, 0]), s.contains([0, 0, 1, 0, 0, 0])
+        (True, False)
+        """
+        s = check_screw(screw, "screw", self.kind if self.args else None)
+        if not self.args:
+            return _analysis(ImmutableMatrix(s.as_matrix())).rank == 0
+        return _analysis(self.matrix.row_join(s.as_matrix())).rank == self.rank
+
+    def union(self, other: ScrewSystem) -> ScrewSystem:
+        """The system spanned by the members of both (the sum of the spans)."""
+        other = _check_system(other, "other")
+        return ScrewSystem(*self.args, *other.args)
+
+    __or__ = union
+
+    def intersection(self, other: ScrewSystem) -> ScrewSystem:
+        """The screws in both spans (generically): the reciprocal of the union of the reciprocals.
+
+        >>> from screwsym import ScrewSystem
+        >>> a = ScrewSystem([1, 0, 0, 0, 0, 0], [0, 1, 0, 0, 0, 0])
+        >>> b = ScrewSystem([0, 1, 0, 0, 0, 0], [0, 0, 1, 0, 0, 0])
+        >>> (a & b).rank, (a & b).contains([0, 1, 0, 0, 0, 0])
+        (1, True)
+        """
+        other = _check_system(other, "other")
+        both = ScrewSystem(*self.reciprocal().args, *other.reciprocal().args)
+        return both.reciprocal()
+
+    __and__ = intersection
+
+    def reciprocal(self) -> ScrewSystem:
+        r"""A basis of the reciprocal system, polynomial in the symbols (1.45)-(1.47).
+
+        Explanation
+        ===========
+
+        The screws ``y`` with ``x^T Delta y = 0`` for every member ``x``: the
+        null space of the members with their halves swapped.  The basis is
+        built by Cramer's rule from a non-zero r x r minor ``m`` (r the rank),
+        multiplied through by ``m`` so that no division occurs, then divided by
+        the greatest common divisor of its entries.  It is reciprocal to the
+        system for *every* value of the symbols, and a basis wherever the
+        first case of :meth:`rank_conditions` holds; elsewhere use
+        :meth:`reciprocal_cases`.  Twists give wrenches, wrenches twists.
+
+        >>> from screwsym import ScrewSystem, Wrench
+        >>> ScrewSystem(Wrench.force([0, 0, 1], [0, 0, 0])).reciprocal().rank
+        5
+        """
+        node = _top(self.matrix)
+        return _basis_system(node, _DUAL_KIND[self.kind])
+
+    def rank_conditions(self, *, max_cases: int = MAX_CASES) -> list[tuple[Boolean, int | None]]:
+        r"""Where the rank is what: an exhaustive list of ``(condition, rank)`` pairs.
+
+        Explanation
+        ===========
+
+        The first pair is the generic case.  Every real value of the symbols
+        satisfies at least one condition, and where several hold they give
+        the same rank.  The conditions are SymPy booleans (``Eq``, ``Ne``,
+        ``And``) on irreducible factors of the minors of the system: the rank
+        is at least ``r`` exactly where some r x r minor is non-zero.  Each
+        case is found by solving one factor for a symbol in which it is linear
+        (splitting off the case where its coefficient vanishes) and analysing
+        the system again there; factors that the symbols' assumptions prove
+        non-zero are dropped.  Where a factor is linear in no symbol, the
+        case is listed with rank ``None`` (at most the rank of the case above
+        it; not analysed further).  A system with many free symbols can have
+        very many cases: past ``max_cases`` a ``ValueError`` says so.
+
+        >>> from sympy import symbols
+        >>> from screwsym import ScrewSystem, Wrench
+        >>> t = symbols("t", real=True)
+        >>> forces = ScrewSystem(Wrench.force([1, 0, 0], [0, 0, 0]),
+        ...                      Wrench.force([1, t, 0], [0, 0, 1]))
+        >>> forces.rank_conditions()
+        [(True, 2)]
+        """
+        return [(n.condition, n.rank) for n in _cases(self.matrix, check_count(max_cases, "max_cases"))]
+
+    def reciprocal_cases(
+        self, *, max_cases: int = MAX_CASES
+    ) -> list[tuple[Boolean, ScrewSystem | None]]:
+        """For each case of :meth:`rank_conditions`, its own basis of the reciprocal system.
+
+        The basis of a case is valid wherever its condition holds; ``None``
+        where the rank of the case is ``None``.
+        """
+        kind = _DUAL_KIND[self.kind]
+        return [
+            (n.condition, None if n.rank is None else _basis_system(n, kind))
+            for n in _cases(self.matrix, check_count(max_cases, "max_cases"))
+        ]
+
+    def substitutions(self, *, max_cases: int = MAX_CASES) -> list[tuple[Boolean, dict]]:
+        """For each case of :meth:`rank_conditions`, the substitution of symbols that it makes.
+
+        Applying the substitution (``system.xreplace(subs)``) gives a system
+        whose generic rank is the case's rank.
+        """
+        return [(n.condition, dict(n.subs)) for n in _cases(self.matrix, check_count(max_cases, "max_cases"))]
+
+
+def _check_system(value: Any, name: str) -> ScrewSystem:
+    if not isinstance(value, ScrewSystem):
+        raise TypeError(f"{name}: expected a ScrewSystem, got {type(value).__name__}")
+    return value
+
+
+# ---------------------------------------------------------------------------
+# Exact linear algebra over a polynomial ring
+# ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _Ring:
+    """A system as polynomial columns: ``cols`` (n rows of 6 ring elements) and its ring."""
+
+    ring: Any
+    gens: tuple
+    cols: tuple  # one tuple of 6 ring elements per screw
+
+
+def _to_ring(M: ImmutableMatrix) -> _Ring:
+    """The columns of ``M`` as polynomials, each column cleared of its denominators.
+
+    A column multiplied by a non-zero polynomial spans the same screw wherever
+    that polynomial is non-zero, and where it vanishes the column itself is
+    undefined.  Raises ``ValueError`` for entries that are not rational
+    functions of symbols (``cos(t)``, ``sqrt(x)``): their relations
+    (``sin**2 + cos**2 = 1``) would be lost.
+    """
+    entries = list(M)
+    syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
+    numbers = []
+    if entries:
+        nums_dens = [part for e in entries for part in e.as_numer_denom()]
+        _, gens = parallel_dict_from_expr(nums_dens)
+        for g in gens["gens"] if isinstance(gens, dict) else gens:
+            if isinstance(g, Symbol):
+                continue
+            if g.is_number and g.is_algebraic:
+                numbers.append(g)
+                continue
+            raise ValueError(
+                "screws: expected entries that are rational functions of symbols with "
+                f"rational or algebraic coefficients, got {g} in an entry (write cos/sin "
+                "as a rational parametrisation or as point coordinates)"
+            )
+    K = QQ.algebraic_field(*numbers) if numbers else QQ
+    gens = tuple(syms) if syms else (Dummy("c"),)
+    R = K[gens]
+    F = R.get_field()
+    cols = []
+    for j in range(M.cols):
+        fr = [F.from_sympy(M[i, j]) for i in range(6)]
+        den = R.one
+        for f in fr:
+            den = den.lcm(f.denom) if hasattr(den, "lcm") else R.lcm(den, f.denom)
+        cols.append(tuple(f.numer * R.exquo(den, f.denom) for f in fr))
+    return _Ring(R, tuple(syms), tuple(cols))
+
+
+def _dm(rows, R) -> DomainMatrix:
+    rows = [list(r) for r in rows]
+    ncols = len(rows[0]) if rows else 0
+    return DomainMatrix(rows, (len(rows), ncols), R)
+
+
+def _swap(col: tuple) -> tuple:
+    """A screw's row of ``(Delta A)^T``: its two halves swapped."""
+    return tuple(col[3:]) + tuple(col[:3])
+
+
+@dataclass(frozen=True)
+class _Analysis:
+    rank: int
+    pivots: tuple
+
+
+@lru_cache(maxsize=512)
+def _analysis(M: ImmutableMatrix) -> _Analysis:
+    """Generic rank and pivot columns (the first independent members)."""
+    if M.cols == 0:
+        return _Analysis(0, ())
+    rg = _to_ring(M)
+    A = _dm([[c[i] for c in rg.cols] for i in range(6)], rg.ring)
+    _, _, pivots = A.rref_den()
+    return _Analysis(len(pivots), tuple(pivots))
+
+
+@dataclass(frozen=True)
+class _Node:
+    """One case: its condition, rank, substitution, and the minor that proves the rank."""
+
+    condition: Boolean
+    rank: int | None
+    subs: tuple  # ((symbol, value), ...)
+    matrix: ImmutableMatrix  # the system with the substitution made
+    rows: tuple = ()  # members of the minor
+    cols: tuple = ()  # coordinates of the minor (of the swapped rows)
+
+
+def _poly_expr(p, R) -> Any:
+    return R.to_sympy(p)
+
+
+def _minor(B, rows, cols, R):
+    return _dm([[B[i][j] for j in cols] for i in rows], R).det()
+
+
+def _choose_minor(rg: _Ring, rank: int, pivots: tuple):
+    """A non-zero ``rank x rank`` minor of the swapped rows, as simple as can be found."""
+    R = rg.ring
+    B = [_swap(c) for c in rg.cols]
+    all_rows = list(combinations(range(len(B)), rank))
+    col_sets = list(combinations(range(6), rank))
+    row_sets = all_rows if len(all_rows) * len(col_sets) <= _MINOR_BUDGET else [tuple(pivots)]
+    best = None
+    for rows in row_sets:
+        for cols in col_sets:
+            m = _minor(B, rows, cols, R)
+            if not m:
+                continue
+            key = (max(sum(e) for e in m.monoms()), len(m.terms()))
+            if best is None or key < best[0]:
+                best = (key, m, rows, cols)
+                if key[0] == 0:
+                    return best[1:]
+    return best[1:]
+
+
+def _factors(p, R) -> list:
+    """The irreducible factors of ``p`` that the symbols' assumptions do not prove non-zero."""
+    if p.is_ground:
+        return []
+    _, fl = p.factor_list()
+    out = []
+    for f, _ in fl:
+        if f.is_ground:
+            continue
+        if is_zero(_poly_expr(f, R)) is False:
+            continue
+        out.append(f)
+    return out
+
+
+def _linear_in(f, R):
+    """``(symbol, a, b)`` with ``f = a*symbol + b``; a constant ``a`` preferred; or None."""
+    best = None
+    for i, g in enumerate(R.gens):
+        if f.degree(i) != 1:
+            continue
+        a = f.coeff_wrt(g, 1)
+        b = f - a * g
+        key = (0 if a.is_ground else 1, len(a.terms()), len(b.terms()), str(R.symbols[i]))
+        if best is None or key < best[0]:
+            best = (key, R.symbols[i], a, b)
+    return None if best is None else best[1:]
+
+
+class _TooManyCases(Exception):
+    pass
+
+
+class _Cases(list):
+    """The list of cases found so far, refusing to grow past ``limit``."""
+
+    def __init__(self, limit: int):
+        super().__init__()
+        self.limit = limit
+
+    def append(self, node) -> None:
+        if len(self) >= self.limit:
+            raise _TooManyCases
+        super().append(node)
+
+
+@lru_cache(maxsize=256)
+def _cases(M: ImmutableMatrix, limit: int = MAX_CASES) -> tuple[_Node, ...]:
+    out = _Cases(limit)
+    try:
+        _node(M, (), (), (), out)
+    except _TooManyCases:
+        raise ValueError(
+            f"rank_conditions: the case split of this system has more than {limit} cases; "
+            "give some symbols values (xreplace) or pass a larger max_cases"
+        ) from None
+    return tuple(out)
+
+
+@lru_cache(maxsize=256)
+def _top(M: ImmutableMatrix) -> _Node:
+    """The generic case alone (what ``reciprocal`` needs), without the case split."""
+    return _here(M, (), (), ())[0]
+
+
+def _condition(conds) -> Boolean:
+    seen = []
+    for c in conds:
+        if c not in seen and c is not true:
+            seen.append(c)
+    return And(*seen) if seen else true
+
+
+def _apply(M: ImmutableMatrix, subs) -> ImmutableMatrix:
+    """``M`` with the substitution made, each entry brought to lowest terms (``cancel``)."""
+    return M.xreplace(dict(subs)).applyfunc(cancel) if subs else M
+
+
+def _known_nonzero(f_expr, nonzero: tuple) -> bool:
+    """Whether ``f_expr`` is a constant multiple of a polynomial the case assumes non-zero."""
+    return any(cancel(f_expr / g).is_number for g in nonzero)
+
+
+def _substitute_nonzero(nonzero: tuple, x, value) -> tuple:
+    """The polynomials a case assumes non-zero, after the substitution ``x = value``.
+
+    Each becomes the irreducible factors of its numerator (the denominators
+    of ``value`` are themselves assumed non-zero).
+    """
+    out = []
+    for g in nonzero:
+        if not g.has(x):
+            out.append(g)
+            continue
+        num = fraction(cancel(g.xreplace({x: value})))[0]
+        out.extend(f for f, _ in factor_list(num)[1] if not f.is_number)
+    return tuple(out)
+
+
+def _here(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple):
+    """The case of ``M`` (the substitution made) where its chosen minor is non-zero.
+
+    Returns the node and the factors (as expressions) of the minor that
+    split off the special cases.
+    """
+    if M.cols == 0 or _analysis(M).rank == 0:
+        return _Node(_condition(conds), 0, subs, M), []
+    rg = _to_ring(M)
+    an = _analysis(M)
+    m, rows, cols = _choose_minor(rg, an.rank, an.pivots)
+    R = rg.ring
+    factors = [e for e in (_poly_expr(f, R) for f in _factors(m, R))
+               if not _known_nonzero(e, nonzero)]
+    ne = tuple(Ne(e, 0) for e in factors)
+    return _Node(_condition(conds + ne), an.rank, subs, M, rows, cols), factors
+
+
+def _node(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, out: list) -> None:
+    """Analyse ``M`` under ``conds`` (already substituted into ``M``); append the cases."""
+    node, factors = _here(M, conds, subs, nonzero)
+    out.append(node)
+    for f in factors:
+        _impose(M, conds, subs, nonzero, [f], out)
+
+
+def _impose(M, conds, subs, nonzero, pending: list, out: list) -> None:
+    """Impose the equations ``pending`` (each ``= 0``) by substitution, then analyse."""
+    if not pending:
+        _node(M, conds, subs, nonzero, out)
+        return
+    expr, rest = pending[0], pending[1:]
+    if subs:
+        expr = cancel(expr.xreplace(dict(subs)))
+    # the equation as a polynomial in the remaining symbols, through the same ring
+    rg = _to_ring(ImmutableMatrix([expr, 0, 0, 0, 0, 0]))
+    p = rg.cols[0][0]
+    if not p:
+        _impose(M, conds, subs, nonzero, rest, out)
+        return
+    R = rg.ring
+    for f in _factors(p, R):
+        fe = _poly_expr(f, R)
+        if _known_nonzero(fe, nonzero):
+            continue  # contradicts the case: no real point
+        eq = Eq(fe, 0)
+        lin = _linear_in(f, R)
+        if lin is None:
+            out.append(_Node(_condition(conds + (eq,)), None, subs, M))
+            continue
+        x, a, b = lin
+        value = -_poly_expr(b, R) / _poly_expr(a, R)
+        a_factors = [_poly_expr(g, R) for g in _factors(a, R)]
+        a_factors = [g for g in a_factors if not _known_nonzero(g, nonzero)]
+        new_subs = tuple((k, cancel(v.xreplace({x: value}))) for k, v in subs) + ((x, value),)
+        new_conds = conds + (eq,) + tuple(Ne(g, 0) for g in a_factors)
+        new_nonzero = _substitute_nonzero(nonzero, x, value) + tuple(a_factors)
+        _impose(_apply(M, ((x, value),)), new_conds, new_subs, new_nonzero, rest, out)
+        for g in a_factors:  # the coefficient vanishes: then so must the rest
+            _impose(M, conds + (eq,), subs, nonzero, [g, _poly_expr(b, R)] + rest, out)
+
+
+def _basis_system(node: _Node, kind: type) -> ScrewSystem:
+    """The reciprocal basis of a case, by Cramer's rule on its minor (see ``reciprocal``)."""
+    M = node.matrix
+    if node.rank == 0:
+        eye = ImmutableMatrix.eye(6)
+        return ScrewSystem(*(kind.from_matrix(eye[:, k]) for k in range(6)))
+    rg = _to_ring(M)
+    R = rg.ring
+    B = [_swap(c) for c in rg.cols]
+    rows, cols = node.rows, node.cols
+    base = _dm([[B[i][j] for j in cols] for i in rows], R)
+    m = base.det()
+    vectors = []
+    for k in range(6):
+        if k in cols:
+            continue
+        v = [R.zero] * 6
+        v[k] = m
+        for jj, j in enumerate(cols):
+            replaced = [[B[i][k] if c == jj else B[i][cc] for c, cc in enumerate(cols)]
+                        for i in rows]
+            v[j] = -_dm(replaced, R).det()
+        vectors.append(_primitive(v, R))
+    return ScrewSystem(*(kind.from_matrix([_poly_expr(e, R) for e in v]) for v in vectors))
+
+
+def _primitive(v: list, R) -> list:
+    """``v`` divided by the gcd of its entries, its first non-zero entry with a positive lead."""
+    g = R.zero
+    for e in v:
+        if e:
+            g = e if not g else R.gcd(g, e)
+    if not g:
+        return v
+    v = [R.exquo(e, g) if e else e for e in v]
+    first = next(e for e in v if e)
+    lc = first.LC
+    if R.domain.is_QQ or R.domain.is_ZZ:
+        neg = lc < 0
+    else:  # an algebraic number: its sign as a real number
+        neg = bool(R.domain.to_sympy(lc) < 0)
+    if neg:
+        v = [-e for e in v]
+    # the entries of a primitive vector over QQ: clear the rational content too
+    if R.domain.is_QQ:
+        from math import gcd, lcm
+
+        coeffs = [c for e in v for c in e.coeffs()]
+        den = lcm(*(int(c.denominator) for c in coeffs))
+        num = gcd(*(int(c.numerator * den // c.denominator) for c in coeffs))
+        scale = QQ(den, num)
+        v = [e * scale for e in v]
+    return v
+
