@@ -520,3 +520,18 @@ def check_count(value: Any, name: str) -> int:
     if value < 1:
         raise ValueError(f"{name}: expected a positive integer, got {value}")
     return value
+
+
+def check_positive_float(value: Any, name: str) -> float:
+    """Return ``value`` as a positive finite ``float`` (a tolerance).
+
+    >>> check_positive_float(-1, "rtol")
+    Traceback (most recent call last):
+    ...
+    ValueError: rtol: expected a positive finite number, got -1
+    """
+    if isinstance(value, (bool, str, bytes)) or not isinstance(value, (int, float)):
+        raise TypeError(f"{name}: expected a positive finite number, got {_describe(value)}")
+    if not (0 < value < float("inf")):
+        raise ValueError(f"{name}: expected a positive finite number, got {value}")
+    return float(value)

@@ -1,0 +1,322 @@
+r"""The mobility analysis at many configurations at once, in floating point.
+
+:func:`mobility_map` turns a :class:`~screwsym.mechanism.ParallelMechanism`
+whose joints depend on symbols into a vectorised function of arrays of those
+symbols' values: the joint twists of every limb are generated once with
+:func:`screwsym.lambdify`, and at each configuration the ranks come from a
+rank-revealing decomposition.  Use it to map where a mechanism meets a
+constraint singularity over a workspace grid; use the exact
+:meth:`~screwsym.mechanism.ParallelMechanism.mobility_cases` to find the
+conditions themselves.
+
+Rank, numerically
+=================
+
+Every twist is scaled to unit length (as a 6-vector); a limb's twists with
+their halves swapped are decomposed by Householder QR with column pivoting
+(``B^T P = Q R``), and its rank is the number of diagonal entries ``|R_jj|``
+(non-increasing, estimates of the singular values) greater than ``rtol``
+times the largest one (default ``rtol = 1e-9``).  The limb's constraint
+system is spanned by the columns of ``Q`` past the rank: an orthonormal
+basis of the wrenches reciprocal to its twists (the null space of
+``(Delta A)^T``), 6-vectors in the order ``(f; C_O)``.  The union of the
+limbs' constraints is decomposed the same way with the same relative
+tolerance; its ``|R_jj|`` come back as ``sigma`` (relative to 1, as the
+null vectors are unit vectors), so a map can show how near a configuration
+is to a constraint singularity, not only whether it is one.  Pivoted QR is
+rank-revealing in practice though not in the worst case (Kahan's matrix);
+where it matters, check a configuration with ``numpy.linalg.svd``.
+
+The NumPy back end runs each step of the decomposition as one array
+operation over all configurations; ``backend="numba"`` compiles the same
+algorithm as one parallel loop (``pip install "screwsym[fast]"``).
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+import numpy as np
+from sympy import ImmutableMatrix
+
+from ._validation import check_positive_float
+from .codegen import lambdify
+from .mechanism import ParallelMechanism
+
+__all__ = ["MobilityMap", "mobility_map"]
+
+
+class MobilityMap(NamedTuple):
+    """Arrays over the configurations (batch shape ``...``) from :func:`mobility_map`."""
+
+    dof: np.ndarray  #: ``(...)`` int: 6 - rank of the union of the limbs' constraints
+    constraint_rank: np.ndarray  #: ``(...)`` int: rank of that union
+    limb_constraints: np.ndarray  #: ``(..., k)`` int: 6 - rank of each limb's twists
+    sigma: np.ndarray  #: ``(..., 6)``: ``|R_jj|`` of the union's pivoted QR, largest first
+
+
+def mobility_map(
+    mechanism: ParallelMechanism, args: Any, *, rtol: float = 1e-9, backend: str = "numpy"
+):
+    r"""A vectorised function giving the mobility of ``mechanism`` at many configurations.
+
+    Explanation
+    ===========
+
+    ``args`` lists the symbols the joints depend on (symbols and vectors
+    such as ``vector('p')``, as for :func:`screwsym.lambdify`).  The function
+    returned takes one array per argument (scalars ``(...)``, vectors
+    ``(..., 3)``, batch shapes broadcasting) and returns a
+    :class:`MobilityMap`.  See the module docstring for the tolerance.
+
+    Examples
+    ========
+
+    A planar four-bar whose joint B moves along the x-axis: at ``b_y = 0``
+    all four joints are collinear and the coupler gains a freedom.
+
+    >>> import numpy as np
+    >>> from sympy import symbols
+    >>> from screwsym.mechanism import ParallelMechanism, Limb, R
+    >>> from screwsym.mechanism_numeric import mobility_map
+    >>> bx, by = symbols("b_x b_y", real=True)
+    >>> z = [0, 0, 1]
+    >>> fourbar = ParallelMechanism(Limb(R([0, 0, 0], z), R([bx, by, 0], z)),
+    ...                             Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
+    >>> f = mobility_map(fourbar, [bx, by])
+    >>> f(np.array([1.0, 1.0, 2.0]), np.array([1.0, 0.0, 0.5])).dof
+    array([1, 2, 1])
+
+    Parameters
+    ==========
+
+    mechanism : ParallelMechanism
+    args : list
+        Symbols and vectors of symbols; every free symbol of the mechanism.
+    rtol : float
+        The relative tolerance of the numerical rank (default ``1e-9``).
+    backend : {"numpy", "numba", "c"}
+        The back end of the generated twist function.
+    """
+    if not isinstance(mechanism, ParallelMechanism):
+        raise TypeError(
+            f"mechanism: expected a ParallelMechanism, got {type(mechanism).__name__}"
+        )
+    rtol = check_positive_float(rtol, "rtol")
+    limbs = mechanism.limbs
+    matrices = tuple(ImmutableMatrix(limb.twists().matrix) for limb in limbs)
+    listed = args if isinstance(args, (list, tuple)) else [args]
+    given = set()
+    for a in listed:
+        given |= getattr(a, "free_symbols", set())
+    missing = sorted(set().union(*(m.free_symbols for m in matrices)) - given, key=str)
+    if missing:
+        raise ValueError(
+            f"args: expected every symbol of the mechanism, missing {', '.join(map(str, missing))}"
+        )
+    twists_of = lambdify(list(listed), matrices, backend=backend)
+    sizes = [m.cols for m in matrices]
+    offsets = tuple(int(x) for x in np.cumsum([0, *sizes]))
+    analyse = _analyse_numba if backend == "numba" else _analyse_numpy
+
+    def mobility(*values):
+        """The mobility at each configuration (see screwsym.mechanism_numeric.mobility_map)."""
+        Ts = twists_of(*values)
+        if not isinstance(Ts, tuple):  # pragma: no cover - a one-limb mechanism
+            Ts = (Ts,)
+        batch = np.broadcast_shapes(*(T.shape[:-2] for T in Ts))
+        T = np.concatenate(
+            [np.broadcast_to(T, batch + (6, n)).reshape(-1, 6, n)
+             for T, n in zip(Ts, sizes, strict=True)], axis=-1)
+        ranks, counts, sigma = analyse(T, offsets, rtol)
+        k = len(sizes)
+        return MobilityMap(
+            dof=(6 - ranks).reshape(batch),
+            constraint_rank=ranks.reshape(batch),
+            limb_constraints=counts.reshape(batch + (k,)),
+            sigma=sigma.reshape(batch + (6,)),
+        )
+
+    mobility.__name__ = "mobility_map_of_" + type(mechanism).__name__
+    return mobility
+
+
+def _unit_columns(T: np.ndarray) -> np.ndarray:
+    norms = np.linalg.norm(T, axis=-2, keepdims=True)
+    return T / np.where(norms == 0, 1.0, norms)
+
+
+def _qrcp(C: np.ndarray, want_q: bool):
+    """Householder QR with column pivoting of a batch of vector sets, in NumPy.
+
+    ``C`` is ``(N, m, n)``: ``m`` vectors of ``R^n`` per item.  Returns
+    ``|R_jj|`` ``(N, min(m, n))`` (non-increasing) and, if asked, ``Q^T``
+    ``(N, n, n)``, whose rows past the rank span the orthogonal complement of
+    the vectors.  Written out (not ``numpy.linalg.qr``, which has no column
+    pivoting, nor ``svd``, which costs 5-8 us per 6 x 6 matrix here) so that
+    every step is one array operation over the whole batch.
+    """
+    C = np.array(C, dtype=float, copy=True)
+    N, m, n = C.shape
+    k = min(m, n)
+    idx = np.arange(N)
+    rdiag = np.zeros((N, k))
+    Qt = np.broadcast_to(np.eye(n), (N, n, n)).copy() if want_q else None
+    used = np.zeros((N, m), dtype=bool)
+    for j in range(k):
+        rest = C[:, :, j:]
+        norms = (rest * rest).sum(-1)
+        norms[used] = -1.0
+        p = np.argmax(norms, axis=1)
+        used[idx, p] = True
+        nx = np.sqrt(np.maximum(norms[idx, p], 0.0))
+        v = C[idx, p, j:]  # fancy indexing: a copy
+        v[:, 0] += np.where(v[:, 0] >= 0, 1.0, -1.0) * nx
+        vn = np.sqrt((v * v).sum(-1))
+        v /= np.where(vn == 0, 1.0, vn)[:, None]
+        rest -= 2 * (rest * v[:, None, :]).sum(-1)[:, :, None] * v[:, None, :]
+        rdiag[:, j] = nx
+        if want_q:
+            qs = Qt[:, j:, :]
+            qs -= 2 * v[:, :, None] * (v[:, :, None] * qs).sum(1)[:, None, :]
+    return rdiag, Qt
+
+
+def _rank(rdiag: np.ndarray, rtol: float) -> np.ndarray:
+    """Numerical rank from ``|R_jj|`` ``(..., k)``, largest first."""
+    if rdiag.shape[-1] == 0:
+        return np.zeros(rdiag.shape[:-1], dtype=int)
+    return np.sum(rdiag > rtol * rdiag[..., :1], axis=-1)
+
+
+_SWAP = np.r_[3:6, 0:3]
+
+
+def _analyse_numpy(T: np.ndarray, offsets: tuple, rtol: float):
+    """``T`` ``(N, 6, M)``: every limb's twists side by side, limb i in columns offsets[i:i+2]."""
+    N = T.shape[0]
+    k = len(offsets) - 1
+    rows = np.swapaxes(_unit_columns(T), -1, -2)[..., _SWAP]  # (N, M, 6): halves swapped
+    nulls, counts = [], []
+    for i in range(k):
+        rdiag, Qt = _qrcp(rows[:, offsets[i]:offsets[i + 1]], True)
+        r = _rank(rdiag, rtol)
+        low = int(r.min()) if N else 6  # rows below every item's rank are never null vectors
+        keep = np.arange(low, 6)[None, :] >= r[:, None]
+        nulls.append(Qt[:, low:, :] * keep[:, :, None])
+        counts.append(6 - r)
+    union = np.concatenate(nulls, axis=1)
+    rdiag, _ = _qrcp(union, False)
+    sigma = np.zeros((N, 6))
+    sigma[:, : rdiag.shape[1]] = rdiag[:, :6]
+    return _rank(sigma, rtol), np.stack(counts, axis=-1), sigma
+
+
+def _qrcp_one(C, want_q, rdiag, Qt):  # pragma: no cover - compiled by numba
+    """One item of :func:`_qrcp`, in loops for numba: fills ``rdiag`` and ``Qt``."""
+    m, n = C.shape
+    k = min(m, n)
+    used = np.zeros(m, dtype=np.bool_)
+    v = np.empty(n)
+    for j in range(k):
+        best, p = -1.0, 0
+        for c in range(m):
+            if used[c]:
+                continue
+            t = 0.0
+            for q in range(j, n):
+                t += C[c, q] * C[c, q]
+            if t > best:
+                best, p = t, c
+        used[p] = True
+        nx = np.sqrt(max(best, 0.0))
+        for q in range(j, n):
+            v[q] = C[p, q]
+        v[j] += nx if v[j] >= 0 else -nx
+        vn = 0.0
+        for q in range(j, n):
+            vn += v[q] * v[q]
+        vn = np.sqrt(vn)
+        if vn > 0:
+            for q in range(j, n):
+                v[q] /= vn
+        for c in range(m):
+            t = 0.0
+            for q in range(j, n):
+                t += C[c, q] * v[q]
+            for q in range(j, n):
+                C[c, q] -= 2 * t * v[q]
+        rdiag[j] = nx
+        if want_q:
+            for col in range(n):
+                t = 0.0
+                for q in range(j, n):
+                    t += v[q] * Qt[q, col]
+                for q in range(j, n):
+                    Qt[q, col] -= 2 * v[q] * t
+
+
+def _analyse_loop(T, offsets, rtol, ranks, counts, sigma):  # pragma: no cover - numba
+    """The per-configuration loop of :func:`_analyse_numpy`, for numba."""
+    N, _, M = T.shape
+    k = offsets.shape[0] - 1
+    for item in prange(N):
+        union = np.zeros((6 * k, 6))
+        nu = 0
+        for i in range(k):
+            a, b = offsets[i], offsets[i + 1]
+            C = np.empty((b - a, 6))
+            for c in range(b - a):
+                norm = 0.0
+                for q in range(6):
+                    norm += T[item, q, a + c] * T[item, q, a + c]
+                norm = np.sqrt(norm) if norm > 0 else 1.0
+                for q in range(3):
+                    C[c, q] = T[item, q + 3, a + c] / norm
+                    C[c, q + 3] = T[item, q, a + c] / norm
+            kk = min(b - a, 6)
+            rd = np.zeros(kk)
+            Qt = np.eye(6)
+            _qrcp_one(C, True, rd, Qt)
+            r = 0
+            for j in range(kk):
+                if rd[j] > rtol * rd[0]:
+                    r += 1
+            counts[item, i] = 6 - r
+            for q in range(r, 6):
+                for col in range(6):
+                    union[nu, col] = Qt[q, col]
+                nu += 1
+        rd = np.zeros(6)
+        _qrcp_one(union[:nu].copy(), False, rd[: min(nu, 6)], Qt)
+        r = 0
+        for j in range(6):
+            sigma[item, j] = rd[j]
+            if rd[j] > rtol * rd[0]:
+                r += 1
+        ranks[item] = r
+
+
+def prange(n):  # replaced by numba.prange when compiled
+    return range(n)
+
+
+_COMPILED = {}
+
+
+def _analyse_numba(T: np.ndarray, offsets: tuple, rtol: float):
+    if "loop" not in _COMPILED:
+        import numba
+
+        qr = numba.njit(cache=False)(_qrcp_one)
+        glb = dict(_analyse_loop.__globals__, _qrcp_one=qr, prange=numba.prange)
+        loop = type(_analyse_loop)(_analyse_loop.__code__, glb, "_analyse_loop")
+        _COMPILED["loop"] = numba.njit(parallel=True, cache=False)(loop)
+    N = T.shape[0]
+    k = len(offsets) - 1
+    ranks = np.zeros(N, dtype=np.int64)
+    counts = np.zeros((N, k), dtype=np.int64)
+    sigma = np.zeros((N, 6))
+    _COMPILED["loop"](np.ascontiguousarray(T, dtype=np.float64),
+                      np.asarray(offsets, dtype=np.int64), rtol, ranks, counts, sigma)
+    return ranks, counts, sigma
