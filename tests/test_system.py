@@ -1,0 +1,298 @@
+"""Screw systems: generic rank, polynomial reciprocal bases, and the exhaustive case split."""
+
+from __future__ import annotations
+
+import pickle
+import random
+
+import pytest
+from sympy import Eq, Matrix, Ne, Rational, Symbol, cos, expand, sqrt, symbols, true
+
+from screwsym import ScrewSystem, Twist, Wrench, reciprocal_product, vector
+from screwsym.system import _cases
+
+Z = [0, 0, 1]
+
+
+def ball(p):
+    return ScrewSystem(*(Twist.rotation(1, e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+
+
+def assert_reciprocal(system, other):
+    """Every member of ``other`` is reciprocal to every member of ``system``, identically."""
+    for s in system:
+        for w in other:
+            product = expand(reciprocal_product(s, w))
+            if product != 0:
+                raise AssertionError(f"{s} and {w} are not reciprocal: {product}")
+
+
+def test_assert_reciprocal_rejects_a_wrong_basis():
+    T = ball(vector("p"))
+    with pytest.raises(AssertionError, match="not reciprocal"):
+        assert_reciprocal(T, ScrewSystem(Wrench.force([1, 0, 0], [0, 0, 0])))
+
+
+# ------------------------------------------------------------------ generic
+
+
+def test_ball_joint_reciprocal_is_polynomial_and_valid_at_pz_zero():
+    # the motivating case of issue 11: a hand-made null space gives p_x/p_z
+    p = vector("p")
+    T = ball(p)
+    W = T.reciprocal()
+    assert W.kind is Wrench and W.rank == 3
+    assert all(e.is_polynomial(*p) for e in W.matrix)
+    assert_reciprocal(T, W)
+    # the three forces through p
+    assert W == ScrewSystem(*(Wrench.force(e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+    at = {p[0]: 1, p[1]: 2, p[2]: 0}
+    assert Matrix(W.matrix.xreplace(at)).rank() == 3
+    assert T.rank_conditions() == [(true, 3)]
+
+
+def test_five_joint_limb_reciprocal_with_symbolic_placement():
+    pts = [vector(f"p{i}") for i in range(5)]
+    dirs = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1]]
+    T = ScrewSystem(*(Twist.rotation(1, d, p) for d, p in zip(dirs, pts, strict=True)))
+    W = T.reciprocal()
+    assert T.rank == 5 and W.rank == 1
+    assert all(e.is_polynomial() for e in W.matrix)
+    assert_reciprocal(T, W)
+
+
+def test_rank_basis_contains():
+    s = ScrewSystem([1, 0, 0, 0, 0, 0], [2, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0])
+    assert s.rank == 2
+    assert s.basis() == ScrewSystem([1, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0])
+    assert s.contains([3, 0, 0, 5, 0, 0]) is True
+    assert s.contains([0, 1, 0, 0, 0, 0]) is False
+    assert ScrewSystem().contains([0, 0, 0, 0, 0, 0]) is True
+    assert ScrewSystem().contains([1, 0, 0, 0, 0, 0]) is False
+
+
+def test_union_and_intersection():
+    a = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.translation([1, 0, 0]))
+    b = ScrewSystem(Twist.translation([1, 0, 0]), Twist.translation([0, 1, 0]))
+    assert (a | b).rank == 3 and len(a | b) == 4
+    both = a & b
+    assert both.kind is Twist and both.rank == 1
+    assert both.contains(Twist.translation([1, 0, 0]))
+    assert not both.contains(Twist.translation([0, 1, 0]))
+
+
+def test_empty_system():
+    e = ScrewSystem()
+    assert e.rank == 0 and e.matrix.shape == (6, 0) and e.kind.__name__ == "Screw"
+    assert e.reciprocal().rank == 6
+    assert e.rank_conditions() == [(true, 0)]
+
+
+def test_algebraic_coefficients():
+    # three forces in the plane z = 0, tangent to a circle at 120 degrees: not concurrent
+    e = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
+    W = ScrewSystem(*(Wrench.force([-v[1], v[0], 0], v) for v in e))
+    assert W.rank == 3
+    assert_reciprocal(W, W.reciprocal())
+    # the same three lines moved to pass through the centre are concurrent: rank 2
+    W0 = ScrewSystem(*(Wrench.force([-v[1], v[0], 0], [0, 0, 0]) for v in e))
+    assert W0.rank == 2
+
+
+def test_assumptions_drop_impossible_cases():
+    a = symbols("a", real=True)
+    ap = symbols("a", positive=True)
+    for sym, expected in ((a, 2), (ap, 1)):
+        RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, Z, [sym, 0, 0]))
+        assert len(RR.rank_conditions()) == expected
+
+
+# -------------------------------------------------------- exhaustive cases
+
+
+def _sample(system, cases, rng, tries=20):
+    """Points (dicts symbol -> Rational): random ones, and one on each case's substitution."""
+    syms = sorted(system.matrix.free_symbols, key=str)
+
+    def value(s):
+        v = Rational(rng.randint(-9, 9), rng.randint(1, 4))
+        return abs(v) + 1 if s.is_positive else v
+
+    points = [{s: value(s) for s in syms} for _ in range(3)]
+    for cond, subs in cases:
+        for _ in range(tries):
+            free = {s: value(s) for s in syms if s not in subs}
+            try:
+                point = {**free, **{k: v.xreplace(free) for k, v in subs.items()}}
+            except ZeroDivisionError:  # pragma: no cover - a denominator hit zero
+                continue
+            if any(v.has(Symbol) or not v.is_finite for v in point.values()):
+                continue
+            if cond.xreplace(point) is true:
+                points.append(point)
+                break
+        else:  # pragma: no cover - a case without a sample point fails the test
+            raise AssertionError(f"no sample point found for the case {cond}")
+    return points
+
+
+def assert_exhaustive(system, special=(), seed=0):
+    """At sample points: some condition holds, and every one that holds gives the true rank.
+
+    The points: random ones, one on each case, and the ``special`` values known
+    from the geometry (completed with random values for the other symbols).
+    """
+    rng = random.Random(seed)
+    ranks = system.rank_conditions()
+    cases = system.substitutions()
+    recips = system.reciprocal_cases()
+    assert [c for c, _ in ranks] == [c for c, _ in cases] == [c for c, _ in recips]
+    points = _sample(system, cases, rng)
+    for known in special:
+        for _ in range(3):
+            base = _sample(system, [], rng)[0]
+            points.append({**base, **known})
+    for point in points:
+        M = Matrix(system.matrix.xreplace(point))
+        actual = M.rank()
+        holding = [(r, w) for (c, r), (_, w) in zip(ranks, recips, strict=True)
+                   if c.xreplace(point) is true]
+        assert holding, f"no condition holds at {point}"
+        for r, w in holding:
+            if r is None:
+                continue
+            assert r == actual, (point, r, actual)
+            # the case's reciprocal basis: reciprocal, and of full dimension, at the point
+            Wp = Matrix(w.matrix.xreplace(point))
+            assert Wp.rank() == 6 - actual
+            swapped = Matrix.vstack(M[3:, :], M[:3, :])
+            assert (swapped.T * Wp).is_zero_matrix
+
+
+def test_exhaustive_two_parallel_axes():
+    a = symbols("a", real=True)
+    RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, Z, [a, 0, 0]))
+    assert RR.rank_conditions() == [(Ne(a, 0), 2), (Eq(a, 0), 1)]
+    assert_exhaustive(RR, special=[{a: 0}])
+
+
+def test_exhaustive_two_axes_that_become_parallel():
+    # the second axis turns with t: parallel to the first at t = 0, and coincident if also b = 0
+    t, b = symbols("t b", real=True)
+    RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, [t, 0, 1], [0, b, 0]))
+    assert [r for _, r in RR.rank_conditions()] == [2, 2, 1]
+    assert RR.rank_conditions()[-1][0].free_symbols == {t, b}
+    assert_exhaustive(RR, special=[{t: 0}, {t: 0, b: 0}])
+
+
+def test_exhaustive_point_reaching_a_plane():
+    # three forces along z through the points (0,0), (1,0) and (x, y): rank 2 when the
+    # third point reaches the line y = 0 of the other two (their plane with the z axis)
+    x, y = symbols("x y", real=True)
+    W = ScrewSystem(Wrench.force(Z, [0, 0, 0]), Wrench.force(Z, [1, 0, 0]),
+                    Wrench.force(Z, [x, y, 0]))
+    conds = W.rank_conditions()
+    assert conds[0] == (conds[0][0], 3) and conds[0][0].free_symbols == {y}
+    assert any(r == 2 and c.free_symbols == {y} for c, r in conds[1:])
+    assert_exhaustive(W, special=[{y: 0}, {y: 0, x: 0}, {y: 0, x: 1}])
+
+
+def test_exhaustive_five_joint_limb_with_one_symbolic_joint():
+    p = vector("p")
+    T = ScrewSystem(
+        Twist.rotation(1, [1, 0, 0], [0, 0, 0]),
+        Twist.rotation(1, [0, 1, 0], [0, 0, 1]),
+        Twist.translation([0, 0, 1]),
+        Twist.rotation(1, [1, 1, 0], [1, 0, 0]),
+        Twist.rotation(1, [0, 1, 1], p),
+    )
+    assert T.rank == 5
+    assert_exhaustive(T, seed=1)
+
+
+def test_nonlinear_factor_is_listed_with_rank_none():
+    t = symbols("t", real=True)
+    # parallel force lines through (0,0,0) and (t**2 - 2, 0, 0)... coincide where t**2 = 2
+    W = ScrewSystem(Wrench.force(Z, [0, 0, 0]), Wrench.force(Z, [t**2 - 2, 0, 0]))
+    conds = W.rank_conditions()
+    assert conds[0][1] == 2
+    assert any(r is None for _, r in conds)
+    assert all(w is None for (_, r), (_, w) in zip(conds, W.reciprocal_cases(), strict=True)
+               if r is None)
+
+
+def test_too_many_cases_raise():
+    pts = [vector(f"p{i}") for i in range(3)]
+    T = ScrewSystem(*(Twist.rotation(1, Z, p) for p in pts))
+    with pytest.raises(ValueError, match="more than 1 cases"):
+        T.rank_conditions(max_cases=1)
+    _cases.cache_clear()
+
+
+# ---------------------------------------------------------------- objects
+
+
+def test_basic_protocol():
+    p = vector("p")
+    T = ball(p)
+    assert T.func(*T.args) == T
+    assert pickle.loads(pickle.dumps(T)) == T
+    assert T.subs(p[2], 0).matrix == T.matrix.subs(p[2], 0)
+    with pytest.raises(TypeError, match="strings are never evaluated"):
+        T.subs(p[2], "0")
+    assert T.free_symbols == set(p)
+
+
+def test_bad_input():
+    with pytest.raises(TypeError, match="expected screws of one kind, got Twist and Wrench"):
+        ScrewSystem(Twist([1, 0, 0], [0, 0, 0]), Wrench([1, 0, 0], [0, 0, 0]))
+    with pytest.raises(ValueError, match=r"screws\[0\]: expected a 6-vector"):
+        ScrewSystem([1, 0, 0])
+    with pytest.raises(TypeError, match="other: expected a ScrewSystem, got list"):
+        ScrewSystem([1, 0, 0, 0, 0, 0]).union([1, 0, 0, 0, 0, 0])
+    th = symbols("theta", real=True)
+    with pytest.raises(ValueError, match=r"rational functions of symbols.*got cos\(theta\)"):
+        _ = ScrewSystem(Twist.rotation(1, [cos(th), 0, 1], [0, 0, 0])).rank
+    with pytest.raises(ValueError, match="max_cases: expected a positive integer, got 0"):
+        ScrewSystem().rank_conditions(max_cases=0)
+    with pytest.raises(TypeError, match="max_cases: expected a positive integer, got float"):
+        ScrewSystem().rank_conditions(max_cases=2.0)
+
+
+def test_rational_entries_are_cleared_per_column():
+    a = symbols("a", positive=True)
+    W = ScrewSystem(Wrench([1 / a, 0, 0], [0, 0, 0]), Wrench([0, 1, 0], [0, 0, 0]))
+    assert W.rank == 2
+    assert_reciprocal(W, W.reciprocal())
+
+
+class _Tampered:
+    """A system whose case list lies: the checker must notice."""
+
+    def __init__(self, system, ranks=None, drop_last=False):
+        self.system, self.ranks, self.drop_last = system, ranks, drop_last
+        self.matrix = system.matrix
+
+    def _cut(self, items):
+        return items[:-1] if self.drop_last else items
+
+    def rank_conditions(self):
+        got = self.system.rank_conditions()
+        if self.ranks is not None:
+            got = [(c, r) for (c, _), r in zip(got, self.ranks, strict=True)]
+        return self._cut(got)
+
+    def substitutions(self):
+        return self._cut(self.system.substitutions())
+
+    def reciprocal_cases(self):
+        return self._cut(self.system.reciprocal_cases())
+
+
+def test_assert_exhaustive_rejects_wrong_ranks_and_missing_cases():
+    a = symbols("a", real=True)
+    RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, Z, [a, 0, 0]))
+    with pytest.raises(AssertionError):
+        assert_exhaustive(_Tampered(RR, ranks=[2, 2]))
+    with pytest.raises(AssertionError, match="no condition holds"):
+        assert_exhaustive(_Tampered(RR, drop_last=True), special=[{a: 0}])
