@@ -1,0 +1,357 @@
+"""Joints, limbs and the mobility of worked parallel mechanisms, against the literature.
+
+Each test names its source for the expected degrees of freedom and motion type.
+The modified Grübler–Kutzbach criterion M = d(n - g - 1) + sum f + nu - zeta is
+Huang, Li & Ding, *Theory of Parallel Mechanisms* (Springer 2013), Chapter 5,
+after Huang, Zhao & Zhao, "Mobility of parallel mechanisms" (2003) and Huang,
+Liu & Zeng (2009)/Huang, Li & Ding Ch. 2 for the common constraints lambda.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from sympy import Matrix, Rational, expand, sqrt, symbols, true
+
+from screwsym import ScrewSystem, reciprocal_product
+from screwsym.mechanism import (
+    C,
+    H,
+    Limb,
+    Mobility,
+    P,
+    ParallelMechanism,
+    R,
+    S,
+    U,
+    motion_type,
+)
+from screwsym.mechanism_numeric import mobility_map
+
+Z = [0, 0, 1]
+O = [0, 0, 0]
+#: unit radial directions at 0, 120 and 240 degrees
+E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
+
+
+def sub(a, b):
+    return [x - y for x, y in zip(a, b, strict=True)]
+
+
+def cross(a, b):
+    return list(Matrix(a).cross(Matrix(b)))
+
+
+def check_consistent(m: Mobility, mech: ParallelMechanism):
+    """The criterion agrees with the platform's twist system; twists reciprocal to constraints."""
+    assert m.dof == m.twists.rank == 6 - mech.constraint_system().rank
+    assert m.order == 6 - m.common
+    assert m.rotations + m.translations == m.twists.rank
+    for t in m.twists:
+        for w in mech.constraint_system():
+            assert expand(reciprocal_product(t, w)) == 0
+
+
+# ------------------------------------------------------------- mechanisms
+
+
+def four_bar(B=(1, 2, 0), Cp=(3, 3, 0)):
+    """A-B-C-D, base joints A = O and D = (4, 0, 0); limbs A-B and D-C carry the coupler B-C."""
+    return ParallelMechanism(Limb(R(O, Z), R(list(B), Z)), Limb(R([4, 0, 0], Z), R(list(Cp), Z)))
+
+
+def rps_leg(i, rho, h, base=2):
+    """3-RPS leg i: R at base * e_i, axis tangent; the leg in the plane normal to the R axis."""
+    e = E[i]
+    b = [base * c for c in e]
+    d = [rho * e[0], rho * e[1], h]
+    top = [x + y for x, y in zip(b, d, strict=True)]
+    return Limb(R(b, [-e[1], e[0], 0]), P(d), S(top))
+
+
+def three_rps(rho=None, h=(2, 2, 3)):
+    rho = (Rational(-1, 2),) * 3 if rho is None else rho
+    return ParallelMechanism(*(rps_leg(i, rho[i], h[i]) for i in range(3)))
+
+
+def upu_leg(b, a1, top):
+    """Tsai's UPU leg: base U (a1, a2), P along the leg, platform U (a2, a1): a2 ∥ a2, a1 ∥ a1."""
+    d = sub(top, b)
+    a2 = cross(a1, d)
+    return Limb(U(b, a1, a2), P(d), U(top, a2, a1))
+
+
+UPU_BASE = [[2, 0, 0], [-1, 2, 0], [-1, -2, 0], [1, -3, 0]]
+UPU_AXIS = [[0, 1, 0], [-2, -1, 0], [2, -1, 0], [3, 1, 0]]
+UPU_TOP = [[1, 0, 3], [0, 1, 3], [0, -1, 3], [1, -1, 3]]
+
+
+def stewart(first=U):
+    base = [[3, 0, 0], [2, 2, 0], [-1, 3, 0], [-3, 0, 0], [-1, -3, 0], [2, -2, 0]]
+    top = [[1, 1, 2], [-1, 1, 2], [-1, 0, 2], [-1, -1, 2], [0, -1, 2], [1, -1, 3]]
+    legs = []
+    for b, p in zip(base, top, strict=True):
+        j = U(b, [1, 0, 0], [0, 1, 0]) if first is U else S(b)
+        legs.append(Limb(j, P(sub(p, b)), S(p)))
+    return ParallelMechanism(*legs)
+
+
+# ------------------------------------------------------------------ tests
+
+
+def test_four_bar():
+    # 1 DOF; the classical count gives 6(4-4-1)+4 = -2 (Huang, Li & Ding, Ch. 2 and 5:
+    # the planar four-bar has lambda = 3 common constraints, d = 3, M = 3(-1)+4 = 1)
+    mech = four_bar()
+    m = mech.mobility()
+    assert (m.dof, m.classical, m.common, m.order, m.redundant, m.passive) == (1, -2, 3, 3, 0, 0)
+    assert (m.links, m.joints, m.freedoms) == (4, 4, 4)
+    assert m.motion == "1R"  # an instantaneous rotation about the instant centre
+    check_consistent(m, mech)
+
+
+def test_four_bar_collinear_singularity():
+    # all four joints on one line: the coupler gains an instantaneous freedom, the
+    # "uncertainty configuration" of a change-point four-bar (Norton, Design of
+    # Machinery, §2.15; Gosselin & Angeles 1990, IEEE T-RA 6(3), type II singularity)
+    bx, by = symbols("b_x b_y", real=True)
+    mech = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
+    cases = mech.mobility_cases()
+    by_dof = {m.dof: c for c, m in cases}
+    assert cases[0][1].dof == 1 and by_dof[2].free_symbols == {by} | {bx}
+    two = [c for c, m in cases if m.dof == 2]
+    assert two and all(c.xreplace({by: 0, bx: 1}) is true for c in two[:1])
+    assert mech.xreplace({by: 0, bx: 1}).mobility().dof == 2
+    assert mech.xreplace({by: 0, bx: 1}).mobility().motion == "1R1T"
+
+
+def test_stewart_gough_6ups():
+    # 6 DOF, 3R3T (Gough 1956; Stewart 1965; Merlet, Parallel Robots, 2006, Ch. 1)
+    mech = stewart()
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical, m.common, m.redundant, m.passive) == (
+        6, "3R3T", 6, 0, 0, 0)
+    assert mech.constraint_system().rank == 0
+    check_consistent(m, mech)
+
+
+def test_stewart_gough_6sps_has_six_passive_freedoms():
+    # 6-SPS: each leg spins about its own axis; the classical count gives
+    # 6(14-18-1)+42 = 12, the platform has 6 (Tsai, Robot Analysis, 1999, §1.4:
+    # mobility 12 minus 6 idle/passive leg rotations)
+    m = stewart(first=S).mobility()
+    assert (m.dof, m.classical, m.passive, m.motion) == (6, 12, 6, "3R3T")
+
+
+def test_three_rps():
+    # 3 DOF, two rotations and one translation (Hunt 1983, J. Mech. Trans. Autom. Des.
+    # 105; Lee & Shah 1988, J. Mech. Trans. Autom. Des. 110)
+    mech = three_rps()
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical, m.common, m.redundant, m.passive) == (
+        3, "2R1T", 3, 0, 0, 0)
+    # each leg transmits one force, through its sphere centre along its R axis (Huang,
+    # Li & Ding, Ch. 5: constraint analysis of 3-RPS)
+    for limb in mech.limbs:
+        (w,) = limb.constraints()
+        rj, _, sj = limb.joints
+        assert Matrix(w.f).cross(rj.args[1]) == Matrix([0, 0, 0])
+        assert expand(Matrix(w.C_O) - Matrix(sj.args[0]).cross(w.f)) == Matrix([0, 0, 0])
+    check_consistent(m, mech)
+
+
+def test_three_rps_symbolic_and_its_constraint_singularity():
+    # generic: 3 DOF 2R1T.  Legs at one height with the three constraint forces concurrent
+    # (here rho1 + rho2 + rho3 = -6 with base radius 2): the forces are coplanar and
+    # concurrent, rank 2, and the platform gains a rotation, 4 DOF 3R1T (a constraint
+    # singularity: Zlatanov, Bonev & Gosselin, ICRA 2002; for 3-RPS see Schadlbauer,
+    # Walter & Husty, Mech. Mach. Theory 77, 2014)
+    rho = symbols("rho1:4", real=True)
+    h = symbols("h1:4", positive=True)
+    mech = three_rps(rho, h)
+    cases = mech.mobility_cases()
+    assert cases[0][1].dof == 3 and cases[0][1].motion == "2R1T"
+    singular = [(c, m) for c, m in cases if m.dof != 3]
+    assert len(singular) == 1
+    cond, m = singular[0]
+    assert (m.dof, m.motion) == (4, "3R1T")
+    at = {rho[0]: 1, rho[1]: -3, rho[2]: -4, h[0]: 2, h[1]: 2, h[2]: 2}
+    assert cond.xreplace(at) is true
+    assert all(c.xreplace(at) is not true for c, mm in cases if mm.dof == 3)
+    # independently, in floating point
+    f = mobility_map(mech, [*rho, *h])
+    vals = [np.array([at[s], 0.5]) for s in (*rho, *h)]
+    assert list(f(*vals).dof) == [4, 3]
+
+
+def test_three_rrr_spherical():
+    # 3 DOF, three rotations about the common centre (Gosselin & Angeles 1989,
+    # J. Mech. Trans. Autom. Des. 111); lambda = 3, d = 3 (Huang, Li & Ding, Ch. 5)
+    mech = ParallelMechanism(
+        Limb(R(O, [1, 0, 0]), R(O, [0, 1, 1]), R(O, [1, 1, 2])),
+        Limb(R(O, [0, 1, 0]), R(O, [1, 0, 1]), R(O, [2, 1, 1])),
+        Limb(R(O, [0, 0, 1]), R(O, [1, 1, 0]), R(O, [1, 2, 1])),
+    )
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical, m.common, m.order, m.redundant) == (
+        3, "3R", -3, 3, 3, 0)
+    check_consistent(m, mech)
+
+
+def test_three_upu_translational():
+    # 3 DOF pure translation (Tsai 1996, ASME DETC 96/MECH-1152; Tsai & Joshi 2000):
+    # each leg transmits one couple normal to its two U axes
+    legs = zip(UPU_BASE[:3], UPU_AXIS[:3], UPU_TOP[:3], strict=True)
+    mech = ParallelMechanism(*(upu_leg(*x) for x in legs))
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical, m.redundant) == (3, "3T", 3, 0)
+    for limb in mech.limbs:
+        (w,) = limb.constraints()
+        assert w.f == Matrix([0, 0, 0])  # a couple
+    check_consistent(m, mech)
+
+
+def test_four_upu_is_overconstrained():
+    # a fourth UPU leg adds a fourth couple in the span of the other three: nu = 1, so
+    # the classical count 6(10-12-1)+20 = 2 is wrong and the criterion gives 3
+    # (expected motion as Tsai's 3-UPU, above; nu by the definition of Huang, Li &
+    # Ding, Ch. 5: constraints in excess of the rank of their union)
+    legs = zip(UPU_BASE, UPU_AXIS, UPU_TOP, strict=True)
+    mech = ParallelMechanism(*(upu_leg(*x) for x in legs))
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical, m.redundant, m.common) == (3, "3T", 2, 1, 0)
+    check_consistent(m, mech)
+
+
+def test_three_rrr_planar():
+    # 3 DOF, two translations in the plane and the rotation normal to it (Gosselin &
+    # Angeles 1990, IEEE T-RA 6(3); Merlet, Parallel Robots, Ch. 2); lambda = 3, d = 3
+    mech = ParallelMechanism(
+        Limb(R(O, Z), R([1, 1, 0], Z), R([2, 1, 0], Z)),
+        Limb(R([4, 0, 0], Z), R([4, 2, 0], Z), R([3, 2, 0], Z)),
+        Limb(R([2, 4, 0], Z), R([1, 3, 0], Z), R([2, 2, 0], Z)),
+    )
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical, m.common, m.redundant) == (3, "1R2T", -3, 3, 0)
+    check_consistent(m, mech)
+
+
+def test_three_prs():
+    # 3 DOF, 2R1T (Carretero, Podhorodeski, Nahon & Gosselin 2000, J. Mech. Des. 122:
+    # vertical P, R tangent to the base circle, S on the platform)
+    s = symbols("s1:4", real=True)
+
+    def leg(i):
+        e = E[i]
+        hinge = [2 * e[0], 2 * e[1], s[i]]
+        top = [e[0], e[1], s[i] + 2]
+        return Limb(P(Z), R(hinge, [-e[1], e[0], 0]), S(top))
+
+    mech = ParallelMechanism(*(leg(i) for i in range(3)))
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical) == (3, "2R1T", 3)
+    check_consistent(m, mech)
+
+
+# ----------------------------------------------------------------- joints
+
+
+def test_joint_twists():
+    assert R([1, 0, 0], Z).twists().matrix.T.tolist() == [[0, 0, 1, 0, -1, 0]]
+    assert P([1, 2, 3]).twists().matrix.T.tolist() == [[0, 0, 0, 1, 2, 3]]
+    assert H(O, Z, 2).twists().matrix.T.tolist() == [[0, 0, 1, 0, 0, 2]]
+    assert C(O, Z).twists().rank == 2 and C(O, Z).freedom == 2
+    assert U(O, [1, 0, 0], [0, 1, 0]).twists().rank == 2
+    assert S([1, 2, 3]).twists().rank == 3 and S(O).freedom == 3
+    leg = Limb(R(O, Z), P([1, 0, 0]), S([1, 0, 1]))
+    assert leg.freedom == 5 and leg.passive == 0
+    assert Limb(S(O), S([0, 0, 1])).passive == 1  # the S-S link spins about its axis
+
+
+def test_motion_type_names():
+    assert [motion_type(*x) for x in ((3, 3), (2, 1), (0, 3), (1, 0), (0, 0))] == [
+        "3R3T", "2R1T", "3T", "1R", "0"]
+
+
+def test_objects_are_basic():
+    mech = four_bar()
+    assert mech.func(*mech.args) == mech
+    a = symbols("a", real=True)
+    leg = Limb(R([a, 0, 0], Z), P(Z))
+    assert leg.subs(a, 1) == Limb(R([1, 0, 0], Z), P(Z))
+    with pytest.raises(TypeError, match="strings are never evaluated"):
+        leg.subs(a, "1")
+    assert isinstance(leg.twists(), ScrewSystem)
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match=r"direction: expected a non-zero direction, got \[0, 0, 0\]"):
+        R(O, [0, 0, 0])
+    with pytest.raises(ValueError, match="dir2: expected a non-zero direction"):
+        U(O, Z, [0, 0, 0])
+    with pytest.raises(ValueError, match="point: expected a 3-vector, got shape"):
+        S([1, 2])
+    with pytest.raises(ValueError, match="joints: expected at least one joint, got none"):
+        Limb()
+    with pytest.raises(TypeError, match=r"joints\[1\]: expected a joint \(R, P, H, C, U or S\)"):
+        Limb(R(O, Z), [1, 0, 0])
+    with pytest.raises(ValueError, match="limbs: expected at least one limb, got none"):
+        ParallelMechanism()
+    with pytest.raises(TypeError, match=r"limbs\[0\]: expected a Limb, got R"):
+        ParallelMechanism(R(O, Z))
+    with pytest.raises(TypeError, match="pitch: expected a real number"):
+        H(O, Z, "2")
+
+
+# ---------------------------------------------------------------- numeric
+
+
+def test_mobility_map_agrees_with_the_exact_analysis():
+    # 3-RPS at random heights (generic: 3) and at the concurrent configuration (4)
+    rho = symbols("rho1:4", real=True)
+    h = symbols("h1:4", positive=True)
+    mech = three_rps(rho, h)
+    f = mobility_map(mech, [*rho, *h])
+    rng = np.random.default_rng(0)
+    vals = [rng.uniform(-1, 1, 50) for _ in range(3)] + [rng.uniform(1, 2, 50) for _ in range(3)]
+    vals[4][:5] = vals[3][:5]
+    vals[5][:5] = vals[3][:5]
+    vals[2][:5] = -6 - vals[0][:5] - vals[1][:5]
+    out = f(*vals)
+    assert out.dof.shape == (50,) and out.limb_constraints.shape == (50, 3)
+    assert list(out.dof[:5]) == [4] * 5 and (out.dof[5:] == 3).all()
+    assert (out.limb_constraints == 1).all()
+    for j in (0, 7):  # exact check of two configurations
+        at = {s: Rational(float(v[j])) for s, v in zip((*rho, *h), vals, strict=True)}
+        if j == 0:  # on the singular set exactly, not only to rounding
+            at[rho[2]] = -6 - at[rho[0]] - at[rho[1]]
+        exact = mech.xreplace(at).mobility().dof
+        assert exact == out.dof[j]
+    # sigma: the third |R_jj| of the union vanishes only at the singular configurations
+    assert (out.sigma[:5, 2] < 1e-12).all() and (out.sigma[5:, 2] > 1e-6).all()
+
+
+def test_mobility_map_backends_agree():
+    pytest.importorskip("numba")
+    bx, by = symbols("b_x b_y", real=True)
+    mech = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
+    grid = np.meshgrid(np.linspace(-2, 2, 9), np.linspace(-1, 1, 5))
+    a = mobility_map(mech, [bx, by])(*grid)
+    b = mobility_map(mech, [bx, by], backend="numba")(*grid)
+    assert a.dof.shape == (5, 9)
+    assert (a.dof == b.dof).all() and np.allclose(a.sigma, b.sigma)
+    # b_y = 0: collinear, 2 DOF, except b = (0, 0) where B sits on A (exact analysis: 1 DOF)
+    assert a.dof[2].tolist() == [2, 2, 2, 2, 1, 2, 2, 2, 2]
+    assert (a.dof[[0, 1, 3, 4]] == 1).all()
+    assert mech.xreplace({bx: 0, by: 0}).mobility().dof == 1
+
+
+def test_mobility_map_bad_input():
+    bx = symbols("b_x", real=True)
+    mech = four_bar(B=(bx, 1, 0))
+    with pytest.raises(TypeError, match="mechanism: expected a ParallelMechanism, got Limb"):
+        mobility_map(mech.limbs[0], [bx])
+    with pytest.raises(ValueError, match="args: expected every symbol of the mechanism, missing b_x"):
+        mobility_map(mech, [])
+    with pytest.raises(ValueError, match="rtol: expected a positive finite number, got 0"):
+        mobility_map(mech, [bx], rtol=0)
