@@ -464,10 +464,11 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
         )
     return check_vector(value, name)
 def check_screw_system_members(values: Any, name: str) -> tuple:
-    """Return ``values`` as a tuple of screws of one kind: all twists, all wrenches or all screws.
+    """Return ``values`` as a tuple of screws of one kind: all twists, all wrenches or screws.
 
-    Screw objects are passed through; 6-vectors (S; S0) become plain screws,
-    or the kind of the screw objects among them.
+    Screw objects are passed through (line vectors and plain screws mix);
+    6-vectors (S; S0) become the kind of the screw objects among them, plain
+    screws if there are none.
 
     >>> from screwsym import Twist, Wrench
     >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0])], "screws")
@@ -479,32 +480,21 @@ def check_screw_system_members(values: Any, name: str) -> tuple:
     TypeError: screws: expected screws of one kind, got Twist and Wrench
     """
     from .screw import Screw
+    from .twist import Twist
+    from .wrench import Wrench
 
     values = tuple(values)
     kinds = []
     for v in values:
-        if isinstance(v, Screw) and type(v) not in kinds:
-            kinds.append(type(v))
+        k = next((k for k in (Twist, Wrench) if isinstance(v, k)), Screw)
+        if isinstance(v, Screw) and k not in kinds:
+            kinds.append(k)
     if len(kinds) > 1:
         raise TypeError(
             f"{name}: expected screws of one kind, got {' and '.join(k.__name__ for k in kinds)}"
         )
     cls = kinds[0] if kinds else Screw
     return tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
-
-
-def check_direction(value: Any, name: str) -> ImmutableMatrix:
-    """Return ``value`` as a 3-vector that is not provably zero (an axis direction).
-
-    >>> check_direction([0, 0, 0], "direction")
-    Traceback (most recent call last):
-    ...
-    ValueError: direction: expected a non-zero direction, got [0, 0, 0]
-    """
-    v = check_vector(value, name)
-    if is_zero_vector(v) is True:
-        raise ValueError(f"{name}: expected a non-zero direction, got {list(v)}")
-    return v
 
 
 def check_count(value: Any, name: str) -> int:

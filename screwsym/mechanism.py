@@ -42,7 +42,7 @@ from typing import Any, NamedTuple
 from sympy import ImmutableMatrix
 
 from ._basic import ScrewsymBasic
-from ._validation import check_direction, check_scalar, check_vector
+from ._validation import check_nonzero_vector, check_scalar, check_vector
 from .system import MAX_CASES, ScrewSystem, _analysis
 from .twist import Twist
 
@@ -61,6 +61,10 @@ __all__ = [
 ]
 
 _E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
+
+
+def _axis(value: Any, name: str) -> ImmutableMatrix:
+    return check_nonzero_vector(value, name, "a joint axis needs a non-zero direction")
 
 
 def _rotation(point: ImmutableMatrix, direction: ImmutableMatrix) -> Twist:
@@ -99,7 +103,7 @@ class R(Joint):
 
     def __new__(cls, point: Any, direction: Any):
         return ScrewsymBasic.__new__(
-            cls, check_vector(point, "point"), check_direction(direction, "direction")
+            cls, check_vector(point, "point"), _axis(direction, "direction")
         )
 
     def _twists(self):
@@ -118,7 +122,7 @@ class P(Joint):
     freedom = 1
 
     def __new__(cls, direction: Any):
-        return ScrewsymBasic.__new__(cls, check_direction(direction, "direction"))
+        return ScrewsymBasic.__new__(cls, _axis(direction, "direction"))
 
     def _twists(self):
         return [Twist([0, 0, 0], self.args[0])]
@@ -139,7 +143,7 @@ class H(Joint):
         return ScrewsymBasic.__new__(
             cls,
             check_vector(point, "point"),
-            check_direction(direction, "direction"),
+            _axis(direction, "direction"),
             check_scalar(pitch, "pitch"),
         )
 
@@ -156,7 +160,7 @@ class C(Joint):
 
     def __new__(cls, point: Any, direction: Any):
         return ScrewsymBasic.__new__(
-            cls, check_vector(point, "point"), check_direction(direction, "direction")
+            cls, check_vector(point, "point"), _axis(direction, "direction")
         )
 
     def _twists(self):
@@ -177,8 +181,8 @@ class U(Joint):
         return ScrewsymBasic.__new__(
             cls,
             check_vector(point, "point"),
-            check_direction(dir1, "dir1"),
-            check_direction(dir2, "dir2"),
+            _axis(dir1, "dir1"),
+            _axis(dir2, "dir2"),
         )
 
     def _twists(self):

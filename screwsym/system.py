@@ -95,7 +95,7 @@ class ScrewSystem(ScrewsymBasic):
 
     >>> from screwsym import ScrewSystem, Twist, Wrench, vector
     >>> p = vector("p")
-    >>> ball = ScrewSystem(*(Twist.rotation(1, e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+    >>> ball = ScrewSystem(*(Twist.rotation(e, point=p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
     >>> ball.rank
     3
     >>> W = ball.reciprocal()
@@ -107,7 +107,7 @@ class ScrewSystem(ScrewsymBasic):
     [   0, -p_z,  p_y],
     [ p_z,    0, -p_x],
     [-p_y,  p_x,    0]])
-    >>> W == ScrewSystem(*(Wrench.force(e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+    >>> W == ScrewSystem(*(Wrench.force(e, point=p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
     True
     >>> ball.rank_conditions()
     [(True, 3)]
@@ -118,8 +118,8 @@ class ScrewSystem(ScrewsymBasic):
 
     >>> from sympy import symbols
     >>> a = symbols("a", real=True)
-    >>> RR = ScrewSystem(Twist.rotation(1, [0, 0, 1], [0, 0, 0]),
-    ...                  Twist.rotation(1, [0, 0, 1], [a, 0, 0]))
+    >>> RR = ScrewSystem(Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+    ...                  Twist.rotation([0, 0, 1], point=[a, 0, 0]))
     >>> RR.rank_conditions()
     [(Ne(a, 0), 2), (Eq(a, 0), 1)]
     >>> [(c, w.rank) for c, w in RR.reciprocal_cases()]
@@ -159,8 +159,11 @@ class ScrewSystem(ScrewsymBasic):
 
     @property
     def kind(self) -> type:
-        """``Twist``, ``Wrench`` or ``Screw``: the class of the members (``Screw`` if none)."""
-        return type(self.args[0]) if self.args else Screw
+        """``Twist`` or ``Wrench`` when the members are, else ``Screw`` (also for no members)."""
+        for k in (Twist, Wrench):
+            if self.args and isinstance(self.args[0], k):
+                return k
+        return Screw
 
     @property
     def matrix(self) -> ImmutableMatrix:
@@ -202,7 +205,7 @@ class ScrewSystem(ScrewsymBasic):
         >>> s.contains([1, 1, 0, 0, 0, 0]), s.contains([0, 0, 1, 0, 0, 0])
         (True, False)
         """
-        s = check_screw(screw, "screw", self.kind if self.args else None)
+        s = check_screw(screw, "screw", self.kind)
         if not self.args:
             return _analysis(ImmutableMatrix(s.as_matrix())).rank == 0
         return _analysis(self.matrix.row_join(s.as_matrix())).rank == self.rank
@@ -245,7 +248,7 @@ class ScrewSystem(ScrewsymBasic):
         :meth:`reciprocal_cases`.  Twists give wrenches, wrenches twists.
 
         >>> from screwsym import ScrewSystem, Wrench
-        >>> ScrewSystem(Wrench.force([0, 0, 1], [0, 0, 0])).reciprocal().rank
+        >>> ScrewSystem(Wrench.force([0, 0, 1], point=[0, 0, 0])).reciprocal().rank
         5
         """
         node = _top(self.matrix)
@@ -273,8 +276,8 @@ class ScrewSystem(ScrewsymBasic):
         >>> from sympy import symbols
         >>> from screwsym import ScrewSystem, Wrench
         >>> t = symbols("t", real=True)
-        >>> forces = ScrewSystem(Wrench.force([1, 0, 0], [0, 0, 0]),
-        ...                      Wrench.force([1, t, 0], [0, 0, 1]))
+        >>> forces = ScrewSystem(Wrench.force([1, 0, 0], point=[0, 0, 0]),
+        ...                      Wrench.force([1, t, 0], point=[0, 0, 1]))
         >>> forces.rank_conditions()
         [(True, 2)]
         """

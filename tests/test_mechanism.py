@@ -285,9 +285,9 @@ def test_objects_are_basic():
 
 
 def test_bad_input():
-    with pytest.raises(ValueError, match=r"direction: expected a non-zero direction, got \[0, 0, 0\]"):
+    with pytest.raises(ValueError, match=r"direction: a joint axis needs a non-zero direction, got \[0, 0, 0\]"):
         R(O, [0, 0, 0])
-    with pytest.raises(ValueError, match="dir2: expected a non-zero direction"):
+    with pytest.raises(ValueError, match="dir2: a joint axis needs a non-zero direction"):
         U(O, Z, [0, 0, 0])
     with pytest.raises(ValueError, match="point: expected a 3-vector, got shape"):
         S([1, 2])

@@ -15,7 +15,7 @@ Z = [0, 0, 1]
 
 
 def ball(p):
-    return ScrewSystem(*(Twist.rotation(1, e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+    return ScrewSystem(*(Twist.rotation(e, point=p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
 
 
 def assert_reciprocal(system, other):
@@ -30,7 +30,7 @@ def assert_reciprocal(system, other):
 def test_assert_reciprocal_rejects_a_wrong_basis():
     T = ball(vector("p"))
     with pytest.raises(AssertionError, match="not reciprocal"):
-        assert_reciprocal(T, ScrewSystem(Wrench.force([1, 0, 0], [0, 0, 0])))
+        assert_reciprocal(T, ScrewSystem(Wrench.force([1, 0, 0], point=[0, 0, 0])))
 
 
 # ------------------------------------------------------------------ generic
@@ -45,7 +45,7 @@ def test_ball_joint_reciprocal_is_polynomial_and_valid_at_pz_zero():
     assert all(e.is_polynomial(*p) for e in W.matrix)
     assert_reciprocal(T, W)
     # the three forces through p
-    assert W == ScrewSystem(*(Wrench.force(e, p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+    assert W == ScrewSystem(*(Wrench.force(e, point=p) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
     at = {p[0]: 1, p[1]: 2, p[2]: 0}
     assert Matrix(W.matrix.xreplace(at)).rank() == 3
     assert T.rank_conditions() == [(true, 3)]
@@ -54,7 +54,7 @@ def test_ball_joint_reciprocal_is_polynomial_and_valid_at_pz_zero():
 def test_five_joint_limb_reciprocal_with_symbolic_placement():
     pts = [vector(f"p{i}") for i in range(5)]
     dirs = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1]]
-    T = ScrewSystem(*(Twist.rotation(1, d, p) for d, p in zip(dirs, pts, strict=True)))
+    T = ScrewSystem(*(Twist.rotation(d, point=p) for d, p in zip(dirs, pts, strict=True)))
     W = T.reciprocal()
     assert T.rank == 5 and W.rank == 1
     assert all(e.is_polynomial() for e in W.matrix)
@@ -72,7 +72,7 @@ def test_rank_basis_contains():
 
 
 def test_union_and_intersection():
-    a = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.translation([1, 0, 0]))
+    a = ScrewSystem(Twist.rotation(Z, point=[0, 0, 0]), Twist.translation([1, 0, 0]))
     b = ScrewSystem(Twist.translation([1, 0, 0]), Twist.translation([0, 1, 0]))
     assert (a | b).rank == 3 and len(a | b) == 4
     both = a & b
@@ -91,11 +91,11 @@ def test_empty_system():
 def test_algebraic_coefficients():
     # three forces in the plane z = 0, tangent to a circle at 120 degrees: not concurrent
     e = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
-    W = ScrewSystem(*(Wrench.force([-v[1], v[0], 0], v) for v in e))
+    W = ScrewSystem(*(Wrench.force([-v[1], v[0], 0], point=v) for v in e))
     assert W.rank == 3
     assert_reciprocal(W, W.reciprocal())
     # the same three lines moved to pass through the centre are concurrent: rank 2
-    W0 = ScrewSystem(*(Wrench.force([-v[1], v[0], 0], [0, 0, 0]) for v in e))
+    W0 = ScrewSystem(*(Wrench.force([-v[1], v[0], 0], point=[0, 0, 0]) for v in e))
     assert W0.rank == 2
 
 
@@ -103,7 +103,7 @@ def test_assumptions_drop_impossible_cases():
     a = symbols("a", real=True)
     ap = symbols("a", positive=True)
     for sym, expected in ((a, 2), (ap, 1)):
-        RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, Z, [sym, 0, 0]))
+        RR = ScrewSystem(Twist.rotation(Z, point=[0, 0, 0]), Twist.rotation(Z, point=[sym, 0, 0]))
         assert len(RR.rank_conditions()) == expected
 
 
@@ -171,7 +171,7 @@ def assert_exhaustive(system, special=(), seed=0):
 
 def test_exhaustive_two_parallel_axes():
     a = symbols("a", real=True)
-    RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, Z, [a, 0, 0]))
+    RR = ScrewSystem(Twist.rotation(Z, point=[0, 0, 0]), Twist.rotation(Z, point=[a, 0, 0]))
     assert RR.rank_conditions() == [(Ne(a, 0), 2), (Eq(a, 0), 1)]
     assert_exhaustive(RR, special=[{a: 0}])
 
@@ -179,7 +179,7 @@ def test_exhaustive_two_parallel_axes():
 def test_exhaustive_two_axes_that_become_parallel():
     # the second axis turns with t: parallel to the first at t = 0, and coincident if also b = 0
     t, b = symbols("t b", real=True)
-    RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, [t, 0, 1], [0, b, 0]))
+    RR = ScrewSystem(Twist.rotation(Z, point=[0, 0, 0]), Twist.rotation([t, 0, 1], point=[0, b, 0]))
     assert [r for _, r in RR.rank_conditions()] == [2, 2, 1]
     assert RR.rank_conditions()[-1][0].free_symbols == {t, b}
     assert_exhaustive(RR, special=[{t: 0}, {t: 0, b: 0}])
@@ -189,8 +189,8 @@ def test_exhaustive_point_reaching_a_plane():
     # three forces along z through the points (0,0), (1,0) and (x, y): rank 2 when the
     # third point reaches the line y = 0 of the other two (their plane with the z axis)
     x, y = symbols("x y", real=True)
-    W = ScrewSystem(Wrench.force(Z, [0, 0, 0]), Wrench.force(Z, [1, 0, 0]),
-                    Wrench.force(Z, [x, y, 0]))
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[1, 0, 0]),
+                    Wrench.force(Z, point=[x, y, 0]))
     conds = W.rank_conditions()
     assert conds[0] == (conds[0][0], 3) and conds[0][0].free_symbols == {y}
     assert any(r == 2 and c.free_symbols == {y} for c, r in conds[1:])
@@ -200,11 +200,11 @@ def test_exhaustive_point_reaching_a_plane():
 def test_exhaustive_five_joint_limb_with_one_symbolic_joint():
     p = vector("p")
     T = ScrewSystem(
-        Twist.rotation(1, [1, 0, 0], [0, 0, 0]),
-        Twist.rotation(1, [0, 1, 0], [0, 0, 1]),
+        Twist.rotation([1, 0, 0], point=[0, 0, 0]),
+        Twist.rotation([0, 1, 0], point=[0, 0, 1]),
         Twist.translation([0, 0, 1]),
-        Twist.rotation(1, [1, 1, 0], [1, 0, 0]),
-        Twist.rotation(1, [0, 1, 1], p),
+        Twist.rotation([1, 1, 0], point=[1, 0, 0]),
+        Twist.rotation([0, 1, 1], point=p),
     )
     assert T.rank == 5
     assert_exhaustive(T, seed=1)
@@ -213,7 +213,7 @@ def test_exhaustive_five_joint_limb_with_one_symbolic_joint():
 def test_nonlinear_factor_is_listed_with_rank_none():
     t = symbols("t", real=True)
     # parallel force lines through (0,0,0) and (t**2 - 2, 0, 0)... coincide where t**2 = 2
-    W = ScrewSystem(Wrench.force(Z, [0, 0, 0]), Wrench.force(Z, [t**2 - 2, 0, 0]))
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[t**2 - 2, 0, 0]))
     conds = W.rank_conditions()
     assert conds[0][1] == 2
     assert any(r is None for _, r in conds)
@@ -223,7 +223,7 @@ def test_nonlinear_factor_is_listed_with_rank_none():
 
 def test_too_many_cases_raise():
     pts = [vector(f"p{i}") for i in range(3)]
-    T = ScrewSystem(*(Twist.rotation(1, Z, p) for p in pts))
+    T = ScrewSystem(*(Twist.rotation(Z, point=p) for p in pts))
     with pytest.raises(ValueError, match="more than 1 cases"):
         T.rank_conditions(max_cases=1)
     _cases.cache_clear()
@@ -252,7 +252,7 @@ def test_bad_input():
         ScrewSystem([1, 0, 0, 0, 0, 0]).union([1, 0, 0, 0, 0, 0])
     th = symbols("theta", real=True)
     with pytest.raises(ValueError, match=r"rational functions of symbols.*got cos\(theta\)"):
-        _ = ScrewSystem(Twist.rotation(1, [cos(th), 0, 1], [0, 0, 0])).rank
+        _ = ScrewSystem(Twist.rotation([cos(th), 0, 1], point=[0, 0, 0])).rank
     with pytest.raises(ValueError, match="max_cases: expected a positive integer, got 0"):
         ScrewSystem().rank_conditions(max_cases=0)
     with pytest.raises(TypeError, match="max_cases: expected a positive integer, got float"):
@@ -291,8 +291,18 @@ class _Tampered:
 
 def test_assert_exhaustive_rejects_wrong_ranks_and_missing_cases():
     a = symbols("a", real=True)
-    RR = ScrewSystem(Twist.rotation(1, Z, [0, 0, 0]), Twist.rotation(1, Z, [a, 0, 0]))
+    RR = ScrewSystem(Twist.rotation(Z, point=[0, 0, 0]), Twist.rotation(Z, point=[a, 0, 0]))
     with pytest.raises(AssertionError):
         assert_exhaustive(_Tampered(RR, ranks=[2, 2]))
     with pytest.raises(AssertionError, match="no condition holds"):
         assert_exhaustive(_Tampered(RR, drop_last=True), special=[{a: 0}])
+
+
+def test_kinds():
+    from screwsym import LineVector, Screw
+
+    mixed = ScrewSystem(LineVector([1, 0, 0], [0, 0, 0]), Screw([0, 1, 0], [0, 1, 0]))
+    assert mixed.kind is Screw and mixed.reciprocal().kind is Screw
+    assert ScrewSystem([1, 0, 0, 0, 0, 0]).kind is Screw
+    assert ScrewSystem(Twist.translation([1, 0, 0]), [0, 1, 0, 0, 0, 0]).kind is Twist
+    assert ScrewSystem(Twist.translation([1, 0, 0])).reciprocal().kind is Wrench
