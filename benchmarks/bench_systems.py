@@ -1,0 +1,117 @@
+"""Benchmark screw systems and mobility (issue 11) against its targets.
+
+Run from the repository root::
+
+    .venv/bin/python benchmarks/bench_systems.py                 # N = 100,000 poses
+    .venv/bin/python benchmarks/bench_systems.py --n 10000 --repeat 3
+
+Measures, each from cold caches (screwsym's rank and case caches are cleared
+before every repetition; the best of ``--repeat`` is printed):
+
+1. the reciprocal system of a 5-joint limb (five revolute joints, each at a
+   symbolic point ``p_i``: 15 symbols) -- target under 1 s; and its full
+   ``rank_conditions()`` case split, for information;
+2. the full mobility analysis of the 3-RPS platform with symbolic leg
+   geometry (``rho_i``, ``h_i``: 6 symbols): ``mobility()`` and the case split
+   ``mobility_cases()`` -- target under 5 s;
+3. the numeric singularity map of the 3-RPS platform on N poses with
+   ``mobility_map`` (NumPy and, if installed, numba) -- target under 1 s for
+   N = 1e5; generation and numba's first-call compilation are printed apart.
+
+Nothing here is asserted; the figures go to ``benchmarks/README.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import time
+
+import numpy as np
+from sympy import Rational, sqrt, symbols
+
+from screwsym import ScrewSystem, Twist, vector
+from screwsym import system as _system
+from screwsym.mechanism import Limb, P, ParallelMechanism, R, S
+from screwsym.mechanism_numeric import mobility_map
+
+E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
+
+
+def clear() -> None:
+    for f in (_system._analysis, _system._cases, _system._top):
+        f.cache_clear()
+
+
+def best(fn, repeat: int) -> tuple[float, object]:
+    times, out = [], None
+    for _ in range(repeat):
+        clear()
+        t = time.perf_counter()
+        out = fn()
+        times.append(time.perf_counter() - t)
+    return min(times), out
+
+
+def five_joint_limb() -> ScrewSystem:
+    pts = [vector(f"p{i}") for i in range(5)]
+    dirs = [[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1]]
+    return ScrewSystem(*(Twist.rotation(d, point=p) for d, p in zip(dirs, pts, strict=True)))
+
+
+def three_rps(rho, h, base=2) -> ParallelMechanism:
+    legs = []
+    for i, e in enumerate(E):
+        b = [base * c for c in e]
+        d = [rho[i] * e[0], rho[i] * e[1], h[i]]
+        top = [x + y for x, y in zip(b, d, strict=True)]
+        legs.append(Limb(R(b, [-e[1], e[0], 0]), P(d), S(top)))
+    return ParallelMechanism(*legs)
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n", type=int, default=100_000, help="poses for the numeric map")
+    parser.add_argument("--repeat", type=int, default=5, help="best of this many runs")
+    args = parser.parse_args(argv)
+
+    T = five_joint_limb()
+    t, W = best(T.reciprocal, args.repeat)
+    print(f"5-joint limb, 15 symbols: reciprocal() {t:.3f} s (rank {W.rank}; target < 1 s)")
+    t, cases = best(T.rank_conditions, max(1, args.repeat // 2))
+    print(f"  rank_conditions(): {len(cases)} cases in {t:.2f} s")
+
+    rho = symbols("rho1:4", real=True)
+    h = symbols("h1:4", positive=True)
+    mech = three_rps(rho, h)
+    t, m = best(mech.mobility, args.repeat)
+    print(f"3-RPS, 6 symbols: mobility() {t:.3f} s -> dof {m.dof}, {m.motion} (target < 5 s)")
+    t, cases = best(mech.mobility_cases, max(1, args.repeat // 2))
+    dofs = [mm.dof for _, mm in cases]
+    print(f"  mobility_cases(): {len(cases)} cases, dof {dofs}, in {t:.2f} s (target < 5 s)")
+
+    rng = np.random.default_rng(0)
+    n = args.n
+    vals = [rng.uniform(-1, 1, n) for _ in range(3)] + [rng.uniform(1, 2, n) for _ in range(3)]
+    backends = ["numpy"] + (["numba"] if importlib.util.find_spec("numba") else [])
+    for backend in backends:
+        t0 = time.perf_counter()
+        f = mobility_map(mech, [*rho, *h], backend=backend)
+        gen = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        f(*(v[:4] for v in vals))
+        first = time.perf_counter() - t0
+        times = []
+        for _ in range(args.repeat):
+            t0 = time.perf_counter()
+            out = f(*vals)
+            times.append(time.perf_counter() - t0)
+        print(
+            f"3-RPS map, {n} poses, {backend}: {min(times):.3f} s "
+            f"({1e6 * min(times) / n:.2f} us/pose; generation {gen:.2f} s, first call "
+            f"{first:.2f} s); dof counts {np.bincount(out.dof).tolist()} (target < 1 s)"
+        )
+
+
+if __name__ == "__main__":
+    main()
