@@ -33,10 +33,12 @@ import random
 from dataclasses import dataclass
 from functools import lru_cache
 from itertools import combinations
+from math import gcd, lcm
 from typing import Any
 
 from sympy import (
     QQ,
+    Add,
     And,
     Dummy,
     Eq,
@@ -333,9 +335,22 @@ def _field(numbers: tuple):
     return QQ.algebraic_field(*numbers) if numbers else QQ
 
 
-@lru_cache(maxsize=4096)
 def _coefficient(K, c):
-    """A SymPy number as an element of ``K`` (cached: a minimal polynomial each time otherwise)."""
+    """A SymPy number as an element of ``K``: its rational parts times cached algebraic ones.
+
+    Only the irrational factors (``sqrt(3)``) go through ``K.from_sympy``,
+    which computes a minimal polynomial each time and fails on huge rational
+    factors (SymPy 1.14: ``zoo is not in any domain``).
+    """
+    total = K.zero
+    for term in Add.make_args(c):
+        q, rest = term.as_coeff_Mul()
+        total += K.convert(QQ.from_sympy(q)) * (K.one if rest == 1 else _algebraic(K, rest))
+    return total
+
+
+@lru_cache(maxsize=1024)
+def _algebraic(K, c):
     return K.from_sympy(c)
 
 
@@ -719,6 +734,11 @@ def _basis_system(node: _Node, kind: type) -> ScrewSystem:
     return ScrewSystem(*(kind.from_matrix([_poly_expr(e, R) for e in v]) for v in vectors))
 
 
+def _rationals(c, K) -> list:
+    """The rational numbers that make up an element of ``K`` (itself, or an algebraic's)."""
+    return [c] if (K.is_QQ or K.is_ZZ) else [q for q in c.to_list() if q]
+
+
 def _primitive(v: list, R) -> list:
     """``v`` divided by the gcd of its entries, its first non-zero entry with a positive lead."""
     g = R.zero
@@ -736,14 +756,11 @@ def _primitive(v: list, R) -> list:
         neg = bool(R.domain.to_sympy(lc) < 0)
     if neg:
         v = [-e for e in v]
-    # the entries of a primitive vector over QQ: clear the rational content too
-    if R.domain.is_QQ:
-        from math import gcd, lcm
-
-        coeffs = [c for e in v for c in e.coeffs()]
-        den = lcm(*(int(c.denominator) for c in coeffs))
-        num = gcd(*(int(c.numerator * den // c.denominator) for c in coeffs))
-        scale = QQ(den, num)
-        v = [e * scale for e in v]
+    # clear the rational content too: integer coefficients without a common factor
+    coeffs = [q for e in v for c in e.coeffs() for q in _rationals(c, R.domain)]
+    den = lcm(*(int(q.denominator) for q in coeffs))
+    num = gcd(*(int(q.numerator * den // q.denominator) for q in coeffs))
+    scale = R.domain.convert(QQ(den, num))
+    v = [e * scale for e in v]
     return v
 
