@@ -141,52 +141,49 @@ def mobility_map(
     return mobility
 
 
-def _unit_columns(T: np.ndarray) -> np.ndarray:
-    norms = np.linalg.norm(T, axis=-2, keepdims=True)
-    return T / np.where(norms == 0, 1.0, norms)
-
-
 def _qrcp(C: np.ndarray, want_q: bool):
     """Householder QR with column pivoting of a batch of vector sets, in NumPy.
 
-    ``C`` is ``(N, m, n)``: ``m`` vectors of ``R^n`` per item.  Returns
-    ``|R_jj|`` ``(N, min(m, n))`` (non-increasing) and, if asked, ``Q^T``
-    ``(N, n, n)``, whose rows past the rank span the orthogonal complement of
-    the vectors.  Written out (not ``numpy.linalg.qr``, which has no column
-    pivoting, nor ``svd``, which costs 5-8 us per 6 x 6 matrix here) so that
-    every step is one array operation over the whole batch.
+    ``C`` is ``(m, n, N)``: ``m`` vectors of ``R^n`` for each of ``N`` items,
+    the batch last so that every operation runs over long contiguous rows.
+    Returns ``|R_jj|`` ``(min(m, n), N)`` (non-increasing down the first axis)
+    and, if asked, ``Q^T`` ``(n, n, N)``, whose rows past the rank span the
+    orthogonal complement of the vectors.  Written out (not
+    ``numpy.linalg.qr``, which has no column pivoting, nor ``svd``, which
+    costs 5-8 us per 6 x 6 matrix here) so that each step is a few array
+    operations over the whole batch.
     """
     C = np.array(C, dtype=float, copy=True)
-    N, m, n = C.shape
+    m, n, N = C.shape
     k = min(m, n)
-    idx = np.arange(N)
-    rdiag = np.zeros((N, k))
-    Qt = np.broadcast_to(np.eye(n), (N, n, n)).copy() if want_q else None
-    used = np.zeros((N, m), dtype=bool)
+    rdiag = np.zeros((k, N))
+    Qt = np.repeat(np.eye(n)[:, :, None], N, axis=2) if want_q else None
+    used = np.zeros((m, N), dtype=bool)
     for j in range(k):
-        rest = C[:, :, j:]
-        norms = (rest * rest).sum(-1)
+        rest = C[:, j:, :]
+        norms = np.einsum("cqn,cqn->cn", rest, rest)
         norms[used] = -1.0
-        p = np.argmax(norms, axis=1)
-        used[idx, p] = True
-        nx = np.sqrt(np.maximum(norms[idx, p], 0.0))
-        v = C[idx, p, j:]  # fancy indexing: a copy
-        v[:, 0] += np.where(v[:, 0] >= 0, 1.0, -1.0) * nx
-        vn = np.sqrt((v * v).sum(-1))
-        v /= np.where(vn == 0, 1.0, vn)[:, None]
-        rest -= 2 * (rest * v[:, None, :]).sum(-1)[:, :, None] * v[:, None, :]
-        rdiag[:, j] = nx
+        p = np.argmax(norms, axis=0)
+        np.put_along_axis(used, p[None, :], True, axis=0)
+        nx = np.sqrt(np.maximum(np.take_along_axis(norms, p[None, :], axis=0)[0], 0.0))
+        v = np.take_along_axis(rest, p[None, None, :], axis=0)[0]  # (n - j, N), a copy
+        v[0] += np.where(v[0] >= 0, 1.0, -1.0) * nx
+        vn = np.sqrt(np.einsum("qn,qn->n", v, v))
+        v /= np.where(vn == 0, 1.0, vn)
+        t = np.einsum("cqn,qn->cn", rest, v)
+        rest -= 2 * t[:, None, :] * v[None, :, :]
+        rdiag[j] = nx
         if want_q:
-            qs = Qt[:, j:, :]
-            qs -= 2 * v[:, :, None] * (v[:, :, None] * qs).sum(1)[:, None, :]
+            qs = Qt[j:, :, :]
+            qs -= 2 * v[:, None, :] * np.einsum("qn,qkn->kn", v, qs)[None, :, :]
     return rdiag, Qt
 
 
 def _rank(rdiag: np.ndarray, rtol: float) -> np.ndarray:
-    """Numerical rank from ``|R_jj|`` ``(..., k)``, largest first."""
-    if rdiag.shape[-1] == 0:
-        return np.zeros(rdiag.shape[:-1], dtype=int)
-    return np.sum(rdiag > rtol * rdiag[..., :1], axis=-1)
+    """Numerical rank from ``|R_jj|`` ``(k, N)``, largest first."""
+    if rdiag.shape[0] == 0:
+        return np.zeros(rdiag.shape[1:], dtype=int)
+    return np.sum(rdiag > rtol * rdiag[:1], axis=0)
 
 
 _SWAP = np.r_[3:6, 0:3]
@@ -196,20 +193,21 @@ def _analyse_numpy(T: np.ndarray, offsets: tuple, rtol: float):
     """``T`` ``(N, 6, M)``: every limb's twists side by side, limb i in columns offsets[i:i+2]."""
     N = T.shape[0]
     k = len(offsets) - 1
-    rows = np.swapaxes(_unit_columns(T), -1, -2)[..., _SWAP]  # (N, M, 6): halves swapped
+    norms = np.sqrt(np.einsum("nqm,nqm->mn", T, T))
+    rows = np.transpose(T, (2, 1, 0))[:, _SWAP, :] / np.where(norms == 0, 1.0, norms)[:, None, :]
     nulls, counts = [], []
     for i in range(k):
-        rdiag, Qt = _qrcp(rows[:, offsets[i]:offsets[i + 1]], True)
+        rdiag, Qt = _qrcp(rows[offsets[i]:offsets[i + 1]], True)
         r = _rank(rdiag, rtol)
         low = int(r.min()) if N else 6  # rows below every item's rank are never null vectors
-        keep = np.arange(low, 6)[None, :] >= r[:, None]
-        nulls.append(Qt[:, low:, :] * keep[:, :, None])
+        keep = np.arange(low, 6)[:, None] >= r[None, :]
+        nulls.append(Qt[low:] * keep[:, None, :])
         counts.append(6 - r)
-    union = np.concatenate(nulls, axis=1)
+    union = np.concatenate(nulls, axis=0)
     rdiag, _ = _qrcp(union, False)
     sigma = np.zeros((N, 6))
-    sigma[:, : rdiag.shape[1]] = rdiag[:, :6]
-    return _rank(sigma, rtol), np.stack(counts, axis=-1), sigma
+    sigma[:, : rdiag.shape[0]] = rdiag[:6].T
+    return _rank(sigma.T, rtol), np.stack(counts, axis=-1), sigma
 
 
 def _qrcp_one(C, want_q, rdiag, Qt):  # pragma: no cover - compiled by numba
