@@ -479,6 +479,8 @@ def check_screw_system_members(values: Any, name: str) -> tuple:
     ...
     TypeError: screws: expected screws of one kind, got Twist and Wrench
     """
+    from sympy import Float
+
     from .screw import Screw
     from .twist import Twist
     from .wrench import Wrench
@@ -494,7 +496,16 @@ def check_screw_system_members(values: Any, name: str) -> tuple:
             f"{name}: expected screws of one kind, got {' and '.join(k.__name__ for k in kinds)}"
         )
     cls = kinds[0] if kinds else Screw
-    return tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
+    screws = tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
+    for i, s in enumerate(screws):
+        floats = s.atoms(Float)
+        if floats:
+            raise ValueError(
+                f"{name}[{i}]: expected exact entries (integers, rationals, algebraic numbers, "
+                f"symbols), got the float {min(floats)}; screw systems decide ranks exactly "
+                "(use Rational, or screwsym.mechanism_numeric for floating point)"
+            )
+    return screws
 
 
 def check_count(value: Any, name: str) -> int:

@@ -269,6 +269,8 @@ class Mobility(NamedTuple):
     links: int  #: n, base and platform included
     joints: int  #: g
     freedoms: int  #: sum f_i
+    rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
+    translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
 
 
 def motion_type(rotations: int, translations: int) -> str:
@@ -302,6 +304,8 @@ class ParallelMechanism(ScrewsymBasic):
     ... ).mobility()
     >>> m.dof, m.motion, m.classical, (m.common, m.redundant, m.passive)
     (3, '2R1T', 3, (0, 0, 0))
+    >>> m.rotation_directions.shape, m.translation_directions.shape
+    ((3, 2), (3, 1))
 
     Parameters
     ==========
@@ -386,8 +390,12 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     dof = order * (n - g - 1) + freedoms + redundant - passive
     twists = W.reciprocal()
     omega = twists.matrix[:3, :] if len(twists) else ImmutableMatrix.zeros(3, 0)
-    rotations = _analysis(ImmutableMatrix.vstack(omega, ImmutableMatrix.zeros(3, omega.cols))).rank
+    spin = _analysis(ImmutableMatrix.vstack(omega, ImmutableMatrix.zeros(3, omega.cols)))
+    rotations = spin.rank
     translations = twists.rank - rotations
+    # the pure translations the platform has: its twists with omega = 0 (generic, polynomial)
+    pure = twists & ScrewSystem(*(Twist([0, 0, 0], e) for e in _E)) if translations else None
+    moves = pure.basis().matrix[3:, :] if pure is not None else ImmutableMatrix.zeros(3, 0)
     return Mobility(
         dof=dof,
         order=order,
@@ -402,5 +410,7 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
         links=n,
         joints=g,
         freedoms=freedoms,
+        rotation_directions=ImmutableMatrix(omega.extract([0, 1, 2], list(spin.pivots))),
+        translation_directions=ImmutableMatrix(moves),
     )
 

@@ -355,3 +355,32 @@ def test_mobility_map_bad_input():
         mobility_map(mech, [])
     with pytest.raises(ValueError, match="rtol: expected a positive finite number, got 0"):
         mobility_map(mech, [bx], rtol=0)
+
+
+def test_which_rotations_and_translations():
+    # 3-UPU: the three translations; planar 3-RRR: rotation about z, translations in the plane
+    legs = zip(UPU_BASE[:3], UPU_AXIS[:3], UPU_TOP[:3], strict=True)
+    m = ParallelMechanism(*(upu_leg(*x) for x in legs)).mobility()
+    assert m.rotation_directions.shape == (3, 0)
+    assert Matrix(m.translation_directions).rank() == 3
+    m = ParallelMechanism(
+        Limb(R(O, Z), R([1, 1, 0], Z), R([2, 1, 0], Z)),
+        Limb(R([4, 0, 0], Z), R([4, 2, 0], Z), R([3, 2, 0], Z)),
+        Limb(R([2, 4, 0], Z), R([1, 3, 0], Z), R([2, 2, 0], Z)),
+    ).mobility()
+    (w,) = m.rotation_directions.T.tolist()
+    assert w[0] == w[1] == 0 and w[2] != 0
+    assert m.translation_directions.shape == (3, 2)
+    assert all(e == 0 for e in m.translation_directions[2, :])
+
+
+def test_joint_twists_match_modern_robotics():
+    # modern_robotics' ScrewToAxis(q, s, h) = (s; -s x q + h s): the same convention as R and H
+    mr = pytest.importorskip("modern_robotics")
+    q, s_, h = [1.0, 2.0, 3.0], [0.0, 0.6, 0.8], 0.5
+    ours = np.array(H([1, 2, 3], [0, Rational(3, 5), Rational(4, 5)], Rational(1, 2))
+                    .twists().matrix, dtype=float).ravel()
+    assert np.allclose(ours, mr.ScrewToAxis(np.array(q), np.array(s_), h))
+    ours_r = np.array(R([1, 2, 3], [0, Rational(3, 5), Rational(4, 5)]).twists().matrix,
+                      dtype=float).ravel()
+    assert np.allclose(ours_r, mr.ScrewToAxis(np.array(q), np.array(s_), 0))

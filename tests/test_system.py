@@ -306,3 +306,32 @@ def test_kinds():
     assert ScrewSystem([1, 0, 0, 0, 0, 0]).kind is Screw
     assert ScrewSystem(Twist.translation([1, 0, 0]), [0, 1, 0, 0, 0, 0]).kind is Twist
     assert ScrewSystem(Twist.translation([1, 0, 0])).reciprocal().kind is Wrench
+
+
+def test_floats_are_refused():
+    with pytest.raises(ValueError, match=r"screws\[1\]: expected exact entries .* got the float 0.5"):
+        ScrewSystem(Twist.translation([1, 0, 0]), Twist.translation([0.5, 0, 0]))
+
+
+# ------------------------------------------------------------- properties
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_Q = st.fractions(min_value=-5, max_value=5, max_denominator=4).map(Rational)
+_SCREW = st.lists(_Q, min_size=6, max_size=6)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(_SCREW, min_size=1, max_size=6), st.integers(0, 5))
+def test_property_rank_and_reciprocal_of_rational_systems(columns, repeat):
+    # a dependent member (a combination of the others) is added half the time
+    if repeat % 2 and len(columns) > 1:
+        columns = columns + [[a + 2 * b for a, b in zip(columns[0], columns[1], strict=True)]]
+    system = ScrewSystem(*columns)
+    M = Matrix(system.matrix)
+    assert system.rank == M.rank()
+    W = system.reciprocal()
+    assert W.rank == 6 - system.rank
+    assert_reciprocal(system, W)
+    assert system.basis().rank == system.rank == len(system.basis())
