@@ -42,8 +42,8 @@ from .screw import (
     shift_origin,
     unit,
 )
-from .transform import Transform
 from .system import ScrewSystem
+from .transform import Transform
 from .twist import Twist
 from .vectors import vector
 from .wrench import Wrench, power
