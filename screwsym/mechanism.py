@@ -32,7 +32,11 @@ over-constrained mechanisms (the planar four-bar gives -2).
 
 All ranks are generic in the symbols (see :mod:`screwsym.system`);
 :meth:`ParallelMechanism.mobility_cases` splits the analysis where the rank of
-the constraint system changes.
+the constraint system changes.  The analysis is of the free mechanism (no
+joint is actuated), so the singularities it finds are *constraint*
+singularities (the platform gains a freedom, as the 3-UPU and 3-RPS platforms
+do in the tests); actuation (type II) singularities such as those of the
+planar 3-RRR platform need the actuated joints and are not in its scope.
 """
 
 from __future__ import annotations

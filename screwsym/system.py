@@ -284,7 +284,8 @@ class ScrewSystem(ScrewsymBasic):
         >>> forces.rank_conditions()
         [(True, 2)]
         """
-        return [(n.condition, n.rank) for n in _cases(self.matrix, check_count(max_cases, "max_cases"))]
+        cases = _cases(self.matrix, check_count(max_cases, "max_cases"))
+        return [(n.condition, n.rank) for n in cases]
 
     def reciprocal_cases(
         self, *, max_cases: int = MAX_CASES
@@ -306,7 +307,8 @@ class ScrewSystem(ScrewsymBasic):
         Applying the substitution (``system.xreplace(subs)``) gives a system
         whose generic rank is the case's rank.
         """
-        return [(n.condition, dict(n.subs)) for n in _cases(self.matrix, check_count(max_cases, "max_cases"))]
+        cases = _cases(self.matrix, check_count(max_cases, "max_cases"))
+        return [(n.condition, dict(n.subs)) for n in cases]
 
 
 def _check_system(value: Any, name: str) -> ScrewSystem:

@@ -75,7 +75,7 @@ def three_rps(rho=None, h=(2, 2, 3)):
 
 
 def upu_leg(b, a1, top):
-    """Tsai's UPU leg: base U (a1, a2), P along the leg, platform U (a2, a1): a2 ∥ a2, a1 ∥ a1."""
+    """Tsai's UPU leg: base U (a1, a2), P along the leg, platform U (a2, a1), axes parallel."""
     d = sub(top, b)
     a2 = cross(a1, d)
     return Limb(U(b, a1, a2), P(d), U(top, a2, a1))
@@ -285,7 +285,8 @@ def test_objects_are_basic():
 
 
 def test_bad_input():
-    with pytest.raises(ValueError, match=r"direction: a joint axis needs a non-zero direction, got \[0, 0, 0\]"):
+    message = r"direction: a joint axis needs a non-zero direction, got \[0, 0, 0\]"
+    with pytest.raises(ValueError, match=message):
         R(O, [0, 0, 0])
     with pytest.raises(ValueError, match="dir2: a joint axis needs a non-zero direction"):
         U(O, Z, [0, 0, 0])
@@ -351,7 +352,8 @@ def test_mobility_map_bad_input():
     mech = four_bar(B=(bx, 1, 0))
     with pytest.raises(TypeError, match="mechanism: expected a ParallelMechanism, got Limb"):
         mobility_map(mech.limbs[0], [bx])
-    with pytest.raises(ValueError, match="args: expected every symbol of the mechanism, missing b_x"):
+    message = "args: expected every symbol of the mechanism, missing b_x"
+    with pytest.raises(ValueError, match=message):
         mobility_map(mech, [])
     with pytest.raises(ValueError, match="rtol: expected a positive finite number, got 0"):
         mobility_map(mech, [bx], rtol=0)
@@ -384,3 +386,25 @@ def test_joint_twists_match_modern_robotics():
     ours_r = np.array(R([1, 2, 3], [0, Rational(3, 5), Rational(4, 5)]).twists().matrix,
                       dtype=float).ravel()
     assert np.allclose(ours_r, mr.ScrewToAxis(np.array(q), np.array(s_), 0))
+
+
+def test_three_upu_constraint_singularity():
+    # Tsai's 3-UPU meets constraint singularities where its three constraint couples become
+    # linearly dependent, and gains a rotation there (Zlatanov, Bonev & Gosselin,
+    # "Constraint singularities of parallel mechanisms", ICRA 2002, the 3-UPU example;
+    # Parenti-Castelli & Di Gregorio 2000).  Here the third platform joint slides along x.
+    x, z = symbols("x", real=True), symbols("z", positive=True)
+    tops = [[1, 0, z], [0, 1, z], [x, -1, z]]
+    legs = zip(UPU_BASE[:3], UPU_AXIS[:3], tops, strict=True)
+    mech = ParallelMechanism(*(upu_leg(*leg) for leg in legs))
+    cases = mech.mobility_cases()
+    assert [(m.dof, m.motion) for _, m in cases] == [(3, "3T"), (4, "1R3T")]
+    singular = cases[1][0]
+    assert singular.xreplace({x: Rational(-48, 11), z: 3}) is true
+    # the three couples are dependent there, independent elsewhere (exactly and in floats)
+    couples = lambda at: Matrix.hstack(*(limb.constraints().matrix[3:, :]  # noqa: E731
+                                         for limb in mech.xreplace(at).limbs))
+    assert couples({x: Rational(-48, 11), z: 3}).rank() == 2
+    assert couples({x: 0, z: 3}).rank() == 3
+    f = mobility_map(mech, [x, z])
+    assert list(f(np.array([-48 / 11, 0.0]), 3.0).dof) == [4, 3]

@@ -309,7 +309,8 @@ def test_kinds():
 
 
 def test_floats_are_refused():
-    with pytest.raises(ValueError, match=r"screws\[1\]: expected exact entries .* got the float 0.5"):
+    message = r"screws\[1\]: expected exact entries .* got the float 0.5"
+    with pytest.raises(ValueError, match=message):
         ScrewSystem(Twist.translation([1, 0, 0]), Twist.translation([0.5, 0, 0]))
 
 
