@@ -188,7 +188,11 @@ class ScrewSystem(ScrewsymBasic):
         return _analysis(self.matrix).rank
 
     def basis(self) -> ScrewSystem:
-        """The members that span the system generically: the first independent ones, in order.
+        """Members that span the system generically: the first ones independent at a test point.
+
+        A set of members independent at one rational point is independent for
+        generic values, and there are ``rank`` of them, so they are a basis
+        (generically; where the rank drops, see :meth:`rank_conditions`).
 
         >>> from screwsym import ScrewSystem
         >>> ScrewSystem([1, 0, 0, 0, 0, 0], [2, 0, 0, 0, 0, 0], [0, 0, 0, 1, 0, 0]).basis()
@@ -625,7 +629,7 @@ def _cases(M: ImmutableMatrix, limit: int = MAX_CASES) -> tuple[_Node, ...]:
 @lru_cache(maxsize=256)
 def _top(M: ImmutableMatrix) -> _Node:
     """The generic case alone (what ``reciprocal`` needs), without the case split."""
-    return _here(M, (), (), ())[0]
+    return _here(M, (), (), (), split=False)[0]
 
 
 def _condition(conds) -> Boolean:
@@ -662,7 +666,7 @@ def _substitute_nonzero(nonzero: tuple, x, value) -> tuple:
     return tuple(out)
 
 
-def _here(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple):
+def _here(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, split: bool = True):
     """The case of ``M`` (the substitution made) where its chosen minor is non-zero.
 
     Returns the node and the factors (as expressions) of the minor that
@@ -674,6 +678,8 @@ def _here(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple):
     an = _analysis(M)
     m, rows, cols = _choose_minor(rg, an.rank, an.pivots)
     R = rg.ring
+    if not split:  # the basis alone: no need to factor the minor
+        return _Node(true, an.rank, subs, M, rows, cols), []
     factors = [e for e in (_poly_expr(f, R) for f in _factors(m, R))
                if not _known_nonzero(e, nonzero)]
     ne = tuple(Ne(e, 0) for e in factors)
