@@ -463,6 +463,14 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
             "or Wrench.from_matrix"
         )
     return check_vector(value, name)
+
+
+# --------------------------------------------------------------------------
+# Screw systems and mechanisms (screwsym.system, screwsym.mechanism,
+# screwsym.mechanism_numeric)
+# --------------------------------------------------------------------------
+
+
 def check_screw_system_members(values: Any, name: str) -> tuple:
     """Return ``values`` as a tuple of screws of one kind: all twists, all wrenches or screws.
 
