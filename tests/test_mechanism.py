@@ -408,3 +408,19 @@ def test_three_upu_constraint_singularity():
     assert couples({x: 0, z: 3}).rank() == 3
     f = mobility_map(mech, [x, z])
     assert list(f(np.array([-48 / 11, 0.0]), 3.0).dof) == [4, 3]
+
+
+def test_sarrus_linkage():
+    # Sarrus (1853): two planar 3R chains with perpendicular axes give the platform one
+    # translation; the classical count gives 6(6-6-1)+6 = 0 (Gogu, "Mobility of
+    # mechanisms: a critical review", Mech. Mach. Theory 40, 2005).  Here lambda = 1 (the
+    # couple about z is common), d = 5: M = 5(-1)+6 = 1.
+    X, Y = [1, 0, 0], [0, 1, 0]
+    mech = ParallelMechanism(
+        Limb(R([0, 0, 0], X), R([0, 1, 1], X), R([0, 0, 2], X)),
+        Limb(R([0, 0, 0], Y), R([1, 0, 1], Y), R([0, 0, 2], Y)),
+    )
+    m = mech.mobility()
+    assert (m.dof, m.motion, m.classical, m.common, m.order, m.redundant) == (1, "1T", 0, 1, 5, 0)
+    assert Matrix(m.translation_directions).cross(Matrix(Z)) == Matrix([0, 0, 0])  # along z
+    check_consistent(m, mech)
