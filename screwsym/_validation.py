@@ -471,39 +471,41 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
 # --------------------------------------------------------------------------
 
 
-def check_screw_system_members(values: Any, name: str) -> tuple:
+def check_screw_system_members(values: Any, name: str, kinds: dict) -> tuple:
     """Return ``values`` as a tuple of screws of one kind: all twists, all wrenches or screws.
 
-    Screw objects are passed through (line vectors and plain screws mix);
-    6-vectors (S; S0) become the kind of the screw objects among them, plain
-    screws if there are none.
+    ``kinds`` maps a screw class's ``_kind`` to the class a system of that
+    kind holds, ``None`` to the root class (screws and line vectors, which
+    mix).  Screw objects are passed through; 6-vectors (S; S0) become the
+    kind of the screw objects among them, plain screws if there are none.
+    Floats are refused: a screw system decides ranks exactly.
 
-    >>> from screwsym import Twist, Wrench
-    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0])], "screws")
+    >>> from screwsym import Screw, Twist, Wrench
+    >>> kinds = {None: Screw, "twist": Twist, "wrench": Wrench}
+    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0])], "screws", kinds)
     (Twist([1, 0, 0], [0, 0, 0]),)
     >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0]),
-    ...                             Wrench([1, 0, 0], [0, 0, 0])], "screws")
+    ...                             Wrench([1, 0, 0], [0, 0, 0])], "screws", kinds)
     Traceback (most recent call last):
     ...
     TypeError: screws: expected screws of one kind, got Twist and Wrench
     """
     from sympy import Float
 
-    from .screw import Screw
-    from .twist import Twist
-    from .wrench import Wrench
-
+    root = kinds[None]
     values = tuple(values)
-    kinds = []
+    found: list = []
     for v in values:
-        k = next((k for k in (Twist, Wrench) if isinstance(v, k)), Screw)
-        if isinstance(v, Screw) and k not in kinds:
-            kinds.append(k)
-    if len(kinds) > 1:
+        if isinstance(v, root):
+            k = v._kind if v._kind in kinds else None
+            if k not in found:
+                found.append(k)
+    if len(found) > 1:
         raise TypeError(
-            f"{name}: expected screws of one kind, got {' and '.join(k.__name__ for k in kinds)}"
+            f"{name}: expected screws of one kind, got "
+            f"{' and '.join(kinds[k].__name__ for k in found)}"
         )
-    cls = kinds[0] if kinds else Screw
+    cls = kinds[found[0]] if found else root
     screws = tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
     for i, s in enumerate(screws):
         floats = s.atoms(Float)

@@ -66,6 +66,8 @@ __all__ = ["ScrewSystem"]
 
 #: the kind of the reciprocal system: twists and wrenches are each other's reciprocals
 _DUAL_KIND = {Twist: Wrench, Wrench: Twist, Screw: Screw}
+#: the class a system holds, by the members' ``_kind``
+_KINDS = {None: Screw, Twist._kind: Twist, Wrench._kind: Wrench}
 #: at most this many r x r minors are compared when choosing the one that states a case
 _MINOR_BUDGET = 64
 #: the default limit on the number of cases of ``rank_conditions``
@@ -148,7 +150,7 @@ class ScrewSystem(ScrewsymBasic):
     __slots__ = ()
 
     def __new__(cls, *screws: Any):
-        members = check_screw_system_members(screws, "screws")
+        members = check_screw_system_members(screws, "screws", _KINDS)
         return ScrewsymBasic.__new__(cls, *members)
 
     def _eval_diff_parts(self, *symbols, **kwargs):
