@@ -43,10 +43,10 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from sympy import ImmutableMatrix
+from sympy import And, ImmutableMatrix, cancel, false, true
 
 from ._basic import ScrewsymBasic
-from ._validation import check_nonzero_vector, check_scalar, check_vector
+from ._validation import check_count, check_nonzero_vector, check_scalar, check_vector
 from .system import MAX_CASES, ScrewSystem, _analysis
 from .twist import Twist
 
@@ -353,27 +353,83 @@ class ParallelMechanism(ScrewsymBasic):
         return _mobility(self)
 
     def mobility_cases(self, *, max_cases: int = MAX_CASES) -> list[tuple[Any, Mobility | None]]:
-        """The mobility in each case of the constraint system's rank conditions.
+        """The mobility in each case where the symbols change a rank: an exhaustive split.
 
-        Each case's condition comes from
-        :meth:`ScrewSystem.rank_conditions` of :meth:`constraint_system`; its
-        mobility is the generic analysis of the mechanism with the case's
-        substitution made (``None`` where the rank of the case is ``None``).
-        The platform's freedom is exact on the whole case; ``common``,
-        ``redundant`` and ``passive`` are generic within it.
+        Explanation
+        ===========
+
+        The cases are split first by the rank conditions of each limb's twist
+        system (where a limb gains constraints or passive freedoms), limb by
+        limb, then, within each, by those of the union of the limbs'
+        constraint systems (:meth:`ScrewSystem.rank_conditions`); the
+        conditions of a case are the conjunction.  Every real value of the
+        symbols satisfies at least one case.  Each case's mobility is the
+        analysis of the mechanism with the case's substitution made, so
+        ``dof``, ``passive`` and the platform's twists are exact on the whole
+        case, ``common`` and ``redundant`` generic within it.  A case whose
+        rank could not be decided (a condition linear in no symbol) comes with
+        ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond).
+
+        Examples
+        ========
+
+        >>> from sympy import symbols
+        >>> from screwsym.mechanism import Limb, ParallelMechanism, R
+        >>> b = symbols("b", real=True)
+        >>> z = [0, 0, 1]
+        >>> fourbar = ParallelMechanism(Limb(R([0, 0, 0], z), R([1, b, 0], z)),
+        ...                             Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
+        >>> [(case, m.dof, m.motion) for case, m in fourbar.mobility_cases()]
+        [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1R1T')]
         """
-        W = self.constraint_system()
+        max_cases = check_count(max_cases, "max_cases")
+        leaves: list[tuple[tuple, dict]] = [((), {})]
+        for i in range(len(self.args)):
+            grown = []
+            for conds, subs in leaves:
+                limb = self.args[i].xreplace(subs) if subs else self.args[i]
+                grown.extend(_refine(conds, subs, limb.twists(), max_cases))
+            leaves = grown
+            _check_cases(len(leaves), max_cases)
         out = []
-        for (cond, rank), (_, subs) in zip(
-            W.rank_conditions(max_cases=max_cases), W.substitutions(max_cases=max_cases),
-            strict=True,
-        ):
-            if rank is None:
-                out.append((cond, None))
-                continue
+        for conds, subs in leaves:
             mech = self.xreplace(subs) if subs else self
-            out.append((cond, _mobility(mech)))
+            for conds2, subs2 in _refine(conds, subs, mech.constraint_system(), max_cases):
+                condition = And(*conds2) if conds2 else true
+                if condition is false:  # contradicts the limb's case: no point
+                    continue
+                if subs2 is None:
+                    out.append((condition, None))
+                    continue
+                out.append((condition, _mobility(self.xreplace(subs2) if subs2 else self)))
+                _check_cases(len(out), max_cases)
         return out
+
+
+def _check_cases(count: int, limit: int) -> None:
+    if count > limit:
+        raise ValueError(
+            f"mobility_cases: more than {limit} cases; give some symbols values (xreplace) "
+            "or pass a larger max_cases"
+        )
+
+
+def _refine(conds: tuple, subs: dict, system: ScrewSystem, limit: int):
+    """The cases of ``system`` (already substituted) under ``conds``/``subs``: composed.
+
+    A case whose rank is undecided keeps ``None`` as its substitution.
+    """
+    out = []
+    ranks = system.rank_conditions(max_cases=limit)
+    for (cond, rank), (_, more) in zip(ranks, system.substitutions(max_cases=limit), strict=True):
+        new_conds = conds if cond is true else conds + (cond,)
+        if rank is None or subs is None:
+            out.append((new_conds, None))
+            continue
+        composed = {k: cancel(v.xreplace(more)) for k, v in subs.items()}
+        composed.update(more)
+        out.append((new_conds, composed))
+    return out
 
 
 def _mobility(mech: ParallelMechanism) -> Mobility:

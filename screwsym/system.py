@@ -570,7 +570,12 @@ def _choose_minor(rg: _Ring, rank: int, pivots: tuple):
 
 
 def _factors(p, R) -> list:
-    """The irreducible factors of ``p`` that the symbols' assumptions do not prove non-zero."""
+    """The irreducible factors of ``p`` that can vanish: not proved non-zero.
+
+    A factor is proved non-zero by the symbols' assumptions (``is_zero``) or,
+    for a factor quadratic in a real symbol with a constant leading
+    coefficient, by a negative discriminant (:func:`_no_real_zero`).
+    """
     if p.is_ground:
         return []
     _, fl = p.factor_list()
@@ -578,10 +583,30 @@ def _factors(p, R) -> list:
     for f, _ in fl:
         if f.is_ground:
             continue
-        if is_zero(_poly_expr(f, R)) is False:
+        e = _poly_expr(f, R)
+        if is_zero(e) is False or _no_real_zero(f, R):
             continue
         out.append(f)
     return out
+
+
+def _no_real_zero(f, R) -> bool:
+    """True if ``f = a x**2 + b x + c`` (``a`` a number, ``x`` real) has no real zero.
+
+    That is when ``4 a c - b**2 > 0`` for every value of the other symbols,
+    as their assumptions prove (``(x + 1)**2 + z**2 + 1``: ``4 z**2 + 4 > 0``).
+    """
+    for i, x in enumerate(R.symbols):
+        if f.degree(i) != 2 or not x.is_real:
+            continue
+        g = R.gens[i]
+        a, b = f.coeff_wrt(g, 2), f.coeff_wrt(g, 1)
+        if not a.is_ground:
+            continue
+        c = f - a * g**2 - b * g
+        if (_poly_expr(4 * a * c - b**2, R)).is_positive:
+            return True
+    return False
 
 
 def _linear_in(f, R):

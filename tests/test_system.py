@@ -336,3 +336,15 @@ def test_property_rank_and_reciprocal_of_rational_systems(columns, repeat):
     assert W.rank == 6 - system.rank
     assert_reciprocal(system, W)
     assert system.basis().rank == system.rank == len(system.basis())
+
+
+def test_factors_without_real_zeros_split_nothing():
+    # parallel forces through (0, 0) and (x**2 + 2x + 2, 0): the distance (x+1)**2 + 1 never
+    # vanishes for real x, so there is one case; with (x + 1)**2 it vanishes at x = -1
+    x = symbols("x", real=True)
+    origin = Wrench.force(Z, point=[0, 0, 0])
+    far = ScrewSystem(origin, Wrench.force(Z, point=[x**2 + 2 * x + 2, 0, 0]))
+    assert far.rank_conditions() == [(true, 2)]
+    near = ScrewSystem(origin, Wrench.force(Z, point=[x**2 + 2 * x + 1, 0, 0]))
+    assert near.rank_conditions() == [(Ne(x + 1, 0), 2), (Eq(x + 1, 0), 1)]
+    assert_exhaustive(near, special=[{x: -1}])
