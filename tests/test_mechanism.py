@@ -424,3 +424,40 @@ def test_sarrus_linkage():
     assert (m.dof, m.motion, m.classical, m.common, m.order, m.redundant) == (1, "1T", 0, 1, 5, 0)
     assert Matrix(m.translation_directions).cross(Matrix(Z)) == Matrix([0, 0, 0])  # along z
     check_consistent(m, mech)
+
+
+def assert_mobility_cases_exhaustive(mech, points):
+    """At each point: some case holds, and every case that holds gives the exact DOF there."""
+    cases = mech.mobility_cases()
+    for point in points:
+        exact = mech.xreplace(point).mobility().dof
+        holding = [m for c, m in cases if c.xreplace(point) is true]
+        assert holding, f"no case holds at {point}"
+        assert all(m is None or m.dof == exact for m in holding), (point, exact)
+
+
+def test_mobility_cases_are_exhaustive_at_special_and_random_points():
+    bx, by = symbols("b_x b_y", real=True)
+    fourbar = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
+    grid = [{bx: u, by: v} for u in (-1, 0, 3, 4, Rational(7, 2)) for v in (0, 1, Rational(-2, 3))]
+    assert_mobility_cases_exhaustive(fourbar, grid)
+    x, z = symbols("x", real=True), symbols("z", positive=True)
+    legs = zip(UPU_BASE[:3], UPU_AXIS[:3], [[1, 0, z], [0, 1, z], [x, -1, z]], strict=True)
+    upu = ParallelMechanism(*(upu_leg(*leg) for leg in legs))
+    pts = [{x: u, z: w} for u in (Rational(-48, 11), 0, -1, -3) for w in (1, 3)]
+    assert_mobility_cases_exhaustive(upu, pts)
+
+
+def test_assert_mobility_cases_exhaustive_rejects_a_wrong_dof():
+    bx, by = symbols("b_x b_y", real=True)
+    fourbar = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
+
+    class Lying:
+        def mobility_cases(self):
+            return [(c, m._replace(dof=1)) for c, m in fourbar.mobility_cases()]
+
+        def xreplace(self, point):
+            return fourbar.xreplace(point)
+
+    with pytest.raises(AssertionError):
+        assert_mobility_cases_exhaustive(Lying(), [{bx: 1, by: 0}])
