@@ -156,6 +156,19 @@ class ScrewSystem(ScrewsymBasic):
     def _eval_diff_parts(self, *symbols, **kwargs):
         return self.func(*(s.diff(*symbols, **kwargs) for s in self.args))
 
+    def _latex(self, printer) -> str:
+        r"""The span of the members, each in the book's notation.
+
+        >>> from sympy import latex
+        >>> from screwsym import ScrewSystem, Twist
+        >>> print(latex(ScrewSystem(Twist.translation([0, 0, 1]))))
+        \operatorname{span}\left\{\left(0 \quad 0 \quad 0;\; 0 \quad 0 \quad 1\right)\right\}
+        """
+        if not self.args:
+            return r"\left\{0\right\}"
+        inner = ",\\; ".join(printer._print(s) for s in self.args)
+        return r"\operatorname{span}\left\{" + inner + r"\right\}"
+
     # --------------------------------------------------------------- parts
     @property
     def screws(self) -> tuple[Screw, ...]:

@@ -348,3 +348,12 @@ def test_factors_without_real_zeros_split_nothing():
     near = ScrewSystem(origin, Wrench.force(Z, point=[x**2 + 2 * x + 1, 0, 0]))
     assert near.rank_conditions() == [(Ne(x + 1, 0), 2), (Eq(x + 1, 0), 1)]
     assert_exhaustive(near, special=[{x: -1}])
+
+
+def test_latex_is_the_span():
+    from sympy import latex
+
+    s = ScrewSystem(Twist.translation([1, 0, 0]), Twist.rotation(Z, point=[0, 0, 0]))
+    text = latex(s)
+    assert text.startswith(r"\operatorname{span}\left\{") and text.count(r"\;") >= 3
+    assert latex(ScrewSystem()) == r"\left\{0\right\}"
