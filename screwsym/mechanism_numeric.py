@@ -27,9 +27,14 @@ is to a constraint singularity, not only whether it is one.  Pivoted QR is
 rank-revealing in practice though not in the worst case (Kahan's matrix);
 where it matters, check a configuration with ``numpy.linalg.svd``.
 
-The NumPy back end runs each step of the decomposition as one array
-operation over all configurations; ``backend="numba"`` compiles the same
-algorithm as one parallel loop (``pip install "screwsym[fast]"``).
+The NumPy back end (the default here) runs each step of the decomposition as
+a few array operations over all configurations; ``backend="numba"`` compiles
+the same algorithm as one parallel loop (``pip install "screwsym[fast]"``,
+module ``screwsym._mobility_numba``), cached on disk by numba: the first call
+on a machine compiles for seconds, later processes load it in under one.
+The default stays NumPy (unlike :func:`screwsym.lambdify`'s) because under
+load the two were within 1.3-2.5x of each other on the 3-RPS map, not worth
+a first compilation nobody asked for.
 """
 
 from __future__ import annotations
@@ -210,111 +215,15 @@ def _analyse_numpy(T: np.ndarray, offsets: tuple, rtol: float):
     return _rank(sigma.T, rtol), np.stack(counts, axis=-1), sigma
 
 
-def _qrcp_one(C, want_q, rdiag, Qt):  # pragma: no cover - compiled by numba
-    """One item of :func:`_qrcp`, in loops for numba: fills ``rdiag`` and ``Qt``."""
-    m, n = C.shape
-    k = min(m, n)
-    used = np.zeros(m, dtype=np.bool_)
-    v = np.empty(n)
-    for j in range(k):
-        best, p = -1.0, 0
-        for c in range(m):
-            if used[c]:
-                continue
-            t = 0.0
-            for q in range(j, n):
-                t += C[c, q] * C[c, q]
-            if t > best:
-                best, p = t, c
-        used[p] = True
-        nx = np.sqrt(max(best, 0.0))
-        for q in range(j, n):
-            v[q] = C[p, q]
-        v[j] += nx if v[j] >= 0 else -nx
-        vn = 0.0
-        for q in range(j, n):
-            vn += v[q] * v[q]
-        vn = np.sqrt(vn)
-        if vn > 0:
-            for q in range(j, n):
-                v[q] /= vn
-        for c in range(m):
-            t = 0.0
-            for q in range(j, n):
-                t += C[c, q] * v[q]
-            for q in range(j, n):
-                C[c, q] -= 2 * t * v[q]
-        rdiag[j] = nx
-        if want_q:
-            for col in range(n):
-                t = 0.0
-                for q in range(j, n):
-                    t += v[q] * Qt[q, col]
-                for q in range(j, n):
-                    Qt[q, col] -= 2 * v[q] * t
-
-
-def _analyse_loop(T, offsets, rtol, ranks, counts, sigma):  # pragma: no cover - numba
-    """The per-configuration loop of :func:`_analyse_numpy`, for numba."""
-    N, _, M = T.shape
-    k = offsets.shape[0] - 1
-    for item in prange(N):
-        union = np.zeros((6 * k, 6))
-        nu = 0
-        for i in range(k):
-            a, b = offsets[i], offsets[i + 1]
-            C = np.empty((b - a, 6))
-            for c in range(b - a):
-                norm = 0.0
-                for q in range(6):
-                    norm += T[item, q, a + c] * T[item, q, a + c]
-                norm = np.sqrt(norm) if norm > 0 else 1.0
-                for q in range(3):
-                    C[c, q] = T[item, q + 3, a + c] / norm
-                    C[c, q + 3] = T[item, q, a + c] / norm
-            kk = min(b - a, 6)
-            rd = np.zeros(kk)
-            Qt = np.eye(6)
-            _qrcp_one(C, True, rd, Qt)
-            r = 0
-            for j in range(kk):
-                if rd[j] > rtol * rd[0]:
-                    r += 1
-            counts[item, i] = 6 - r
-            for q in range(r, 6):
-                for col in range(6):
-                    union[nu, col] = Qt[q, col]
-                nu += 1
-        rd = np.zeros(6)
-        _qrcp_one(union[:nu].copy(), False, rd[: min(nu, 6)], Qt)
-        r = 0
-        for j in range(6):
-            sigma[item, j] = rd[j]
-            if rd[j] > rtol * rd[0]:
-                r += 1
-        ranks[item] = r
-
-
-def prange(n):  # replaced by numba.prange when compiled
-    return range(n)
-
-
-_COMPILED = {}
-
-
 def _analyse_numba(T: np.ndarray, offsets: tuple, rtol: float):
-    if "loop" not in _COMPILED:
-        import numba
+    """:func:`_analyse_numpy` as one compiled parallel loop (``screwsym._mobility_numba``)."""
+    from ._mobility_numba import analyse_loop
 
-        qr = numba.njit(cache=False)(_qrcp_one)
-        glb = dict(_analyse_loop.__globals__, _qrcp_one=qr, prange=numba.prange)
-        loop = type(_analyse_loop)(_analyse_loop.__code__, glb, "_analyse_loop")
-        _COMPILED["loop"] = numba.njit(parallel=True, cache=False)(loop)
     N = T.shape[0]
     k = len(offsets) - 1
     ranks = np.zeros(N, dtype=np.int64)
     counts = np.zeros((N, k), dtype=np.int64)
     sigma = np.zeros((N, 6))
-    _COMPILED["loop"](np.ascontiguousarray(T, dtype=np.float64),
-                      np.asarray(offsets, dtype=np.int64), rtol, ranks, counts, sigma)
+    analyse_loop(np.ascontiguousarray(T, dtype=np.float64),
+                 np.asarray(offsets, dtype=np.int64), rtol, ranks, counts, sigma)
     return ranks, counts, sigma
