@@ -76,6 +76,7 @@ __all__ = [
     "lambdify",
     "book",
     "codegen",
+    "mechanism_numeric",
     "numeric",
     "plot",
     # rigid motions (issue 10)
@@ -93,7 +94,7 @@ __all__ = [
 
 # Subpackages that pull in more (the book registry, code generation, plotting)
 # load on first use, so ``import screwsym`` stays light; ``dir`` lists them.
-_LAZY_MODULES = ("book", "cli", "codegen", "numeric", "plot")
+_LAZY_MODULES = ("book", "cli", "codegen", "mechanism_numeric", "numeric", "plot")
 
 
 def __dir__() -> list[str]:

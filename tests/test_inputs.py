@@ -238,7 +238,7 @@ def test_numpy_conversion_in_ray_order():
 
 
 def test_dir_and_all_list_every_public_name():
-    for name in ("lambdify", "book", "codegen", "numeric", "plot", "unit", "CommonNormal"):
+    for name in ("lambdify", "book", "codegen", "numeric", "plot", "mechanism_numeric", "unit", "CommonNormal"):
         assert name in screwsym.__all__ and name in dir(screwsym)
     for name in screwsym.__all__:
         assert getattr(screwsym, name) is not None
