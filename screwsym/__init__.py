@@ -43,6 +43,7 @@ from .screw import (
     unit,
 )
 from .system import ScrewSystem
+from .tidy import tidy
 from .transform import Transform
 from .twist import Twist
 from .vectors import vector
@@ -72,6 +73,7 @@ __all__ = [
     "is_coplanar",
     "common_normal",
     "power",
+    "tidy",
     "init_printing",
     "lambdify",
     "book",

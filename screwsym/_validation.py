@@ -546,3 +546,42 @@ def check_positive_float(value: Any, name: str) -> float:
     if not (0 < value < float("inf")):
         raise ValueError(f"{name}: expected a positive finite number, got {value}")
     return float(value)
+
+
+def check_tidy_input(value: Any, name: str) -> None:
+    """Raise ``TypeError`` unless ``value`` is something :func:`screwsym.tidy` works on.
+
+    That is a SymPy object or matrix, a number, or a tuple or list of these
+    (nested); strings are refused anywhere in it.
+
+    >>> check_tidy_input([1, (2,)], "expr")
+    >>> check_tidy_input({"x": 1}, "expr")
+    Traceback (most recent call last):
+    ...
+    TypeError: expr: expected a SymPy expression, matrix, screwsym object, or a tuple or list of them, got dict {'x': 1}
+    """
+    stack = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, (str, bytes)):
+            raise TypeError(f"{name}: strings are never evaluated, got {_describe(item)}")
+        if isinstance(item, (list, tuple)):
+            stack.extend(item)
+        elif not isinstance(item, (Basic, MatrixBase, int, float, np.number)):
+            raise TypeError(
+                f"{name}: expected a SymPy expression, matrix, screwsym object, "
+                f"or a tuple or list of them, got {_describe(item)}"
+            )
+
+
+def check_flag(value: Any, name: str) -> bool:
+    """Return ``value`` if it is a bool (``True`` or ``False``).
+
+    >>> check_flag(1, "tidy")
+    Traceback (most recent call last):
+    ...
+    TypeError: tidy: expected True or False, got int 1
+    """
+    if not isinstance(value, bool):
+        raise TypeError(f"{name}: expected True or False, got {_describe(value)}")
+    return value

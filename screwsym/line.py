@@ -11,11 +11,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Abs, Expr, Float, ImmutableMatrix, Rational, atan2, sign, sqrt
+from sympy import Abs, Eq, Expr, Float, ImmutableMatrix, Rational, atan2, nan, sign, sqrt
 
 from ._basic import ScrewsymBasic
 from ._decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
-from ._validation import check_line_parts, check_screw, check_vector
+from ._validation import check_choice, check_flag, check_line_parts, check_screw, check_vector
 from .screw import (
     Screw,
     ScrewLike,
@@ -24,6 +24,7 @@ from .screw import (
     _reciprocal_product,
     _require_axis,
 )
+from .tidy import CONDS, _finish, _piecewise, _vanishes
 
 __all__ = [
     "LineVector",
@@ -79,17 +80,23 @@ class LineVector(Screw, line_of=Screw):
         """Whether ``point`` lies on the line (1.8); see :func:`contains`."""
         return _contains(self, check_vector(point, "point"))
 
-    def mutual_moment(self, other: LineLike) -> Expr:
+    def mutual_moment(self, other: LineLike, *, tidy: bool = True) -> Expr:
         """The mutual moment with ``other`` (1.23); see :func:`mutual_moment`."""
-        return _reciprocal_product(self, check_screw(other, "other", LineVector))
+        return _reciprocal_product(
+            self, check_screw(other, "other", LineVector), check_flag(tidy, "tidy")
+        )
 
     def is_coplanar(self, other: LineLike) -> bool | None:
         """Whether the two lines are coplanar (1.27); see :func:`is_coplanar`."""
         return _is_coplanar(self, check_screw(other, "other", LineVector))
 
-    def common_normal(self, other: LineLike) -> CommonNormal:
+    def common_normal(self, other: LineLike, *, tidy: bool = True,
+                      conds: str = "none") -> CommonNormal:
         """The common normal to ``other`` (Fig. 1.3); see :func:`common_normal`."""
-        return _common_normal(self, check_screw(other, "other", LineVector), ("self", "other"))
+        return _common_normal(
+            self, check_screw(other, "other", LineVector), ("self", "other"),
+            check_flag(tidy, "tidy"), check_choice(conds, "conds", CONDS),
+        )
 
 
 def _contains(s: Screw, r: ImmutableMatrix, name: str | None = None) -> bool | None:
@@ -118,19 +125,23 @@ def contains(s: ScrewLike, point: VectorLike) -> bool | None:
     return _contains(check_screw(s, "s", Screw), check_vector(point, "point"), "s")
 
 
-def mutual_moment(l1: LineLike, l2: LineLike) -> Expr:
+def mutual_moment(l1: LineLike, l2: LineLike, *, tidy: bool = True) -> Expr:
     r"""The mutual moment of two lines, ``M = S1 . S02 + S2 . S01`` (1.23).
 
     It is the reciprocal product (1.45) of the two line vectors; for unit
     directions it equals ``-a12 sin(alpha12)`` (1.25), with ``a12`` and
-    ``alpha12`` from :func:`common_normal`.
+    ``alpha12`` from :func:`common_normal`.  In lowest terms (``tidy=False``:
+    as built); it holds for every value of the symbols.
 
     >>> from screwsym import LineVector, mutual_moment
     >>> x_axis = LineVector.from_axis([0, 0, 0], [1, 0, 0])
     >>> mutual_moment(x_axis, LineVector.from_axis([0, 0, 2], [0, 1, 0]))
     -2
     """
-    return _reciprocal_product(check_screw(l1, "l1", LineVector), check_screw(l2, "l2", LineVector))
+    return _reciprocal_product(
+        check_screw(l1, "l1", LineVector), check_screw(l2, "l2", LineVector),
+        check_flag(tidy, "tidy"),
+    )
 
 
 def _coplanar_scale(l1: Screw, l2: Screw) -> Expr:
@@ -236,10 +247,11 @@ def _exact(v: ImmutableMatrix) -> ImmutableMatrix:
     return v.xreplace({f: Rational(f) for f in v.atoms(Float)})
 
 
-def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str]) -> CommonNormal:
+def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = True,
+                   conds: str = "none") -> CommonNormal:
     tau = float_tau(*l1.as_matrix(), *l2.as_matrix())
     if tau is None or l1.free_symbols or l2.free_symbols:
-        return _common_normal_parts(l1.S, l1.S0, l2.S, l2.S0, None, names)
+        return _finish(_common_normal_parts(l1.S, l1.S0, l2.S, l2.S0, None, names, conds), tidy)
     # Float lines: decide by the float policy, compute exactly from the numbers given, round
     # once at the end (so nearly parallel lines get their true distance, not cancellation).
     # The moments are made exactly perpendicular to the directions first: a float line's
@@ -258,7 +270,7 @@ def _zero(q: Expr, scale: Expr, tau: Expr | None) -> bool | None:
     return is_zero(q) if tau is None else bool(Abs(q) <= tau * scale)
 
 
-def _common_normal_parts(S1, S01, S2, S02, tau, names) -> CommonNormal:
+def _common_normal_parts(S1, S01, S2, S02, tau, names, conds="none") -> CommonNormal:
     nn1, nn2 = S1.dot(S1), S2.dot(S2)
     p1, p2 = S1.cross(S01) / nn1, S2.cross(S02) / nn2  # the feet (1.16)
     d = p2 - p1
@@ -266,7 +278,8 @@ def _common_normal_parts(S1, S01, S2, S02, tau, names) -> CommonNormal:
     nn = n.dot(n)
     cos_part = S1.dot(S2)
     # parallel: |S1 x S2| against |S1||S2| (compared squared, so no root is taken)
-    if _zero(nn, nn1 * nn2, None if tau is None else tau**2) is True:
+    parallel = _zero(nn, nn1 * nn2, None if tau is None else tau**2)
+    if parallel is True:
         # both feet are perpendicular to the common direction, so d is the normal
         if _zero(norm(d), norm(p1) + norm(p2), tau) is True:
             raise ValueError(
@@ -278,22 +291,40 @@ def _common_normal_parts(S1, S01, S2, S02, tau, names) -> CommonNormal:
     n_len = sqrt(nn)
     m = -(S1.dot(S02) + S2.dot(S01))  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
     scale = sqrt(nn1) * norm(S02) + sqrt(nn2) * norm(S01)
-    intersecting = _zero(m, scale, tau) is True
+    met = _zero(m, scale, tau)
+    intersecting = met is True
     if intersecting:
         m = 0
     orientation = 1 if intersecting else sign(m)
     t1 = d.cross(S2).dot(n) / nn
     t2 = d.cross(S1).dot(n) / nn
-    return CommonNormal(
+    feet = (p1 + t1 * S1, p2 + t2 * S2)
+    generic = CommonNormal(
         Abs(m) / n_len,
         orientation * n / n_len,
         atan2(orientation * n_len, cos_part),
-        p1 + t1 * S1,
-        p2 + t2 * S2,
+        *feet,
     )
+    if conds != "piecewise" or tau is not None:
+        return generic
+    # The cases the symbols leave open, each right where its condition holds (Fig. 1.3).
+    branches = []
+    if parallel is None:
+        a12 = norm(d)
+        none = ImmutableMatrix([nan, nan, nan])
+        branches += [
+            ((nan, none, nan, none, none), _vanishes(n) & _vanishes(d)),  # coincident
+            ((a12, d / a12, atan2(0, cos_part), p1, p2), _vanishes(n)),  # parallel
+        ]
+    if met is None:
+        branches.append(((0, n / n_len, atan2(n_len, cos_part), *feet), Eq(m, 0)))
+    return CommonNormal(*(
+        _piecewise([(parts[i], c) for parts, c in branches], generic.args[i]) for i in range(5)
+    ))
 
 
-def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
+def common_normal(l1: LineLike, l2: LineLike, *, tidy: bool = True,
+                  conds: str = "none") -> CommonNormal:
     r"""The common normal of two lines: distance, unit normal, twist angle and feet.
 
     Explanation
@@ -312,9 +343,13 @@ def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
     foot point of line 1, and ``foot1`` the point of line 1 nearest the
     origin.  Coincident lines have no common normal and raise ``ValueError``.
 
-    With symbols the result is the generic one: it holds where the lines are
-    skew (``S1 x S2 != 0`` and ``M != 0``) unless the symbols decide
-    otherwise; ``a12`` contains ``Abs`` and the normal ``sign`` of ``-M``.
+    With symbols the result is the generic one, in lowest terms
+    (``tidy=False``: as built): it holds where the lines are skew
+    (``S1 x S2 != 0`` and ``M != 0``) unless the symbols decide otherwise;
+    ``a12`` contains ``Abs`` and the normal ``sign`` of ``-M``.  With
+    ``conds="piecewise"`` each part is a ``Piecewise`` over the cases the
+    symbols leave open, right for every value: coincident (``nan``),
+    parallel, intersecting (``M = 0``), skew.
     Floats follow the float policy for the parallel and intersecting cases,
     and the result is computed exactly from the numbers given and rounded
     once, so nearly parallel skew lines get their true distance.
@@ -328,6 +363,16 @@ def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
     >>> cn = common_normal(L1, L2)
     >>> cn.a12, cn.normal.T, cn.alpha12, cn.foot1.T, cn.foot2.T
     (2, Matrix([[0, 0, 1]]), pi/2, Matrix([[0, 0, 0]]), Matrix([[0, 0, 2]]))
+    >>> from sympy import symbols
+    >>> z = symbols("z", real=True)
+    >>> Lz = LineVector.from_axis([0, 0, z], [0, 1, 0])
+    >>> common_normal(L1, Lz).alpha12                      # generic: holds where z != 0
+    atan2(sign(z), 0)
+    >>> cn = common_normal(L1, Lz, conds="piecewise")
+    >>> cn.alpha12
+    Piecewise((pi/2, Eq(z, 0)), (atan2(sign(z), 0), True))
+    >>> cn.subs(z, 0).normal.T, cn.subs(z, 0).alpha12
+    (Matrix([[0, 0, 1]]), pi/2)
 
     See Also
     ========
@@ -336,4 +381,6 @@ def common_normal(l1: LineLike, l2: LineLike) -> CommonNormal:
     """
     l1 = check_screw(l1, "l1", LineVector)
     l2 = check_screw(l2, "l2", LineVector)
-    return _common_normal(l1, l2, ("l1", "l2"))
+    return _common_normal(
+        l1, l2, ("l1", "l2"), check_flag(tidy, "tidy"), check_choice(conds, "conds", CONDS)
+    )

@@ -33,11 +33,13 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from sympy import Expr, ImmutableMatrix, S, oo, zeros
+from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 
 from ._basic import ScrewsymBasic
-from ._decide import is_zero, is_zero_scaled, is_zero_vector, norm
+from ._decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
 from ._validation import (
+    check_choice,
+    check_flag,
     check_nonzero_vector,
     check_pitch,
     check_scalar,
@@ -45,6 +47,7 @@ from ._validation import (
     check_six,
     check_vector,
 )
+from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
 __all__ = [
     "Screw",
@@ -301,7 +304,7 @@ class Screw(ScrewsymBasic):
     @property
     def distance_to_origin(self) -> Expr:
         """Distance from the origin to the axis (1.18); see :func:`distance_to_origin`."""
-        return norm(_foot(self))
+        return _distance_to_origin(self)
 
     @property
     def direction_cosines(self) -> ImmutableMatrix:
@@ -312,21 +315,23 @@ class Screw(ScrewsymBasic):
         """``'line'``, ``'couple'``, ``'screw'``, ``'zero'`` or None; see :func:`classify`."""
         return _classify(self)
 
-    def decompose(self):
+    def decompose(self, *, tidy: bool = True):
         """Axis line vector plus parallel couple (1.37); see :func:`decompose`."""
-        return _decompose(self)
+        return _decompose(self, tidy=check_flag(tidy, "tidy"))
 
-    def unit(self):
+    def unit(self, *, tidy: bool = True):
         """The unit screw, normalised as in (1.5); see :func:`unit`."""
-        return _unit(self)
+        return _unit(self, tidy=check_flag(tidy, "tidy"))
 
-    def shift_origin(self, A: VectorLike):
+    def shift_origin(self, A: VectorLike, *, tidy: bool = True):
         """The same screw with its moment taken about ``A`` (1.32); see :func:`shift_origin`."""
-        return _shift_origin(self, check_vector(A, "A"))
+        return _shift_origin(self, check_vector(A, "A"), check_flag(tidy, "tidy"))
 
-    def reciprocal_product(self, other: ScrewLike) -> Expr:
+    def reciprocal_product(self, other: ScrewLike, *, tidy: bool = True) -> Expr:
         """``S1.S2^0 + S2.S1^0`` (1.45); see :func:`reciprocal_product`."""
-        return _reciprocal_product(self, check_screw(other, "other", Screw))
+        return _reciprocal_product(
+            self, check_screw(other, "other", Screw), check_flag(tidy, "tidy")
+        )
 
     def is_reciprocal(self, other: ScrewLike) -> bool | None:
         """Whether the reciprocal product vanishes; see :func:`is_reciprocal`."""
@@ -459,28 +464,57 @@ def _require_axis(s: Screw, what: str, name: str | None = None) -> None:
     raise ValueError(f"{prefix}a couple (0; C) has no {what}: its axis lies at infinity; got {s}")
 
 
-def _pitch(s: Screw, name: str | None = None) -> Expr:
+def _pitch(s: Screw, name: str | None = None, tidy: bool = True, conds: str = "none") -> Expr:
     if not s._pitch_is_zero and is_zero_vector(s.S) is True:
         if is_zero_vector(s.S0) is True:
             raise ValueError(f"{name + ': ' if name else ''}the zero screw (0; 0) has no pitch")
         return oo
-    return _pitch_formula(s)
+    h = _pitch_formula(s, tidy)
+    return _where_direction_vanishes(s, h, oo) if conds == "piecewise" else h
 
 
-def _pitch_formula(s: Screw) -> Expr:
+def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
     """``S . S0 / S . S`` (1.34), for a screw not known to be a couple.
 
     A line vector's pitch is 0 by its invariant, and a float screw whose
     ``S . S0`` is zero under the float policy has pitch exactly 0, as
-    :func:`classify` calls it a line.
+    :func:`classify` calls it a line.  Tidied, the quotient is cancelled:
+    ``S . S`` is a common factor whenever the dual part is ``r x S + h S``
+    (the cross term vanishes on expansion), which gives ``h``.
     """
     dot = s.S.dot(s.S0)
-    if s._pitch_is_zero or is_zero_scaled(dot, norm(s.S) * norm(s.S0)) is True:
+    if s._pitch_is_zero:
+        return S.Zero
+    if tidy and float_tau(dot) is None:
+        # exact: the quotient in lowest terms is 0 exactly when S . S0 expands to 0, so the
+        # zero test of the float policy below would only repeat the same expansion
+        return _finish(dot / s.S.dot(s.S))
+    if is_zero_scaled(dot, norm(s.S) * norm(s.S0)) is True:
         return S.Zero
     return dot / s.S.dot(s.S)
 
 
-def pitch(s: ScrewLike) -> Expr:
+def _known(cls: type, S_: ImmutableMatrix, S0_: ImmutableMatrix):
+    """``cls(S_, S0_)`` for parts derived from a checked screw by an operation that keeps
+    the kind's invariant identically (the axis moment ``S0 - h S`` has ``S . (S0 - h S) = 0``
+    (1.36); a shift of origin keeps ``S . S0``), so checking again would only re-prove it."""
+    return ScrewsymBasic.__new__(cls, S_, S0_)
+
+
+def _where_direction_vanishes(s: Screw, value, couple_value=nan):
+    """``value`` where ``S != 0``; ``couple_value`` where ``S = 0 != S0``; ``nan`` at (0; 0).
+
+    The ``conds="piecewise"`` form of a generic result: a ``Piecewise`` when
+    the symbols do not decide whether ``S`` vanishes (a line vector's ``S``
+    does not, by its invariant), else ``value`` itself.
+    """
+    if s._pitch_is_zero or s.free_symbols == set() or is_zero_vector(s.S) is not None:
+        return value
+    S_zero = _vanishes(s.S)
+    return _piecewise([(nan, S_zero & _vanishes(s.S0)), (couple_value, S_zero)], value)
+
+
+def pitch(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> Expr:
     r"""The pitch of a screw, ``h = S . S0 / S . S`` (1.34).
 
     Explanation
@@ -488,61 +522,105 @@ def pitch(s: ScrewLike) -> Expr:
 
     The pitch does not depend on the origin (1.33).  A couple ``(0; C)`` has
     infinite pitch and gives ``oo``; the zero screw has none and raises
-    ``ValueError``.  A line vector's pitch is 0.  With symbols the formula
-    is returned as it stands; it holds where ``S != 0``.
+    ``ValueError``.  A line vector's pitch is 0.  With symbols the result is
+    the formula in lowest terms (``tidy=False``: as built); it holds where
+    ``S != 0``.  With ``conds="piecewise"`` it is a ``Piecewise`` right for
+    every value of the symbols: ``oo`` where ``S = 0 != S0``, ``nan`` at the
+    zero screw, the formula elsewhere.
 
     Examples
     ========
 
-    >>> from screwsym import Screw, pitch
+    >>> from screwsym import Screw, pitch, vector
     >>> pitch(Screw([1, 0, 0], [1, 0, 0]))         # Example 1.2
     1
     >>> pitch([1, 1, 0, 1, 0, 0])                  # Example 1.4, as a 6-vector
     1/2
     >>> pitch(Screw.couple([0, 0, 1]))
     oo
+    >>> from sympy import symbols
+    >>> h, x = symbols("h x", real=True)
+    >>> pitch(Screw.from_axis(vector("r"), vector("S"), h))     # (1.38): S.S cancels
+    h
+    >>> pitch(Screw([x, 0, 0], [0, 0, 1]))                      # generic: holds where x != 0
+    0
+    >>> pitch(Screw([x, 0, 0], [0, 0, 1]), conds="piecewise")   # a couple at x = 0
+    Piecewise((oo, Eq(x, 0)), (0, True))
+
+    Parameters
+    ==========
+
+    s : Screw or 6-vector
+    tidy : bool
+        Return the result in lowest terms (default), or as built.
+    conds : {"none", "piecewise"}
+        ``"piecewise"``: the cases where ``S`` vanishes as a ``Piecewise``.
 
     See Also
     ========
 
-    axis, classify
+    axis, classify, screwsym.tidy.tidy
     """
-    return _pitch(check_screw(s, "s", Screw), "s")
+    return _pitch(
+        check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"),
+        check_choice(conds, "conds", CONDS),
+    )
 
 
-def _axis(s: Screw, name: str | None = None):
+def _axis(s: Screw, name: str | None = None, tidy: bool = True):
     _require_axis(s, "axis", name)
     if s._pitch_is_zero:
-        return Screw._line_class()._rebuild(s.S, s.S0, name or "s")
-    return Screw._line_class()(s.S, s.S0 - _pitch_formula(s) * s.S)
+        return _finish(Screw._line_class()._rebuild(s.S, s.S0, name or "s"), tidy)
+    if tidy:
+        return _known(Screw._line_class(), s.S, _axis_moment(s, True))
+    return Screw._line_class()(s.S, _axis_moment(s, False))
 
 
-def axis(s: ScrewLike):
+def _axis_moment(s: Screw, tidy: bool) -> ImmutableMatrix:
+    """The axis moment ``S0 - h S`` (1.36), with the pitch tidied first when ``tidy``."""
+    if s._pitch_is_zero:
+        return _finish(s.S0, tidy)
+    if tidy:
+        return _moment_minus(s.S0, _pitch_formula(s, True), s.S)
+    return s.S0 - _pitch_formula(s) * s.S
+
+
+def axis(s: ScrewLike, *, tidy: bool = True):
     r"""The axis of a screw as a line vector ``(S; S0 - h S)`` (1.36, 1.37).
 
     The axis has the screw's direction and pitch 0.  A couple has no axis in
-    finite space and raises ``ValueError``.
+    finite space and raises ``ValueError``.  With symbols the result holds
+    where ``S != 0``; it comes in lowest terms, the pitch cancelled first
+    (``tidy=False``: as built).
 
     Examples
     ========
 
-    >>> from screwsym import Screw, axis
+    >>> from sympy import symbols
+    >>> from screwsym import Screw, axis, vector
     >>> axis(Screw([1, 1, 0], [1, 0, 0]))           # Example 1.4
     LineVector([1, 1, 0], [1/2, -1/2, 0])
+    >>> h = symbols("h", real=True)
+    >>> axis(Screw.from_axis(vector("r"), [0, 0, 1], h))          # (S; r x S)
+    LineVector([0, 0, 1], [r_y, -r_x, 0])
     """
-    return _axis(check_screw(s, "s", Screw), "s")
+    return _axis(check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"))
 
 
-def _foot(s: Screw, name: str | None = None) -> ImmutableMatrix:
+def _foot(s: Screw, name: str | None = None, tidy: bool = True,
+          conds: str = "none") -> ImmutableMatrix:
     _require_axis(s, "foot point", name)
-    return s.S.cross(s.S0) / s.S.dot(s.S)
+    P = _finish(s.S.cross(s.S0) / s.S.dot(s.S), tidy)
+    return _where_direction_vanishes(s, P) if conds == "piecewise" else P
 
 
-def foot(s: ScrewLike) -> ImmutableMatrix:
+def foot(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> ImmutableMatrix:
     r"""The point of the line (or screw axis) nearest the origin, ``P = S x S0 / S.S`` (1.16).
 
     For a screw the same formula gives the foot of its axis, since
-    ``S x (h S) = 0`` (1.36).
+    ``S x (h S) = 0`` (1.36).  With symbols it holds where ``S != 0``, in
+    lowest terms (``tidy=False``: as built); ``conds="piecewise"`` gives
+    ``nan`` where ``S = 0`` (a couple's axis is at infinity).
 
     Examples
     ========
@@ -551,38 +629,73 @@ def foot(s: ScrewLike) -> ImmutableMatrix:
     >>> foot(LineVector.through([1, 2, 3], [1, 2, 4])).T
     Matrix([[1, 2, 0]])
     """
-    return _foot(check_screw(s, "s", Screw), "s")
+    return _foot(
+        check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"),
+        check_choice(conds, "conds", CONDS),
+    )
 
 
-def distance_to_origin(s: ScrewLike) -> Expr:
+def _distance_to_origin(s: Screw, name: str | None = None, tidy: bool = True,
+                        conds: str = "none") -> Expr:
+    if not tidy or float_tau(*s.as_matrix()) is not None:
+        d = norm(_foot(s, name, tidy=False))
+    else:
+        # The foot is S x S0' / S.S for the axis moment S0' = S0 - h S, and S . S0' = 0, so
+        # Lagrange's identity |S x S0'|^2 = |S|^2 |S0'|^2 - (S . S0')^2 gives |S0'| / |S|:
+        # short when the pitch cancels; else |S x S0| / S.S, the foot's length, is shorter.
+        _require_axis(s, "foot point", name)
+        if s._pitch_is_zero or _is_polynomial(_pitch_formula(s, True)):
+            d = _finish(norm(_axis_moment(s, True)) / norm(s.S))
+        else:
+            d = _finish(norm(_finish(s.S.cross(s.S0))) / s.S.dot(s.S))
+    return _where_direction_vanishes(s, d) if conds == "piecewise" else d
+
+
+def distance_to_origin(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> Expr:
     r"""Distance from the origin to the line or screw axis, ``|P|`` (1.17, 1.18).
 
-    Computed as ``|S x S0| / (S . S)``, which for a line vector equals the
-    book's ``|S0| / |S|`` (1.18).
+    Computed as the book's ``|S0| / |S|`` (1.18) for the axis line vector
+    ``(S; S0 - h S)``, which equals ``|S x S0| / (S . S)`` by Lagrange's
+    identity; ``tidy=False`` gives ``|S x S0 / S . S|`` as built.  With
+    symbols it holds where ``S != 0``; ``conds="piecewise"`` gives ``nan``
+    where ``S = 0``.
 
-    >>> from screwsym import LineVector, distance_to_origin
+    >>> from screwsym import LineVector, distance_to_origin, vector
     >>> distance_to_origin(LineVector.through([3, 4, 0], [3, 4, 1]))
     5
+    >>> distance_to_origin(LineVector(vector("S"), vector("S0")))
+    sqrt(S0_x**2 + S0_y**2 + S0_z**2)/sqrt(S_x**2 + S_y**2 + S_z**2)
     """
-    return norm(_foot(check_screw(s, "s", Screw), "s"))
+    return _distance_to_origin(
+        check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"),
+        check_choice(conds, "conds", CONDS),
+    )
 
 
-def _direction_cosines(s: Screw, name: str | None = None) -> ImmutableMatrix:
+def _direction_cosines(s: Screw, name: str | None = None, tidy: bool = True,
+                       conds: str = "none") -> ImmutableMatrix:
     _require_axis(s, "direction", name)
-    return s.S / norm(s.S)
+    dc = _finish(s.S / norm(s.S), tidy)
+    return _where_direction_vanishes(s, dc) if conds == "piecewise" else dc
 
 
-def direction_cosines(s: ScrewLike) -> ImmutableMatrix:
+def direction_cosines(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> ImmutableMatrix:
     r"""The direction cosines ``(l, m, n) = S / |S|`` (1.5).
+
+    With symbols it holds where ``S != 0``; ``conds="piecewise"`` gives
+    ``nan`` where ``S = 0``.
 
     >>> from screwsym import LineVector, direction_cosines
     >>> direction_cosines(LineVector.through([0, 0, 0], [2, 0, 0])).T
     Matrix([[1, 0, 0]])
     """
-    return _direction_cosines(check_screw(s, "s", Screw), "s")
+    return _direction_cosines(
+        check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"),
+        check_choice(conds, "conds", CONDS),
+    )
 
 
-def _unit(s: Screw, name: str | None = None):
+def _unit(s: Screw, name: str | None = None, tidy: bool = True):
     if is_zero_vector(s.S) is True:
         if is_zero_vector(s.S0) is True:
             prefix = f"{name}: " if name else ""
@@ -590,17 +703,18 @@ def _unit(s: Screw, name: str | None = None):
         n = norm(s.S0)
     else:
         n = norm(s.S)
-    return type(s)(s.S / n, s.S0 / n)
+    return _finish(type(s)(s.S / n, s.S0 / n), tidy)
 
 
-def unit(s: ScrewLike):
+def unit(s: ScrewLike, *, tidy: bool = True):
     r"""The unit screw: ``$ / |S|``, or ``$ / |S0|`` for a couple (1.5, Example 1.3).
 
     The book normalises a line vector or screw by the length of its direction
     part, so that ``S`` is a unit vector and the pitch is unchanged; a couple
     ``(0; C)`` is normalised by ``|C|``.  The zero screw raises ``ValueError``.
     With symbols, the generic result divides by ``|S|`` and holds where
-    ``S != 0``.  The kind (line vector, twist, wrench) is kept.
+    ``S != 0``.  The kind (line vector, twist, wrench) is kept.  The parts
+    come in lowest terms (``tidy=False``: as built).
 
     >>> from screwsym import Screw, unit
     >>> unit(Screw([0, 3, 4], [1, 0, 0]))
@@ -608,23 +722,28 @@ def unit(s: ScrewLike):
     >>> unit(Screw.couple([0, 0, -2]))
     Screw([0, 0, 0], [0, 0, -1])
     """
-    return _unit(check_screw(s, "s", Screw), "s")
+    return _unit(check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"))
 
 
-def _decompose(s: Screw, name: str | None = None):
+def _decompose(s: Screw, name: str | None = None, tidy: bool = True):
     _require_axis(s, "axis, so no line-plus-couple decomposition", name)
     general = s._combination_class()
-    h = _pitch_formula(s)
-    return general._line_class()(s.S, s.S0 - h * s.S), general(zeros(3, 1), h * s.S)
+    h = _pitch_formula(s, tidy)
+    if tidy:
+        line = _known(general._line_class(), s.S, _moment_minus(s.S0, h, s.S))
+    else:
+        line = general._line_class()(s.S, s.S0 - h * s.S)
+    return line, general(zeros(3, 1), h * s.S)
 
 
-def decompose(s: ScrewLike):
+def decompose(s: ScrewLike, *, tidy: bool = True):
     r"""Split a screw into its axis line vector and a parallel couple (1.37).
 
     ``(S; S0) = (S; S0 - h S) + (0; h S)``.  Returns the pair
     ``(line, couple)``; for a twist these are a rotation and a translation
     (both :class:`~screwsym.twist.Twist`), for a wrench a force and a couple
-    (both :class:`~screwsym.wrench.Wrench`).
+    (both :class:`~screwsym.wrench.Wrench`).  With symbols it holds where
+    ``S != 0``; the pitch is cancelled first (``tidy=False``: as built).
 
     >>> from screwsym import Screw, decompose
     >>> line, couple = decompose(Screw([1, 1, 0], [1, 0, 0]))
@@ -633,7 +752,7 @@ def decompose(s: ScrewLike):
     >>> line + couple
     Screw([1, 1, 0], [1, 0, 0])
     """
-    return _decompose(check_screw(s, "s", Screw), "s")
+    return _decompose(check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"))
 
 
 def _classify(s: Screw) -> str | None:
@@ -671,15 +790,19 @@ def classify(s: ScrewLike) -> str | None:
     return _classify(check_screw(s, "s", Screw))
 
 
-def _shift_origin(s: Screw, A: ImmutableMatrix):
+def _shift_origin(s: Screw, A: ImmutableMatrix, tidy: bool = True):
+    if tidy:
+        return _known(type(s), s.S, _finish(s.S0 - A.cross(s.S)))
     return type(s)(s.S, s.S0 - A.cross(s.S))
 
 
-def shift_origin(s: ScrewLike, A: VectorLike):
+def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True):
     r"""The same screw with its dual part taken about the point ``A`` (1.32).
 
     ``S^A = S^0 + AO x S = S^0 - A x S``, where ``A`` is the position of the
     new origin in the old frame.  ``S`` and the pitch do not change (1.33).
+    The result holds for every value of the symbols and comes in lowest
+    terms (``tidy=False``: as built).
 
     Examples
     ========
@@ -689,11 +812,13 @@ def shift_origin(s: ScrewLike, A: VectorLike):
     >>> shift_origin(s, [0, 1, 0])                   # A on the axis: (S; hS)
     Screw([1, 0, 0], [2, 0, 0])
     """
-    return _shift_origin(check_screw(s, "s", Screw), check_vector(A, "A"))
+    return _shift_origin(
+        check_screw(s, "s", Screw), check_vector(A, "A"), check_flag(tidy, "tidy")
+    )
 
 
-def _reciprocal_product(s1: Screw, s2: Screw) -> Expr:
-    return s1.S.dot(s2.S0) + s2.S.dot(s1.S0)
+def _reciprocal_product(s1: Screw, s2: Screw, tidy: bool = False) -> Expr:
+    return _finish(s1.S.dot(s2.S0) + s2.S.dot(s1.S0), tidy)
 
 
 def _is_reciprocal(s1: Screw, s2: Screw) -> bool | None:
@@ -701,12 +826,13 @@ def _is_reciprocal(s1: Screw, s2: Screw) -> bool | None:
     return is_zero_scaled(_reciprocal_product(s1, s2), scale)
 
 
-def reciprocal_product(s1: ScrewLike, s2: ScrewLike) -> Expr:
+def reciprocal_product(s1: ScrewLike, s2: ScrewLike, *, tidy: bool = True) -> Expr:
     r"""The reciprocal product ``$1 o $2 = S1 . S2^0 + S2 . S1^0`` (1.45).
 
     For two line vectors it is their mutual moment (1.23); for a twist and a
     wrench it is the power (see :func:`screwsym.wrench.power`).  It does not
-    depend on the origin (1.47).
+    depend on the origin (1.47).  It holds for every value of the symbols and
+    comes in lowest terms (``tidy=False``: as built).
 
     Examples
     ========
@@ -717,7 +843,9 @@ def reciprocal_product(s1: ScrewLike, s2: ScrewLike) -> Expr:
     >>> reciprocal_product([1, 1, 0, 1, 0, 0], [1, 1, 0, 1, 0, 0])
     2
     """
-    return _reciprocal_product(check_screw(s1, "s1", Screw), check_screw(s2, "s2", Screw))
+    return _reciprocal_product(
+        check_screw(s1, "s1", Screw), check_screw(s2, "s2", Screw), check_flag(tidy, "tidy")
+    )
 
 
 def is_reciprocal(s1: ScrewLike, s2: ScrewLike) -> bool | None:

@@ -11,7 +11,7 @@ from typing import Any
 
 from sympy import ImmutableMatrix, zeros
 
-from ._validation import check_nonzero_vector, check_vector
+from ._validation import check_flag, check_nonzero_vector, check_vector
 from .screw import Screw, VectorLike, _shift_origin
 
 __all__ = ["Twist"]
@@ -95,12 +95,14 @@ class Twist(Screw):
         )
         return cls.from_axis(point, omega, pitch)
 
-    def velocity_at(self, point: VectorLike) -> ImmutableMatrix:
+    def velocity_at(self, point: VectorLike, *, tidy: bool = True) -> ImmutableMatrix:
         r"""The velocity of the body point at ``point``: ``v_P = v_O + omega x P``.
 
-        This is the dual part of the twist taken about ``point`` (1.32).
+        This is the dual part of the twist taken about ``point`` (1.32), in
+        lowest terms (``tidy=False``: as built); it holds for every value of
+        the symbols.
 
         >>> Twist.rotation([0, 0, 1], point=[0, 0, 0]).velocity_at([1, 0, 0]).T
         Matrix([[0, 1, 0]])
         """
-        return _shift_origin(self, check_vector(point, "point")).S0
+        return _shift_origin(self, check_vector(point, "point"), check_flag(tidy, "tidy")).S0

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from sympy import Expr, ImmutableMatrix
 
-from ._validation import check_nonzero_vector, check_screw, check_vector
+from ._validation import check_flag, check_nonzero_vector, check_screw, check_vector
 from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
 from .twist import Twist
 
@@ -64,21 +64,27 @@ class Wrench(Screw):
         r = check_vector(point, "point")
         return cls(f, r.cross(f))
 
-    def moment_about(self, point: VectorLike) -> ImmutableMatrix:
-        r"""The moment of the wrench about ``point``: ``C_A = C_O - A x f`` (1.32)."""
-        return _shift_origin(self, check_vector(point, "point")).S0
+    def moment_about(self, point: VectorLike, *, tidy: bool = True) -> ImmutableMatrix:
+        r"""The moment of the wrench about ``point``: ``C_A = C_O - A x f`` (1.32).
+
+        In lowest terms (``tidy=False``: as built); it holds for every value of the symbols.
+        """
+        return _shift_origin(self, check_vector(point, "point"), check_flag(tidy, "tidy")).S0
 
 
-def power(twist: ScrewLike, wrench: ScrewLike) -> Expr:
+def power(twist: ScrewLike, wrench: ScrewLike, *, tidy: bool = True) -> Expr:
     r"""The power of a wrench on a body moving with a twist: ``omega . C_O + f . v_O``.
 
     It is the reciprocal product (1.45) of the twist and the wrench; it does
     not depend on the origin (1.47).  Zero power means the two are reciprocal.
+    It holds for every value of the symbols and comes in lowest terms
+    (``tidy=False``: as built).
 
     >>> from screwsym import Twist, Wrench, power
     >>> power(Twist.translation([1, 0, 0]), Wrench.force([3, 0, 0], point=[0, 0, 0]))
     3
     """
     return _reciprocal_product(
-        check_screw(twist, "twist", Twist), check_screw(wrench, "wrench", Wrench)
+        check_screw(twist, "twist", Twist), check_screw(wrench, "wrench", Wrench),
+        check_flag(tidy, "tidy"),
     )

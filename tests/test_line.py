@@ -226,3 +226,24 @@ def test_common_normal_convention_on_random_lines(p1, u1, p2, u2):
     if L1.S.cross(L2.S) == ImmutableMatrix([0, 0, 0]) and L1.contains(foot(L2)):
         return  # coincident
     check_common_normal_convention(L1, L2)
+
+
+# ---------------------------------------------------------- closed forms (issue 12)
+def test_common_normal_piecewise_holds_at_the_intersecting_case():
+    z = symbols("z", real=True)
+    L1 = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    Lz = LineVector.from_axis([0, 0, z], [0, 1, 0])
+    generic = common_normal(L1, Lz).subs(z, 0)  # the generic form holds only where z != 0
+    assert list(generic.normal) == [0, 0, 0]
+    cn = common_normal(L1, Lz, conds="piecewise").subs(z, 0)
+    assert cn == common_normal(L1, LineVector.from_axis([0, 0, 0], [0, 1, 0]))
+    assert list(cn.normal) == [0, 0, 1] and cn.alpha12 == pi / 2
+
+
+def test_distance_to_origin_is_the_axis_moment_over_the_direction():
+    r, S = vector("r"), vector("S")
+    L = LineVector.from_axis(r, S)
+    d = distance_to_origin(L)
+    assert d == sqrt(L.S0.dot(L.S0)) / sqrt(S.dot(S))  # (1.18) |S0| / |S|
+    assert cancel(expand(d**2 - distance_to_origin(L, tidy=False) ** 2)) == 0
+    assert mutual_moment(L, L) == 0

@@ -328,3 +328,33 @@ def test_classify_proves_nonzero_through_factors():
     m, n = symbols("m n", real=True)
     assert classify(Screw([l, m, n], [h * l, h * m, h * n])) == "screw"  # Example 1.1
     assert classify(Screw([l, m, n], [x * l, x * m, x * n])) is None  # x may be 0
+
+
+# ---------------------------------------------------------- closed forms (issue 12)
+def test_derived_quantities_come_in_lowest_terms():
+    h = symbols("h", real=True)
+    r, S = vector("r"), vector("S")
+    s = Screw.from_axis(r, S, h)
+    assert s.pitch == pitch(s) == h  # S.S cancels (1.34), (1.38)
+    assert s.axis == axis(s) == LineVector(S, r.cross(S))  # (1.36)
+    line, couple = decompose(s)
+    assert line == s.axis and couple == Screw([0, 0, 0], h * S)  # (1.37)
+    assert LineVector.through(vector("p"), vector("q")).pitch == 0
+    assert shift_origin(s, r) == Screw(S, h * S)  # the axis through the new origin
+
+
+def test_tidy_false_returns_the_raw_forms():
+    h = symbols("h", real=True)
+    s = Screw.from_axis(vector("r"), vector("S"), h)
+    raw = pitch(s, tidy=False)
+    assert raw != h and cancel(raw - h) == 0
+    assert axis(s, tidy=False) != axis(s) and axis(s, tidy=False).equals(axis(s))
+    assert is_zero_matrix(foot(s, tidy=False) - foot(s))
+
+
+def test_pitch_piecewise_is_oo_where_the_direction_vanishes():
+    s = Screw([x, 0, 0], [0, 0, 1])
+    assert pitch(s) == 0  # generic, holds where x != 0
+    assert pitch(s, conds="piecewise").subs(x, 0) == oo
+    assert pitch(s, conds="piecewise").subs(x, 2) == 0
+    assert pitch(Screw.couple([0, 0, 1]), conds="piecewise") == oo

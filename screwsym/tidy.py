@@ -1,0 +1,412 @@
+r"""Closed forms in lowest terms, cheaply: :func:`tidy`.
+
+Explanation
+===========
+
+The core operations of screwsym return their results *tidied*: cancelled and
+compact, as a reader would write them (``Screw.from_axis(r, S, h).pitch`` is
+``h``, not a 26-operation quotient).  The work is split in two:
+
+1. **What the construction knows**, used by the operations themselves before
+   any rewrite: a line vector's pitch is 0 by its invariant; ``S . S`` is a
+   common factor of the pitch when the dual part is ``r x S + h S`` (the cross
+   term vanishes on expansion), so the pitch is cancelled first and the axis
+   moment ``S0 - h S`` then needs no quotient at all; the distance of a screw
+   axis from the origin is ``|S0'| / |S|`` for the axis moment ``S0'``
+   (Lagrange's identity ``|S x S0'|^2 = |S|^2 |S0'|^2 - (S . S0')^2`` with
+   ``S . S0' = 0``); an axis or a shifted line keeps the kind's invariant
+   identically, so it is not proved again.
+2. **Cheap rewrites** of each expression: the form as built, its common
+   factors pulled out, its lowest terms (SymPy's polynomial rings: what
+   ``cancel`` computes, without ``cancel``'s extra passes), that with the
+   numerator's content and monomial factor pulled out over a compact
+   denominator, and, where ``sin(a)`` and ``cos(a)`` both occur, the same
+   reduced by ``sin(a)**2 + cos(a)**2 = 1``.  The smallest by ``count_ops``
+   wins (ties keep the earlier form).  The arguments of roots and functions
+   (``sqrt``, ``Abs``, ``sign``, ``atan2``, ``Piecewise`` branches) are
+   tidied first, bottom-up, and are generators for the rings.  Never a
+   blanket ``simplify``: its cost is unpredictable.
+
+Every rewrite is an identity of rational functions (and of ``sin``/``cos``),
+so a tidied result equals the raw one wherever the raw one is defined
+(lowest terms may remove a removable singularity, as ``cancel`` does).
+
+Cost is guarded: an expression with more than ``max_size`` nodes (see
+:func:`tidy`) comes back unchanged, and expressions with floating-point
+numbers are left as they are (rewriting would reorder rounding).  The core
+operations take ``tidy=False`` to return the raw result.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from sympy import (
+    Add,
+    And,
+    Basic,
+    Dummy,
+    Eq,
+    Expr,
+    Float,
+    ImmutableMatrix,
+    Mul,
+    Piecewise,
+    Pow,
+    Rational,
+    S,
+    cos,
+    count_ops,
+    factor,
+    sin,
+)
+from sympy.core.cache import cacheit
+from sympy.core.function import Application
+from sympy.core.sorting import default_sort_key
+from sympy.logic.boolalg import false
+from sympy.matrices import MatrixBase
+from sympy.polys.domains import QQ, ZZ
+from sympy.polys.monomials import monomial_min
+from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
+from sympy.polys.rings import ring
+
+from ._basic import ScrewsymBasic
+from ._validation import check_count, check_tidy_input
+
+__all__ = ["tidy"]
+
+#: expressions with more nodes than this come back unchanged (the rewrites grow faster)
+MAX_SIZE = 3000
+#: ``factor`` is tried only on denominators with at most this many nodes (it is the dear one)
+FACTOR_SIZE = 40
+
+
+def tidy(expr: Any, *, max_size: int = MAX_SIZE) -> Any:
+    r"""Bring ``expr`` to lowest terms and a compact form, without ``simplify``.
+
+    Explanation
+    ===========
+
+    Works on a SymPy expression, a matrix (entry by entry), a screwsym object
+    (a screw, a common normal, ... : part by part, keeping its class), and on
+    tuples and lists of these.  Each expression is brought to lowest terms
+    (as ``cancel``), its common factors are pulled out (as ``factor_terms``),
+    ``sin(a)**2 + cos(a)**2`` is reduced to 1, and the smallest form by
+    ``count_ops`` is kept, the expression as given among the candidates, so
+    the result is never larger.  It equals ``expr`` wherever ``expr`` is
+    defined.  The results of screwsym's own operations come tidied already
+    (module docstring); this is for a user's own expressions.
+
+    Expressions with more than ``max_size`` nodes, and expressions with
+    floats, come back unchanged.
+
+    Examples
+    ========
+
+    >>> from sympy import symbols
+    >>> from screwsym import Screw, tidy, vector
+    >>> h = symbols("h", real=True)
+    >>> r, S = vector("r"), vector("S")
+    >>> s = Screw.from_axis(r, S, h)
+    >>> tidy(S.dot(s.S0) / S.dot(S))                    # the pitch (1.34), as built
+    h
+    >>> x, y = symbols("x y", real=True)
+    >>> tidy((x**2 - y**2) / (x + y) + y)
+    x
+    >>> tidy([x*y + x*y**2, (x**2 - 1)/(x - 1)])
+    [x*y*(y + 1), x + 1]
+    >>> from sympy import cos, sin
+    >>> tidy((h*cos(x)**2 + y*sin(x)**2) / (sin(x)**2 + cos(x)**2))
+    h*cos(x)**2 + y*sin(x)**2
+
+    Parameters
+    ==========
+
+    expr : Expr, Matrix, screwsym object, or a tuple or list of these
+    max_size : int
+        Expressions with more nodes than this come back unchanged.
+
+    See Also
+    ========
+
+    sympy.polys.polytools.cancel, sympy.core.exprtools.factor_terms
+    """
+    check_tidy_input(expr, "expr")
+    return _tidy_any(expr, check_count(max_size, "max_size"))
+
+
+def _tidy_any(obj: Any, limit: int) -> Any:
+    if isinstance(obj, Expr) and not isinstance(obj, MatrixBase):
+        return _tidy_expr(obj, limit)
+    if isinstance(obj, MatrixBase):
+        return obj.applyfunc(lambda e: _tidy_expr(e, limit))
+    if isinstance(obj, ScrewsymBasic):
+        args = tuple(_tidy_any(a, limit) for a in obj.args)
+        if args == obj.args:
+            return obj
+        # Every part is equal to the one it replaces, so the object's invariants (a line
+        # vector's S.S0 = 0, ...) still hold: rebuild without validating again.
+        return Basic.__new__(type(obj), *args)
+    if isinstance(obj, list):
+        return [_tidy_any(o, limit) for o in obj]
+    if isinstance(obj, tuple) and not hasattr(obj, "_fields"):
+        return tuple(_tidy_any(o, limit) for o in obj)
+    return obj  # numbers, booleans, named tuples and other Basic objects: as they are
+
+
+def _size(e: Basic, limit: int) -> int:
+    """The number of nodes of ``e``, counted up to ``limit + 1``."""
+    n = 0
+    stack = [e]
+    while stack:
+        node = stack.pop()
+        n += 1
+        if n > limit:
+            break
+        stack.extend(node.args)
+    return n
+
+
+def _tidy_expr(e: Expr, limit: int) -> Expr:
+    if e.is_Atom or not e.free_symbols or e.has(Float):
+        return e
+    if _size(e, limit) > limit:
+        return e
+    return _rewrite(e)
+
+
+@cacheit
+def _rewrite(e: Expr) -> Expr:
+    """The smallest of the cheap rewrites of ``e`` (its inner functions tidied first)."""
+    e = _inside(e)
+    if not isinstance(e, (Add, Mul, Pow)):
+        return e
+    candidates = [e, _common_factor(e)]
+    if e.is_Add and all(a.is_Pow and a.exp.is_even for a in e.args) and not e.has(sin, cos):
+        return _smallest(candidates)  # a sum of squares: expanding it only grows it
+    # roots and functions (already tidied inside) become plain generators, so that the ring
+    # arithmetic below neither expands their arguments nor looks into them
+    frozen, thaw = _freeze(e)
+    try:
+        num, den = _together(frozen)
+        rational = den.free_symbols != set()
+        # sin(a)**2 + cos(a)**2 = 1 for the angles whose sine and cosine both occur
+        relations = _pythagoras(thaw)
+        P, D, *R = _to_ring([num, den, *relations])
+        forms = []
+        # reduced modulo the relations: nothing, the denominator, or both parts
+        for Pr, Dr in [(P, D)] + ([(P, D.rem(R)), (P.rem(R), D.rem(R))] if R else []):
+            if rational:
+                Pr, Q = Pr.cancel(Dr)
+                # lowest terms, expanded; then with the content and monomial factor of the
+                # numerator pulled out, over the denominator as built when nothing cancelled
+                compact_den = den if Q == D else _factored(Q.as_expr())
+                forms += [Pr.as_expr() / Q.as_expr(), _pulled(Pr) / compact_den]
+            else:
+                scale = Dr.as_expr()  # a number
+                forms += [Pr.as_expr() / scale, _pulled(Pr) / scale]
+        if rational:
+            forms.append(num / den)
+    except (PolynomialError, GeneratorsError, CoercionFailed):  # pragma: no cover
+        return _smallest(candidates)  # a form the polynomial rings refuse
+    candidates += [x.xreplace(thaw) for x in forms]
+    return _smallest(candidates)
+
+
+def _smallest(candidates: list) -> Expr:
+    """The candidate with the fewest operations (``count_ops``); the earliest among equals."""
+    costs = [count_ops(x) for x in candidates]
+    return candidates[costs.index(min(costs))]
+
+
+def _common_factor(e: Expr) -> Expr:
+    """``e`` with the factors common to all its terms pulled out, nothing expanded.
+
+    ``F*w*a + F*w*b`` becomes ``F*w*(a + b)``; the cheap part of ``factor_terms``.
+    """
+    if not e.is_Add:
+        return e
+    powers = [t.as_powers_dict() for t in e.args]
+    common = {}
+    for b, k in powers[0].items():
+        if b.is_number or not k.is_Integer or k <= 0:
+            continue
+        low = min(pw.get(b, 0) for pw in powers)
+        if low != 0 and low.is_Integer and low.is_positive:
+            common[b] = low
+    if not common:
+        return e
+    f = Mul(*(b**k for b, k in common.items()))
+    return f * Add(*(t / f for t in e.args))
+
+
+def _pythagoras(thaw: dict) -> list:
+    """``s**2 + c**2 - 1`` for every pair of frozen ``sin(a)``, ``cos(a)`` (dummies s, c)."""
+    sines = {x.args[0]: d for d, x in thaw.items() if isinstance(x, sin)}
+    cosines = {x.args[0]: d for d, x in thaw.items() if isinstance(x, cos)}
+    return [sines[a] ** 2 + cosines[a] ** 2 - 1 for a in sines if a in cosines]
+
+
+def _together(e: Expr) -> tuple[Expr, Expr]:
+    """Numerator and denominator of the rational expression ``e`` over a common denominator.
+
+    The denominator is the product of the distinct denominators met, each to its highest
+    power (compared as built, so ``(a**2 + 1)**2`` and ``a**2 + 1`` share their factor).
+    SymPy's ``together`` does this and then runs ``gcd_terms`` on every level, which was
+    half the cost of tidying; ``as_numer_denom`` skips the sharing, and its denominators
+    grow as products of repeated factors.
+    """
+    if e.is_Add:
+        parts = [_together(a) for a in e.args]
+        powers = [d.as_powers_dict() for _, d in parts]
+        common: dict = {}
+        for pw in powers:
+            for b, k in pw.items():
+                common[b] = max(common.get(b, 0), k)
+        num = Add(*(n * Mul(*(b ** (k - pw.get(b, 0)) for b, k in common.items()))
+                    for (n, _), pw in zip(parts, powers, strict=True)))
+        return num, Mul(*(b**k for b, k in common.items()))
+    if e.is_Mul:
+        parts = [_together(a) for a in e.args]
+        return Mul(*(n for n, _ in parts)), Mul(*(d for _, d in parts))
+    if e.is_Pow and e.exp.is_Integer:
+        n, d = _together(e.base)
+        return (n**e.exp, d**e.exp) if e.exp > 0 else (d ** -e.exp, n ** -e.exp)
+    return e, S.One
+
+
+def _freeze(e: Expr) -> tuple[Expr, dict]:
+    """``e`` with every maximal non-rational part (root, function) replaced by a ``Dummy``.
+
+    Returns the frozen expression and the map back.
+    """
+    parts: dict = {}
+
+    def walk(x):
+        if x.is_Symbol or x.is_Rational:
+            return x
+        if isinstance(x, (Add, Mul)) or isinstance(x, Pow) and x.exp.is_Integer:
+            return x.func(*(walk(a) for a in x.args))
+        if x not in parts:
+            parts[x] = Dummy(real=True)
+        return parts[x]
+
+    frozen = walk(e)
+    return frozen, {d: x for x, d in parts.items()}
+
+
+def _to_ring(exprs: list) -> list:
+    """The polynomial expressions ``exprs`` as elements of one ring over ZZ (or QQ).
+
+    ``sring`` would find the same ring by expanding every expression first; building the
+    elements by ring arithmetic from the expression tree is several times faster.
+    """
+    gens = sorted(set().union(*(e.free_symbols for e in exprs)), key=default_sort_key)
+    integral = all(r.is_Integer for e in exprs for r in e.atoms(Rational))
+    R = ring(gens, ZZ if integral else QQ)[0] if gens else None
+    if R is None:
+        raise GeneratorsError("no symbols")
+    return [R.from_expr(e) for e in exprs]
+
+
+def _pulled(P) -> Expr:
+    """The polynomial ``P`` (a ring element) as content times monomial times the rest.
+
+    What ``factor_terms`` does for an expanded polynomial, read off the ring
+    element instead of rediscovered from the expression (several times cheaper).
+    """
+    ring = P.ring
+    if not P:
+        return S.Zero
+    content, rest = P.primitive()
+    low = monomial_min(*rest.itermonoms())
+    if any(low):
+        rest = rest.quo_term((low, ring.domain.one))
+    monomial = Mul(*(g**k for g, k in zip(ring.symbols, low, strict=True)))
+    return ring.domain.to_sympy(content) * monomial * rest.as_expr()
+
+
+def _has_denominator(e: Expr) -> bool:
+    """Whether ``e`` divides by something with symbols (a negative power of such a base)."""
+    return any(p.exp.is_negative and p.base.free_symbols for p in e.atoms(Pow))
+
+
+def _factored(den: Expr) -> Expr:
+    """A small denominator factored (``cancel`` leaves it expanded), a large one as it is."""
+    if den.is_Add and _size(den, FACTOR_SIZE) <= FACTOR_SIZE:
+        try:
+            return factor(den)
+        except PolynomialError:  # pragma: no cover
+            return den
+    return den
+
+
+def _inside(e: Expr) -> Expr:
+    """``e`` with the arguments of its roots and functions tidied (the rational layer kept)."""
+    if e.is_Atom:
+        return e
+    if isinstance(e, (Add, Mul)):
+        args = [_inside(a) for a in e.args]
+        return e if all(a is b for a, b in zip(args, e.args, strict=True)) else e.func(*args)
+    if isinstance(e, Pow):
+        if e.exp.is_Integer:
+            base = _inside(e.base)
+            return e if base is e.base else Pow(base, e.exp)
+        return Pow(_rewrite(e.base) if e.base.free_symbols else e.base, e.exp)
+    if isinstance(e, Piecewise):
+        return Piecewise(*((_rewrite(v) if isinstance(v, Expr) else v, c) for v, c in e.args))
+    if isinstance(e, Application):
+        return e.func(*(_rewrite(a) if isinstance(a, Expr) else a for a in e.args))
+    return e
+
+
+# --------------------------------------------------------------------------
+# Helpers of the core operations: the tidy flag, and the conditions on request.
+# --------------------------------------------------------------------------
+
+#: the values of ``conds=``, SymPy's words (``integrate(..., conds=...)``)
+CONDS = ("none", "piecewise")
+
+
+def _finish(value: Any, flag: bool = True) -> Any:
+    """``value`` tidied when ``flag`` is set (the core operations' ``tidy=``)."""
+    return _tidy_any(value, MAX_SIZE) if flag else value
+
+
+def _is_polynomial(e: Expr) -> bool:
+    """Whether ``e`` has no symbolic denominator (a cancelled quotient is then a polynomial)."""
+    return not _has_denominator(e)
+
+
+def _moment_minus(S0, h: Expr, S) -> Any:
+    """``S0 - h S``, tidied: in full when ``h`` is a polynomial; else entry by entry only
+    with common factors pulled out, since with ``h = N/D`` in lowest terms the single
+    fractions ``(S0 D - N S)/D`` only grow (and proving so costs a gcd per entry)."""
+    value = S0 - h * S
+    if _is_polynomial(h):
+        return _finish(value)
+    return value.applyfunc(lambda e: _smallest([e, _common_factor(e)]))
+
+
+def _vanishes(v) -> Any:
+    """The condition that every entry of the column ``v`` is zero, as a SymPy Boolean."""
+    return And(*(Eq(e, 0) for e in v))
+
+
+def _piecewise(branches, default: Any) -> Any:
+    """``Piecewise`` of ``branches`` ((value, condition) pairs) then ``default``, entrywise.
+
+    The values are expressions or columns of the same shape (an expression
+    stands for a column of it); a column gives a column of ``Piecewise``.  Branches whose condition is ``False`` drop out.
+    """
+    branches = [(v, c) for v, c in branches if c is not false]
+    if not branches:
+        return default
+    if isinstance(default, MatrixBase):
+        return ImmutableMatrix(
+            default.shape[0], default.shape[1],
+            [_piecewise([(v[i] if isinstance(v, MatrixBase) else v, c) for v, c in branches],
+                        default[i])
+             for i in range(len(default))],
+        )
+    return Piecewise(*branches, (default, True))
