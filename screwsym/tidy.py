@@ -55,6 +55,7 @@ from sympy import (
     Pow,
     Rational,
     S,
+    Tuple,
     cos,
     count_ops,
     factor,
@@ -147,6 +148,9 @@ def _tidy_any(obj: Any, limit: int) -> Any:
         # Every part is equal to the one it replaces, so the object's invariants (a line
         # vector's S.S0 = 0, ...) still hold: rebuild without validating again.
         return Basic.__new__(type(obj), *args)
+    if isinstance(obj, Tuple):  # SymPy's tuple, as in the args of a chain
+        args = tuple(_tidy_any(a, limit) for a in obj.args)
+        return obj if args == obj.args else Tuple(*args)
     if isinstance(obj, list):
         return [_tidy_any(o, limit) for o in obj]
     if isinstance(obj, tuple) and not hasattr(obj, "_fields"):

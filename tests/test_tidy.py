@@ -275,3 +275,20 @@ def test_operations_check_tidy_and_conds():
         s.shift_origin(A, tidy="no")
     with pytest.raises(TypeError, match="tidy: expected True or False"):
         Twist.rotation(S, point=r).velocity_at(p, tidy=None)
+
+
+def test_tidy_on_rigid_motions_keeps_classes_and_values():
+    from screwsym import Chain, Transform
+
+    q1, q2 = symbols("q1 q2", real=True)
+    arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+                 Twist.from_axis([x, 0, 0], [0, 0, 1], h)],
+                Transform.translation([2 * x, 0, 0]))
+    assert type(tidy(arm)) is Chain and tidy(arm) == arm
+    T = arm.forward([q1, q2])
+    assert type(tidy(T)) is Transform
+    assert same_at_points(tidy(T).matrix, T.matrix)
+    J = arm.jacobian([q1, q2])
+    assert same_at_points(tidy(J), J)
+    rot = Transform.rotation([0, 0, 1], t)
+    assert tidy(rot) == rot  # already as small as it gets
