@@ -3,12 +3,12 @@
 Run from the repository root: ``python benchmarks/bench_closed_forms.py [--markdown]``.
 
 For each derivation of the corpus (the chapter's, generic screws from an axis, sums of screws,
-common normals of generic lines, twist velocities, ...) it reports the ``count_ops`` of
-screwsym's result (the operation as a user calls it, tidy by default), the ``count_ops`` of
-``sympy.simplify`` applied to the raw result (``tidy=False``), both times, and checks that the
-two results are equal (their difference is exactly zero after ``cancel`` at seeded rational
-points would be weaker; here each pair is compared by ``equals`` entry by entry, which must
-not be ``False``).  SymPy's cache is cleared before every timing.
+common normals of generic lines, twist velocities, ...) it reports the ``count_ops`` of the raw
+result (``tidy=False``), of screwsym's result (the operation as a user calls it, tidy by
+default) and of ``sympy.simplify`` applied entry by entry to the raw result, with the times of
+the tidy call, of the raw call and of ``simplify``.  SymPy's cache is cleared before each
+timed call.  Each tidy result is checked against the raw one entry by entry with SymPy's
+``equals`` (a pair that ``equals`` proves different is reported as a MISMATCH).
 
 Targets (issue 12): screwsym's result no larger than simplify's for at least 90 % of the items
 and never more than 1.5x; total time at most 0.1x of simplify's.
