@@ -389,7 +389,9 @@ def _moment_minus(S0, h: Expr, S) -> Any:
     value = S0 - h * S
     if _is_polynomial(h):
         return _finish(value)
-    return value.applyfunc(lambda e: _smallest([e, _common_factor(e)]))
+    return value.applyfunc(
+        lambda e: e if e.is_Atom or e.has(Float) else _smallest([e, _common_factor(e)])
+    )
 
 
 def _vanishes(v) -> Any:
@@ -401,7 +403,8 @@ def _piecewise(branches, default: Any) -> Any:
     """``Piecewise`` of ``branches`` ((value, condition) pairs) then ``default``, entrywise.
 
     The values are expressions or columns of the same shape (an expression
-    stands for a column of it); a column gives a column of ``Piecewise``.  Branches whose condition is ``False`` drop out.
+    stands for a column of it); a column gives a column of ``Piecewise``.
+    Branches whose condition is ``False`` drop out.
     """
     branches = [(v, c) for v, c in branches if c is not false]
     if not branches:
