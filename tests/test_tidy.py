@@ -3,6 +3,8 @@
 import random
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from sympy import (
     Abs,
     Eq,
@@ -292,3 +294,28 @@ def test_tidy_on_rigid_motions_keeps_classes_and_values():
     assert same_at_points(tidy(J), J)
     rot = Transform.rotation([0, 0, 1], t)
     assert tidy(rot) == rot  # already as small as it gets
+
+
+# ---------------------------------------------------------------- property: an identity, never larger
+def _combine(children):
+    pair = st.tuples(children, children)
+    return st.one_of(
+        pair.map(lambda ab: ab[0] + ab[1]),
+        pair.map(lambda ab: ab[0] * ab[1]),
+        pair.map(lambda ab: ab[0] / ab[1] if ab[1] != 0 else ab[0]),
+        st.tuples(children, st.integers(2, 3)).map(lambda ak: ak[0] ** ak[1]),
+    )
+
+
+RATIONAL_FUNCTIONS = st.recursive(
+    st.one_of(st.sampled_from([x, y, h]), st.integers(-3, 3).map(Rational)), _combine,
+    max_leaves=8,
+)
+
+
+@settings(max_examples=60, deadline=None)
+@given(RATIONAL_FUNCTIONS)
+def test_tidy_is_an_identity_and_never_larger(e):
+    tidied = tidy(e)
+    assert cancel(tidied - e) == 0  # exact for rational functions
+    assert count_ops(tidied) <= count_ops(e)
