@@ -319,3 +319,13 @@ def test_tidy_is_an_identity_and_never_larger(e):
     tidied = tidy(e)
     assert cancel(tidied - e) == 0  # exact for rational functions
     assert count_ops(tidied) <= count_ops(e)
+
+
+def test_tidy_on_a_screw_system_keeps_its_class():
+    from screwsym import ScrewSystem
+
+    system = ScrewSystem(Screw([1, 0, 0], [0, x * (x + 1) - x**2, 0]), Screw([0, 1, 0], [0, 0, 0]))
+    tidied = tidy(system)
+    assert type(tidied) is ScrewSystem
+    assert tidied.args[0] == Screw([1, 0, 0], [0, x, 0])
+    assert tidied.func(*tidied.args) == tidied
