@@ -124,8 +124,13 @@ def _e1_7(c):
     t = real("t")
     for lbl, pt in (("r = r1 + t S", r1 + t * S), ("r = r2 = r1 + S", r1 + S)):
         c.zero(f"(r - r1) x S at {lbl}", book_cross(pt - r1, line.S))
-        c.holds(f"contains(line, {lbl})", ss.contains(line, pt))
+        c.holds(f"contains(line, {lbl}) is True", ss.contains(line, pt) is True)
     c.nonzero("counter-example: r = r1 + S x w (off the line)", book_cross(book_cross(S, w), line.S))
+    N = ss.LineVector.from_axis([1, 2, 3], [2, -1, 1])
+    c.holds("contains(line through (1, 2, 3) along (2, -1, 1), (3, 1, 4)) is True",
+            ss.contains(N, [3, 1, 4]) is True)
+    c.holds("contains(the same line, (1, 2, 4)) is False (off the line)",
+            ss.contains(N, [1, 2, 4]) is False)
 
 
 @statement(
@@ -164,12 +169,21 @@ def _e1_9(c):
     "1.10", _SEC, "Orthogonality (Plücker) condition",
     r"\mathbf S\cdot\mathbf S_0=0",
     "identity",
-    """For the library's line through generic r1 along generic S, S . S0 vanishes;
-    the counter-example (S; S) is no line (its dot product is S . S != 0).""",
+    """For the library's line through generic r1 along generic S, S0 is r1 x S
+    (checked against the determinant expansion, which pins its sign) and S . S0
+    vanishes; the counter-example (S; S) is no line (its dot product is S . S != 0),
+    and the library refuses the line vector (1 2 3; 1 2 3).""",
 )
 def _e1_10(c):
     r1, S, r, w, line = _line_r1_S()
+    c.zero("S0 - r1 x S (1.9)", line.S0 - book_cross(r1, S))
     c.zero("S . S0", book_dot(line.S, line.S0))
+    try:
+        ss.LineVector([1, 2, 3], [1, 2, 3])
+        refused = False
+    except ValueError:
+        refused = True
+    c.holds("LineVector((1 2 3), (1 2 3)) is refused (S . S0 = 14)", refused)
     c.nonzero("counter-example: (S; S) has S . S0 = S . S", book_dot(S, S))
 
 
@@ -276,12 +290,14 @@ def _e1_14(c):
     "1.15", _SEC, "Orthogonality condition in components",
     r"LP+MQ+NR=0",
     "identity",
-    """(P, Q, R) the library's moment of the line through (x1, y1, z1) along (L, M, N);
-    L P + M Q + N R must vanish.""",
+    """(P, Q, R) the library's moment of the line through (x1, y1, z1) along (L, M, N),
+    checked against the determinant expansion of r1 x S (which pins its sign); L P +
+    M Q + N R must vanish.""",
 )
 def _e1_15(c):
     L, M, N, r1, S = _LMN()
     P, Q, R = ss.LineVector.from_axis(r1, S).S0
+    c.zero("(P, Q, R) - r1 x S", Matrix([P, Q, R]) - book_cross(r1, S))
     c.zero("L P + M Q + N R", L * P + M * Q + N * R)
 
 
@@ -381,7 +397,9 @@ def _e_s0zero(c):
     c.zero("S0", line.S0)
     c.zero("foot", ss.foot(line))
     c.zero("distance", ss.distance_to_origin(line))
-    c.holds("contains(line, O)", ss.contains(line, Z3))
+    c.holds("contains(line, O) is True", ss.contains(line, Z3) is True)
+    c.holds("contains((1 2 3; 0 0 0), (1, 0, 0)) is False",
+            ss.contains(ss.LineVector.from_axis(Z3, [1, 2, 3]), [1, 0, 0]) is False)
     r1 = vec("r1")
     c.nonzero("counter-example: line through r1 has S0 != 0", ss.LineVector.from_axis(r1, S).S0)
 

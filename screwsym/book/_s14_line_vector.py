@@ -25,7 +25,9 @@ def _e1_28(c):
     t = real("t")
     L = ss.LineVector.from_axis(r, S)
     c.zero("(r + t S) x S - S0", book_cross(r + t * S, S) - L.S0)
-    c.holds("contains(L, r + t S)", ss.contains(L, r + t * S))
+    c.holds("contains(L, r + t S) is True", ss.contains(L, r + t * S) is True)
+    c.holds("contains((1 0 0; 0 0 1), (0, 0, 0)) is False (the line is y = 1, z = 0)",
+            ss.contains(ss.LineVector([1, 0, 0], [0, 0, 1]), [0, 0, 0]) is False)
     c.zero("S . S0", book_dot(L.S, L.S0))
     c.nonzero("counter-example: (r + S x w) x S - S0", book_cross(r + book_cross(S, w), S) - L.S0)
     c.zero("-L has the same points: (r + t S) x (-S) - (-S0)", book_cross(r + t * S, (-L).S) - (-L).S0)

@@ -40,6 +40,10 @@ def _e1_31(c):
     except ValueError:
         refused = True
     c.holds("LineVector with S . S0 = 1 raises ValueError", refused)
+    c.holds("(1 0 0; 0 1 0), S . S0 = 0, is a line, not a screw",
+            ss.classify(ss.Screw([1, 0, 0], [0, 1, 0])) == "line")
+    c.holds("(0 0 0; 1 0 0), S = 0, is a couple, not a screw",
+            ss.classify(ss.Screw([0, 0, 0], [1, 0, 0])) == "couple")
 
 
 @statement(
@@ -68,11 +72,19 @@ def _e1_32(c):
     "1.33", _SEC, "S . S0 does not depend on the origin",
     r"\mathbf S\cdot\mathbf S^A=\mathbf S\cdot\mathbf S^0",
     "identity",
-    "S . shift_origin(s, a).S0 - S . S0 for a generic screw s and point a.",
+    """S . shift_origin(s, a).S0 - S . S0 for a generic screw s and point a. S^A is
+    pinned by an independent construction: the screw (S; p x S + h S) on the axis
+    through p, built by hand, has S^A = (p - a) x S + h S about a. A change of the
+    dual part that is not perpendicular to S (S0 + a) changes S . S0.""",
 )
 def _e1_33(c):
     S, S0, a, s = _screw()
     c.zero("S . S^A - S . S0", book_dot(S, ss.shift_origin(s, a).S0) - book_dot(S, S0))
+    p, h = vec("p"), real("h")
+    on_axis = ss.Screw(S, book_cross(p, S) + h * S)
+    c.zero("axis through p: S^A - ((p - a) x S + h S)",
+           ss.shift_origin(on_axis, a).S0 - (book_cross(p - a, S) + h * S))
+    c.nonzero("counter-example: S . (S0 + a) - S . S0 (a shift along S)", book_dot(S, S0 + a) - book_dot(S, S0))
 
 
 @statement(
@@ -113,8 +125,10 @@ def _e1_35(c):
     h = _book_pitch(S, S0)
     ax = ss.axis(s)
     c.zero("axis(s).S0 - (S0 - h S)", ax.S0 - (S0 - h * S))
+    c.zero("axis(s).S - S", ax.S - S)
     c.zero("S . (S0 - h S)", book_dot(S, ax.S0))
     line, couple = ss.decompose(s)
+    c.zero("decompose: line part - (S; S0 - h S)", line.as_matrix() - stack(S, S0 - h * S))
     c.zero("line + couple - s", (line + couple).as_matrix() - stack(S, S0))
 
 
@@ -132,7 +146,9 @@ def _e1_36(c):
     h = _book_pitch(S, S0)
     P = ss.foot(s)
     c.zero("(P + t S) x S - (S0 - h S)", book_cross(P + t * S, S) - (S0 - h * S))
-    c.holds("contains(s, P + t S)", ss.contains(s, P + t * S))
+    c.holds("contains(s, P + t S) is True", ss.contains(s, P + t * S) is True)
+    c.holds("contains((1 1 0; 1 0 0), O) is False (its axis is x = y, z = -1/2)",
+            ss.contains(ss.Screw([1, 1, 0], [1, 0, 0]), [0, 0, 0]) is False)
     c.zero("P - S x (S0 - h S)/(S . S)", P - book_cross(S, S0 - h * S) / book_dot(S, S))
     w = vec("w")
     c.nonzero("counter-example: r = P + S x w", book_cross(P + book_cross(S, w), S) - (S0 - h * S))
@@ -176,7 +192,10 @@ def _e1_38(c):
     c.zero("from_axis(r, S, h) - (S; r x S + h S)", s.as_matrix() - stack(S, book_cross(r, S) + h * S))
     c.zero("pitch - h", ss.pitch(s) - h)
     c.zero("axis(s).S0 - r x S", ss.axis(s).S0 - book_cross(r, S))
-    c.holds("contains(s, r)", ss.contains(s, r))
+    c.zero("axis(s).S - S", ss.axis(s).S - S)
+    c.holds("contains(s, r) is True", ss.contains(s, r) is True)
+    c.holds("contains(from_axis((1, 2, 3), (0, 1, 1), 2), (1, 2, 4)) is False",
+            ss.contains(ss.Screw.from_axis([1, 2, 3], [0, 1, 1], 2), [1, 2, 4]) is False)
     parts = ss.LineVector.from_axis(r, S) + ss.Screw.couple(h * S)
     c.zero("(S; S0) + (0; h S) - s", parts.as_matrix() - s.as_matrix())
 
@@ -207,6 +226,10 @@ def _e_classify(c):
     c.holds("symbolic (l m n; 0 0 0) is a line", ss.classify(ss.Screw([l, m, n], [0, 0, 0])) == "line")
     S, S0, a, s = _screw()
     c.zero("h (S . S) - S . S0", ss.pitch(s) * book_dot(S, S) - book_dot(S, S0))
+    c.holds("generic (S; S0): undecided (None), S might be 0 and S . S0 might vanish",
+            ss.classify(s) is None)
+    c.holds("(l m n; 0 0 p), l > 0, generic p: undecided (line when n p = 0)",
+            ss.classify(ss.Screw([l, m, n], [0, 0, real("p")])) is None)
 
 
 @statement(
@@ -222,8 +245,11 @@ def _ex1_1(c):
     s = ss.Screw(S, h * S)
     c.zero("pitch - h", ss.pitch(s) - h)
     c.zero("axis moment S0 - h S", ss.axis(s).S0)
+    c.zero("axis direction - S", ss.axis(s).S - S)
     c.zero("foot point", ss.foot(s))
-    c.holds("contains(s, O)", ss.contains(s, Z3))
+    c.holds("contains(s, O) is True", ss.contains(s, Z3) is True)
+    c.holds("contains((1 2 3; 2 4 6), (1, 0, 0)) is False (the axis is along (1, 2, 3))",
+            ss.contains(ss.Screw([1, 2, 3], [2, 4, 6]), [1, 0, 0]) is False)
 
 
 @statement(
@@ -239,8 +265,10 @@ def _ex1_2(c):
     s = ss.Screw([1, 0, 0], [1, 0, 0])
     c.zero("pitch - 1", ss.pitch(s) - 1)
     c.zero("axis moment", ss.axis(s).S0)
+    c.zero("axis direction - (1, 0, 0)", ss.axis(s).S - Matrix([1, 0, 0]))
     c.holds("classify == 'screw'", ss.classify(s) == "screw")
-    c.holds("axis is the X axis: contains (5, 0, 0)", ss.contains(s, [5, 0, 0]))
+    c.holds("axis is the X axis: contains (5, 0, 0)", ss.contains(s, [5, 0, 0]) is True)
+    c.holds("(0, 1, 0) is off the axis: contains is False", ss.contains(s, [0, 1, 0]) is False)
 
 
 @statement(
@@ -257,7 +285,9 @@ def _ex1_3(c):
     c.zero("S . S - 1", book_dot(s.S, s.S) - 1)
     c.zero("pitch - 1", ss.pitch(s) - 1)
     c.zero("axis moment", ss.axis(s).S0)
-    c.holds("axis contains (1, 1, 1)", ss.contains(s, [1, 1, 1]))
+    c.zero("axis direction - S", ss.axis(s).S - u)
+    c.holds("axis contains (1, 1, 1)", ss.contains(s, [1, 1, 1]) is True)
+    c.holds("(1, 1, 0) is off the axis: contains is False", ss.contains(s, [1, 1, 0]) is False)
 
 
 @statement(
@@ -277,6 +307,7 @@ def _ex1_4(c):
     half = Rational(1, 2)
     c.zero("pitch - 1/2", ss.pitch(s) - half)
     c.zero("axis moment - (1/2, -1/2, 0)", ss.axis(s).S0 - Matrix([half, -half, 0]))
+    c.zero("axis direction - (1, 1, 0)", ss.axis(s).S - Matrix([1, 1, 0]))
     c.zero("foot - (0, 0, -1/2)", ss.foot(s) - Matrix([0, 0, -half]))
     c.zero("(t, t, -1/2) x S - (1/2, -1/2, 0)", book_cross(Matrix([t, t, -half]), s.S) - Matrix([half, -half, 0]))
     c.zero("distance - 1/2", ss.distance_to_origin(s) - half)
