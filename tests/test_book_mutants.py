@@ -173,9 +173,8 @@ MUTANTS = {
         real, lambda a, b, d, n, al, f1, f2: (2 * d, n, al, f1, f2))),
     "common_normal parallel: normal reversed": ("common_normal", lambda real: _cn(
         real, lambda a, b, d, n, al, f1, f2: (d, -n if _parallel(a, b) else n, al, f1, f2))),
-    "common_normal parallel: feet at the foot points": ("common_normal", lambda real: _cn(
-        real, lambda a, b, d, n, al, f1, f2:
-        (d, n, al, *((_foot(a), _foot(b)) if _parallel(a, b) else (f1, f2))))),
+    "common_normal parallel: foot 2 slid along line 2": ("common_normal", lambda real: _cn(
+        real, lambda a, b, d, n, al, f1, f2: (d, n, al, f1, f2 + b.S if _parallel(a, b) else f2))),
     "common_normal parallel: alpha12 always 0": ("common_normal", lambda real: _cn(
         real, lambda a, b, d, n, al, f1, f2: (d, n, 0 if _parallel(a, b) else al, f1, f2))),
     "common_normal intersecting: normal reversed": ("common_normal", lambda real: _cn(
@@ -240,10 +239,280 @@ def _mutants_of(op):
 # --------------------------------------------------------------- declarations
 #: for an (entry, mutant) pair that the entry cannot see although it calls the
 #: mutant's operation: why.
-SURVIVES: dict[tuple[str, str], str] = {}
+_REFLECTED = ("every check relates the lines' own coordinates; the moment-flipped from_axis "
+              "builds the line through -r instead of r, a reflection of the whole figure in O "
+              "under which the statement is invariant; (1.9), (1.10), (1.15), (1.19) pin it")
+_PITCH_OF_AXIS = ("the pitch does not depend on the axis point, so from_axis with its moment "
+                  "flipped has the same pitch; (1.38) pins from_axis")
+SURVIVES: dict[tuple[str, str], str] = {
+    ("1.1", "through moment sign flipped"): "(1.1) is the direction S only; (1.9) pins the moment",
+    ("1.2", "through moment sign flipped"): "direction ratios only; (1.9) pins the moment",
+    ("1.3", "through moment sign flipped"): "direction only; (1.9) pins the moment",
+    ("1.4", "through points swapped"): "|S| = |AB| is symmetric in A and B",
+    ("1.4", "through moment sign flipped"): "|S| does not involve the moment",
+    ("1.5", "from_axis moment sign flipped"): "direction cosines depend on S only",
+    ("1.6", "from_axis moment sign flipped"): "direction cosines depend on S only",
+    ("1.6", "direction_cosines sign flipped"): "l^2 + m^2 + n^2 is even in (l, m, n); (1.5) "
+                                                "pins the sign",
+    ("Derivation of 1.16", "from_axis moment sign flipped"): _REFLECTED,
+    ("1.17", "from_axis moment sign flipped"): _REFLECTED,
+    ("1.18", "from_axis moment sign flipped"): "|S0|/|S| is even in S0",
+    ("Special case S0=0", "from_axis moment sign flipped"):
+        "the counter-example only asks that r1 x S does not vanish, true of -r1 x S too",
+    ("Homogeneity", "foot sign flipped"): "compares foot(lambda L) with foot(L): the same "
+                                          "wrong foot on both sides; (1.16) pins foot",
+    ("1.21", "common_normal alpha12 negated"): "(1.21) does not involve alpha12; (1.24) pins it",
+    ("1.24", "common_normal feet from line 1's foot"): "(1.24) does not involve the feet; "
+                                                       "(1.21), (1.25) pin them",
+    ("1.24", "common_normal feet swapped"): "(1.24) does not involve the feet; (1.21) pins them",
+    ("1.27", "mutual_moment sign flipped"): "(1.27) asks only whether M vanishes; (1.25) pins "
+                                            "its sign",
+    ("1.30", "from_axis moment sign flipped"): "S_A = S_B + AB x S holds for every line; (1.29) "
+                                               "pins the line's moment",
+    ("1.32", "from_axis pitch term negated"): "both sides of the pin are built with from_axis "
+                                              "and the same pitch; (1.38) pins the pitch term",
+    ("1.46", "from_axis pitch term negated"): "both sides of the pin are built with from_axis "
+                                              "and the same pitch; (1.38) pins the pitch term",
+    ("1.34", "from_axis moment sign flipped"): _PITCH_OF_AXIS,
+    ("1.34", "shift_origin the wrong way"): "the pitch is unchanged by any change of S0 "
+                                            "perpendicular to S; (1.32), (1.33) pin the shift",
+    ("1.34", "shift_origin does nothing"): "the pitch of the unshifted screw is the same; "
+                                           "(1.32), (1.33) pin the shift",
+    ("1.34", "couple sign flipped"): "the pitch of (0; -C) is oo as well",
+    ("Theorem 1.1", "pitch doubled"): "the theorem is about pitch zero or not; (1.34), (1.40) "
+                                      "pin the value",
+    ("Theorem 1.1", "pitch sign flipped"): "the theorem is about pitch zero or not; (1.34), "
+                                           "(1.40) pin the value",
+    ("Theorem 1.1", "from_axis moment sign flipped"): _REFLECTED,
+    ("Line vector plus couple", "from_axis moment sign flipped"): _PITCH_OF_AXIS,
+    ("1.44", "pitch doubled"): "compares pitch(mu s) with pitch(s); (1.34) pins pitch",
+    ("1.44", "pitch sign flipped"): "compares pitch(mu s) with pitch(s); (1.34) pins pitch",
+    ("1.44", "foot sign flipped"): "compares foot(mu s) with foot(s); (1.16) pins foot",
+    ("1.45", "from_axis moment sign flipped"): _REFLECTED,
+    ("1.54", "from_axis moment sign flipped"): _PITCH_OF_AXIS,
+    ("1.57", "from_axis moment sign flipped"): "the axis through O is unchanged, and the "
+                                               "counter-example only asks for a non-zero value",
+}
 
-#: entry id -> the mutants it must kill (filled in below, checked by the tests)
-KILLS: dict[str, tuple[str, ...]] = {}
+#: entry id -> the mutants it must kill (each checked by the tests below)
+KILLS: dict[str, tuple[str, ...]] = {
+    '1.1': ('through points swapped',),
+    '1.2': ('through points swapped',),
+    '1.3': ('through points swapped',),
+    '1.4': ('direction_cosines not normalised', 'direction_cosines sign flipped'),
+    '1.5': ('direction_cosines not normalised', 'direction_cosines sign flipped'),
+    '1.6': ('direction_cosines not normalised',),
+    '1.7': ('contains always False', 'contains always True', 'from_axis moment sign flipped'),
+    '1.8': ('from_axis moment sign flipped',),
+    '1.9': (
+        'from_axis moment sign flipped', 'through moment sign flipped', 'through points swapped',
+    ),
+    '1.10': ('from_axis moment sign flipped',),
+    'Homogeneity': (
+        'foot not divided by S.S', 'from_axis moment sign flipped', 'scale leaves the dual part',
+    ),
+    '1.11': ('from_axis moment sign flipped',),
+    '1.12': ('from_axis moment sign flipped',),
+    '1.13': ('from_axis moment sign flipped',),
+    '1.14': ('from_axis moment sign flipped',),
+    '1.15': ('from_axis moment sign flipped',),
+    'Derivation of 1.16': ('foot not divided by S.S', 'foot sign flipped'),
+    '1.16': ('foot not divided by S.S', 'foot sign flipped', 'from_axis moment sign flipped'),
+    '1.17': ('foot not divided by S.S', 'foot sign flipped'),
+    '1.18': ('distance_to_origin not divided by |S|', 'distance_to_origin squared'),
+    'Special case S0=0': ('contains always False', 'contains always True'),
+    'Special case S=0': (
+        'classify always screw', 'classify line and couple swapped', 'pitch sign flipped',
+        'scale leaves the dual part', 'shift_origin adds A',
+    ),
+    '1.19': ('from_axis moment sign flipped',),
+    '1.20': ('from_axis moment sign flipped',),
+    '1.21': (
+        'common_normal a12 doubled', "common_normal drops line 1's position",
+        "common_normal feet from line 1's foot", 'common_normal feet swapped',
+        'common_normal normal reversed', 'from_axis moment sign flipped',
+        'mutual_moment drops S2.S01', 'mutual_moment sign flipped',
+    ),
+    '1.22': (
+        'from_axis moment sign flipped', 'mutual_moment drops S2.S01', 'mutual_moment sign flipped',
+    ),
+    '1.23': (
+        'from_axis moment sign flipped', 'mutual_moment drops S2.S01', 'mutual_moment sign flipped',
+    ),
+    '1.24': (
+        'common_normal a12 doubled', 'common_normal alpha12 negated',
+        "common_normal drops line 1's position", 'common_normal normal reversed',
+        'from_axis moment sign flipped',
+    ),
+    '1.25': (
+        'common_normal a12 doubled', 'common_normal alpha12 negated',
+        "common_normal drops line 1's position", "common_normal feet from line 1's foot",
+        'common_normal feet swapped', 'common_normal normal reversed',
+        'from_axis moment sign flipped', 'mutual_moment drops S2.S01', 'mutual_moment sign flipped',
+    ),
+    '1.26': ('mutual_moment drops S2.S01', 'mutual_moment sign flipped'),
+    '1.27': (
+        'common_normal a12 doubled', 'common_normal alpha12 negated',
+        "common_normal drops line 1's position", "common_normal feet from line 1's foot",
+        'common_normal feet swapped', 'common_normal intersecting: feet at the foot points',
+        'common_normal intersecting: normal reversed', 'common_normal normal reversed',
+        'common_normal parallel: alpha12 always 0',
+        'common_normal parallel: foot 2 slid along line 2',
+        'common_normal parallel: normal reversed', 'from_axis moment sign flipped',
+        'is_coplanar always False', 'is_coplanar always True', 'mutual_moment drops S2.S01',
+    ),
+    '1.28': (
+        'contains always False', 'contains always True', 'from_axis moment sign flipped',
+        'neg keeps the dual part',
+    ),
+    '1.29': (
+        'from_axis moment sign flipped', 'shift_origin adds A', 'shift_origin does nothing',
+        'shift_origin the wrong way',
+    ),
+    '1.30': ('shift_origin adds A', 'shift_origin does nothing', 'shift_origin the wrong way'),
+    'Fig. 1.5': ('from_axis moment sign flipped', 'mutual_moment sign flipped'),
+    '1.31': ('classify always screw', 'classify line and couple swapped'),
+    '1.32': (
+        'Wrench.force moment sign flipped', 'from_axis moment sign flipped', 'shift_origin adds A',
+        'shift_origin does nothing', 'shift_origin the wrong way',
+    ),
+    '1.33': ('shift_origin adds A', 'shift_origin does nothing', 'shift_origin the wrong way'),
+    '1.34': (
+        'couple in the primary part', 'from_axis pitch term negated', 'pitch doubled',
+        'pitch sign flipped', 'shift_origin adds A',
+    ),
+    '1.35': (
+        'add subtracts the dual parts', 'axis direction reversed', 'axis moment negated',
+        'decompose couple negated', 'decompose parts swapped',
+    ),
+    '1.36': (
+        'contains always False', 'contains always True', 'foot not divided by S.S',
+        'foot sign flipped',
+    ),
+    '1.37': ('add subtracts the dual parts', 'decompose couple negated', 'decompose parts swapped'),
+    '1.38': (
+        'add subtracts the dual parts', 'axis direction reversed', 'axis moment negated',
+        'contains always False', 'contains always True', 'couple in the primary part',
+        'couple sign flipped', 'from_axis moment sign flipped', 'from_axis pitch term negated',
+        'pitch doubled', 'pitch sign flipped',
+    ),
+    'Classification': (
+        'classify always screw', 'classify line and couple swapped', 'classify never undecided',
+        'classify zero as couple', 'pitch doubled', 'pitch sign flipped',
+    ),
+    'Example 1.1': (
+        'axis direction reversed', 'contains always False', 'contains always True', 'pitch doubled',
+        'pitch sign flipped',
+    ),
+    'Example 1.2': (
+        'axis direction reversed', 'contains always False', 'contains always True', 'pitch doubled',
+        'pitch sign flipped',
+    ),
+    'Example 1.3': (
+        'axis direction reversed', 'contains always False', 'contains always True',
+        'couple in the primary part', 'couple sign flipped', 'pitch doubled', 'pitch sign flipped',
+        'unit not normalised',
+    ),
+    'Example 1.4': (
+        'axis direction reversed', 'axis moment negated', 'distance_to_origin not divided by |S|',
+        'distance_to_origin squared', 'foot not divided by S.S', 'foot sign flipped',
+        'pitch doubled', 'pitch sign flipped', 'scale leaves the dual part',
+    ),
+    '1.39': ('add subtracts the dual parts',),
+    'Theorem 1.1': (
+        'add subtracts the dual parts', 'classify always screw', 'classify line and couple swapped',
+        'mutual_moment drops S2.S01', 'mutual_moment sign flipped',
+    ),
+    '1.40': (
+        'add subtracts the dual parts', 'from_axis moment sign flipped',
+        'mutual_moment drops S2.S01', 'mutual_moment sign flipped', 'pitch doubled',
+        'pitch sign flipped', 'reciprocal_product drops S2.S01', 'reciprocal_product sign flipped',
+    ),
+    'Theorem 1.2': (
+        'add subtracts the dual parts', 'classify always screw', 'classify zero as couple',
+        'contains always False', 'contains always True', 'from_axis moment sign flipped',
+    ),
+    '1.41': (
+        'add subtracts the dual parts', 'contains always False', 'contains always True',
+        'from_axis moment sign flipped',
+    ),
+    '1.42': ('contains always False', 'contains always True', 'from_axis moment sign flipped'),
+    '1.43': ('add subtracts the dual parts', 'from_axis moment sign flipped'),
+    'Line vector plus couple': (
+        'add subtracts the dual parts', 'classify always screw', 'classify line and couple swapped',
+        'couple in the primary part', 'couple sign flipped', 'pitch doubled', 'pitch sign flipped',
+    ),
+    'Theorem 1.3': (
+        'add subtracts the dual parts', 'classify always screw', 'classify line and couple swapped',
+        'classify zero as couple', 'couple in the primary part', 'couple sign flipped',
+    ),
+    '1.44': (
+        'classify always screw', 'classify zero as couple', 'foot not divided by S.S',
+        'scale leaves the dual part',
+    ),
+    '1.45': (
+        'Wrench.force moment sign flipped', 'add subtracts the dual parts',
+        'couple in the primary part', 'couple sign flipped', 'is_reciprocal always False',
+        'is_reciprocal always True', 'mutual_moment drops S2.S01', 'mutual_moment sign flipped',
+        'pitch doubled', 'pitch sign flipped', 'power drops omega.C_O',
+        'power sign of f.v_O flipped', 'reciprocal_product drops S2.S01',
+        'reciprocal_product sign flipped', 'velocity_at sign of omega x P flipped',
+    ),
+    '1.46': (
+        'from_axis moment sign flipped', 'shift_origin adds A', 'shift_origin does nothing',
+        'shift_origin the wrong way',
+    ),
+    '1.47': (
+        'reciprocal_product drops S2.S01', 'reciprocal_product sign flipped', 'shift_origin adds A',
+        'shift_origin does nothing', 'shift_origin the wrong way',
+    ),
+    '1.48': (
+        'Twist.rotation moment sign flipped', 'from_axis magnitude only on S',
+        'from_axis moment sign flipped',
+    ),
+    '1.49': (
+        'from_axis magnitude only on S', 'from_axis moment sign flipped',
+        'velocity_at sign of omega x P flipped',
+    ),
+    '1.50': ('from_axis magnitude only on S', 'from_axis moment sign flipped'),
+    '1.51': ('from_axis magnitude only on S', 'from_axis moment sign flipped'),
+    'Translation twist': ('Twist.translation parts swapped', 'shift_origin adds A'),
+    '1.52': (
+        'Twist.screw_motion pitch negated', 'Twist.translation parts swapped',
+        'add subtracts the dual parts', 'from_axis magnitude only on S',
+        'from_axis moment sign flipped', 'from_axis pitch term negated',
+    ),
+    '1.53': (
+        'from_axis magnitude only on S', 'from_axis moment sign flipped',
+        'from_axis pitch term negated', 'velocity_at sign of omega x P flipped',
+    ),
+    '1.54': (
+        'from_axis magnitude only on S', 'from_axis pitch term negated', 'pitch doubled',
+        'pitch sign flipped',
+    ),
+    '1.55': ('Wrench.force moment sign flipped', 'moment_about sign of A x f flipped'),
+    '1.56': ('Wrench.force moment sign flipped', 'add subtracts the dual parts'),
+    'Wrench decomposition': (
+        'add subtracts the dual parts', 'couple in the primary part', 'couple sign flipped',
+        'decompose couple negated', 'decompose parts swapped', 'from_axis magnitude only on S',
+        'from_axis moment sign flipped', 'from_axis pitch term negated',
+    ),
+    '1.57': ('from_axis magnitude only on S', 'from_axis pitch term negated'),
+    '1.58': (
+        'from_axis magnitude only on S', 'from_axis moment sign flipped',
+        'from_axis pitch term negated', 'moment_about sign of A x f flipped', 'pitch doubled',
+        'pitch sign flipped',
+    ),
+    'Counting: lines': ('foot sign flipped', 'from_axis moment sign flipped'),
+    'Counting: unit line vectors': (
+        'foot sign flipped', 'from_axis moment sign flipped', 'neg keeps the dual part',
+    ),
+    'Counting: unit screws': ('from_axis moment sign flipped', 'from_axis pitch term negated'),
+    'Counting: screws': (
+        'from_axis moment sign flipped', 'from_axis pitch term negated',
+        'scale leaves the dual part',
+    ),
+}
 
 
 # ------------------------------------------------------------------- tracing
@@ -275,7 +544,7 @@ def _answer(fn, args, kwargs):
         return ("raised", type(exc).__name__)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _visible() -> dict[str, frozenset[str]]:
     """For each entry, the mutants that change an answer its construction gets.
 

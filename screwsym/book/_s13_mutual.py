@@ -9,10 +9,10 @@ from ._common import (
     book_dot,
     canonical_pair,
     generic_lines,
+    placed_pair,
     real,
     ss,
     vec,
-    placed_pair,
 )
 from ._registry import statement
 
@@ -126,8 +126,8 @@ def _e1_23(c):
     cos of alpha; S2 x S1 + a12 sin alpha12 = 0. Generic placement (line 1 through a
     generic p along (k, 0, 0), line 2 through a generic q along a generic w, neither
     direction a unit vector): S1 x S2 = |S1||S2| sin(alpha12) a12 and
-    S1 . S2 = |S1||S2| cos(alpha12). The reversed convention (normal from 2 to 1)
-    fails.""",
+    S1 . S2 = |S1||S2| cos(alpha12), and the normal points from line 1 to line 2
+    ((q - p) . a12 = a12). The reversed convention (normal from 2 to 1) fails.""",
     errata=(_CONVENTION,),
 )
 def _e1_24(c):
@@ -144,6 +144,8 @@ def _e1_24(c):
     c.zero("generic: S1 x S2 - |S1||S2| sin(alpha12) a12",
            book_cross(G1.S, w) - n1 * n2 * sin(g.alpha12) * g.normal)
     c.zero("generic: S1 . S2 - |S1||S2| cos(alpha12)", book_dot(G1.S, w) - n1 * n2 * cos(g.alpha12))
+    c.zero("generic: a12 points from line 1 to line 2, (q - p) . a12 - a12",
+           book_dot(q - p, g.normal) - g.a12)
     c.nonzero("counter-example: reversed convention, S2 x S1 - a12 sin(alpha12)",
               book_cross(L2.S, L1.S) - cn.normal * sin(cn.alpha12), at={a12: 1, alpha: pi / 2},
               book=True)
@@ -157,7 +159,8 @@ def _e1_24(c):
     a12, alpha12 from common_normal, and M = (foot2 - foot1) . S2 x S1 with the feet of
     common_normal. Generic placement (line 1 through a generic p along (k, 0, 0), line
     2 through a generic q along a generic w): M = -|S1||S2| a12 sin(alpha12), a12 >= 0,
-    M = (foot2 - foot1) . S2 x S1 with the feet from common_normal, and
+    M = (foot2 - foot1) . S2 x S1 with the feet from common_normal (each on its
+    line), and
     common_normal(L2, L1) (the reversed convention, applied consistently) gives the
     same M. The mixed convention (+a12 sin alpha12) and the unit formula on non-unit
     directions fail.""",
@@ -179,6 +182,8 @@ def _e1_25(c):
     c.zero("generic: M - (foot2 - foot1) . S2 x S1",
            MG - book_dot(g.foot2 - g.foot1, book_cross(w, G1.S)))
     c.zero("generic: foot2 - foot1 - a12 a12", g.foot2 - g.foot1 - g.a12 * g.normal)
+    c.zero("generic: foot 1 on line 1", book_cross(g.foot1 - p, G1.S))
+    c.zero("generic: foot 2 on line 2", book_cross(g.foot2 - q, w))
     r = ss.common_normal(G2, G1)
     c.zero("generic, lines swapped: M + |S1||S2| a21 sin(alpha21)", MG + nn * r.a12 * sin(r.alpha12))
     c.nonzero("counter-example: the opposite sign, M - a12 sin(alpha12)",

@@ -276,13 +276,17 @@ def _ex1_2(c):
     r"\tfrac{1}{\sqrt3}(1\ 1\ 1;\ 1\ 1\ 1):\ |\mathbf S|=1,\ h=1,\ \text{axis through } O"
     r"\text{ along } (1\ 1\ 1)",
     "numeric",
-    """s = Screw((1,1,1)/sqrt3, (1,1,1)/sqrt3): |S|^2 = 1, pitch 1, axis moment 0, and the
-    axis contains (1, 1, 1).""",
+    """s = Screw((1,1,1)/sqrt3, (1,1,1)/sqrt3): |S|^2 = 1, it is unit((1 1 1; 1 1 1)),
+    pitch 1, axis moment 0, and the axis contains (1, 1, 1) but not (1, 1, 0). A couple
+    is normalised by |S0| instead.""",
 )
 def _ex1_3(c):
     u = Matrix([1, 1, 1]) / sqrt(3)
     s = ss.Screw(u, u)
     c.zero("S . S - 1", book_dot(s.S, s.S) - 1)
+    c.zero("unit((1 1 1; 1 1 1)) - s", ss.unit(ss.Screw([1, 1, 1], [1, 1, 1])).as_matrix() - s.as_matrix())
+    c.zero("unit of the couple (0; 0 0 -2) is (0; 0 0 -1)",
+           ss.unit(ss.Screw.couple([0, 0, -2])).as_matrix() - Matrix([0, 0, 0, 0, 0, -1]))
     c.zero("pitch - 1", ss.pitch(s) - 1)
     c.zero("axis moment", ss.axis(s).S0)
     c.zero("axis direction - S", ss.axis(s).S - u)
