@@ -51,7 +51,7 @@ def stack(S, S0) -> ImmutableMatrix:
 
 
 def canonical_pair():
-    """The canonical pair of unit lines of Section 2 of the transcription, via the library.
+    """The canonical pair of unit lines (Section 1.3 of the book), via the library.
 
     Line 1 is the X axis; line 2 passes through ``a12 k`` along
     ``(cos alpha12, sin alpha12, 0)``.  Returns ``(L1, L2, a12, alpha12)``.

@@ -22,7 +22,8 @@ from ._verify import decide_nonzero, decide_zero, provably_nonnegative
 
 __all__ = ["KINDS", "Construction", "Check", "CheckResult", "Entry", "Result"]
 
-#: the kinds of statement, after Section 0.4 of the transcription
+#: the kinds of statement: a definition, an identity, a statement under a condition
+#: (with counter-examples where the condition fails) and a numeric example
 KINDS = ("definition", "identity", "conditional", "numeric")
 
 
@@ -152,10 +153,11 @@ class Entry:
 
     Attributes: ``id`` (``"1.34"``, ``"Example 1.4"``, ``"Theorem 1.1"``,
     ``"Counting: lines"``, ...), ``section``, ``title``, ``statement`` (LaTeX,
-    as the book means it after the transcription's corrections), ``kind``
-    (one of :data:`KINDS`), ``construction`` (the construction in words),
-    ``errata`` (corrections of the book), ``notes`` (remarks, including the
-    rows the transcription marks *Review*) and ``build`` (the construction).
+    as the book means it, its slips corrected; :attr:`text` is plain text),
+    ``kind`` (one of :data:`KINDS`), ``construction`` (the construction in
+    words), ``errata`` (corrections of the book, each citing the book's section
+    and equation), ``notes`` (remarks: readings of the scanned text, and points
+    reviewed and found not to be errors) and ``build`` (the construction).
 
     Examples
     ========
@@ -181,6 +183,18 @@ class Entry:
     def __post_init__(self) -> None:
         if self.kind not in KINDS:
             raise ValueError(f"kind: expected one of {KINDS}, got {self.kind!r}")
+
+    @property
+    def text(self) -> str:
+        """The statement as plain Unicode text (no LaTeX), for terminals.
+
+        >>> from screwsym.book import entry
+        >>> entry("1.34").text
+        'h = (S·S⁰)/(S·S) = (lp+mq+nr)/(l²+m²+n²)'
+        """
+        from ._text import latex_to_text
+
+        return latex_to_text(self.statement)
 
     @property
     def tag(self) -> str:

@@ -252,7 +252,7 @@ def _e1_12(c):
     "identity",
     """The library's moment of the line through (x1, y1, z1) along (L, M, N) against
     the three printed formulas.""",
-    notes=("OCR: the Q line is lost in the OCR and was rebuilt as the cofactor of j, "
+    notes=("The Q line is illegible in the scanned text and was rebuilt as the cofactor of j, "
            "Q = z1 L - x1 N.",),
 )
 def _e1_13(c):
@@ -352,9 +352,9 @@ def _e1_16(c):
     """P = foot(line) of the library's line through generic r1 along S; |S x S0| =
     |S| |S0|; P is parallel to S x S0 with the same sense, perpendicular to S0, and
     |P|^2 = |S0|^2/|S|^2 (squared, so that no radicals are needed).""",
-    notes=("e is parallel to S x S0 (perpendicular to S and S0); the OCR reads "
+    notes=("e is parallel to S x S0 (perpendicular to S and S0); the scanned text reads "
            "\"perpendicular to S x S0\". Review: the mathematics is right; whether the "
-           "book or the OCR lost the word cannot be told. e is undefined when S0 = 0.",),
+           "book or the scan lost the word cannot be told. e is undefined when S0 = 0.",),
 )
 def _e1_17(c):
     r1, S, r, w, line = _line_r1_S()

@@ -85,8 +85,8 @@ def _e1_30(c):
     moment with the Z axis = S0_z are checked. General line; line meeting (or parallel
     to) the Z axis; line through O; line parallel to XY; line parallel to XY meeting Z
     perpendicularly; line in the XY plane; lines parallel to X; the X axis.""",
-    notes=("The patterns are OCR-exact; their grouping into the three categories and the "
-           "geometric readings are reconstructed by the transcription.",),
+    notes=("The patterns are exactly as printed; their grouping into the three categories and "
+           "the geometric readings are ours.",),
 )
 def _fig_1_5(c):
     a, b, cc, X0, Y0, Z0 = real("a b c X0 Y0 Z0")

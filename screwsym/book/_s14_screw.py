@@ -259,7 +259,7 @@ def _ex1_1(c):
     "numeric",
     """pitch((1 0 0; 1 0 0)) = 1 exactly, its axis moment is 0, it is classified 'screw',
     and its axis is the X axis (contains (5, 0, 0)).""",
-    notes=("Here h = 1 really is the number 1 (not oo, which the OCR also prints as 1).",),
+    notes=("Here h = 1 really is the number 1 (not oo, which the scanned text also shows as 1).",),
 )
 def _ex1_2(c):
     s = ss.Screw([1, 0, 0], [1, 0, 0])

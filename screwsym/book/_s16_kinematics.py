@@ -69,7 +69,7 @@ def _e1_50(c):
     """Twist.rotation: omega (the property) = omega S and v_O = r x omega S; with the axis
     through O the twist is (omega; 0); an axis off O gives v_O != 0.""",
     notes=("\"(v; 0) or (v; 0)\" reads omega(S; 0) or (omega; 0). Review: more likely an "
-           "OCR duplication than a book error.",),
+           "duplication in the scanned text than a book error.",),
 )
 def _e1_51(c):
     S, r, w, T = _rot()
@@ -86,7 +86,7 @@ def _e1_51(c):
     """Twist.translation(v S): it is (0; v S), it does not change when the origin moves
     (shift_origin), and every point has the velocity v S (velocity_at).""",
     notes=("\"(as illustrated in Fig. 1.7)\": Fig. 1.7 shows rotation. Review: the figure "
-           "reference cannot be checked from the OCR. v is the translational speed.",),
+           "reference cannot be checked from the scanned text. v is the translational speed.",),
 )
 def _e_translation(c):
     S, a, p = vec("S"), vec("a"), vec("p")
@@ -136,7 +136,7 @@ def _e1_52(c):
     velocity of the body point at O); the velocity at the axis point r is h omega S,
     along S; v_O x omega = (r x omega) x omega, so v_O is parallel to omega when the axis
     passes through O and not otherwise.""",
-    notes=("OCR: the book's (v1; v0) is (omega1; v0).",),
+    notes=("Scanned text: the book's (v1; v0) is (omega1; v0).",),
 )
 def _e1_53(c):
     S, r, w, h, T = _screw_motion()
