@@ -61,7 +61,7 @@ def _e1_20(c):
     a12, the unit normal a12 and the feet come from the library's common_normal;
     mutual_moment must equal a12 a12 x S2 . S1 and a12 a21 x S1 . S2; a12 >= 0; the
     normal is a unit vector perpendicular to both lines; foot 1 lies on line 1, foot 2
-    on line 2, and foot2 - foot1 = a12 a12. The normal reversed (a21 in the first
+    on line 2, and a12 = (foot2 - foot1) . a12 (the full vector identity is (1.25)'s). The normal reversed (a21 in the first
     formula) gives a non-zero difference.""",
     notes=("The book writes \"projecting the moment vector - a12 a12 x S1 on the line S2\": "
            "the leading symbol is a minus, i.e. a12 a21 x S1.",),
@@ -79,7 +79,7 @@ def _e1_21(c):
     c.zero("a12 . S2", book_dot(cn.normal, S2))
     c.zero("foot 1 on line 1: (foot1 - p) x S1", book_cross(cn.foot1 - p, S1))
     c.zero("foot 2 on line 2: (foot2 - q) x S2", book_cross(cn.foot2 - q, S2))
-    c.zero("foot2 - foot1 - a12 a12", cn.foot2 - cn.foot1 - cn.a12 * cn.normal)
+    c.zero("a12 = (foot2 - foot1) . a12", book_dot(cn.foot2 - cn.foot1, cn.normal) - cn.a12)
     c.nonzero("counter-example: normal reversed, M - a12 (a21 x S2) . S1",
               M - cn.a12 * book_dot(book_cross(-cn.normal, S2), S1))
 
