@@ -124,7 +124,21 @@ class BookRegistry(SphinxDirective):
         return container.children
 
 
+#: repository files that a page of the site includes: a notebook's link to the file goes there
+_INCLUDED = {str(ROOT / "benchmarks" / "README"): "benchmarks"}
+
+
+def _links_to_included_files(app, doctree) -> None:
+    from sphinx.addnodes import pending_xref
+
+    for node in doctree.findall(pending_xref):
+        target = node.get("reftarget", "")
+        if node.get("reftype") == "myst" and target in _INCLUDED:
+            node["reftarget"] = _INCLUDED[target]
+
+
 def setup(app):
+    app.connect("doctree-read", _links_to_included_files)
     app.add_directive("screwsym-book", BookRegistry)
     app.connect("autodoc-process-docstring", _plain_formulas)
     return {"parallel_read_safe": True}
