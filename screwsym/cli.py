@@ -242,6 +242,12 @@ def _show(args, out: _Out) -> int:
     out.write(f"Section {e.section}, {e.kind}\n\n")
     out.write((e.statement if args.latex else e.text) + "\n")
     out.write("\nconstruction: " + e.construction + "\n")
+    kinds = {"zero": "vanishes", "nonzero": "counter-example, non-zero", "holds": "is True",
+             "nonnegative": "nonnegative"}
+    out.write("\nchecks (screwsym verify -v shows their results):\n")
+    out.write("".join(f"  - {c.label}: {kinds[c.kind]}"
+                      + (" (shows the book's wording failing)" if c.book else "") + "\n"
+                      for c in e.construct().checks))
     if e.errata:
         out.write(f"\nerrata ({_where(e)}):\n" + "".join(f"  - {x}\n" for x in e.errata))
     if e.notes:

@@ -141,6 +141,8 @@ def test_show(capsys):
     assert main(["show", "Theorem 1.1"]) == 0
     out = capsys.readouterr().out
     assert "Section 1.5.1, conditional" in out and "errata (" in out and "construction:" in out
+    assert "checks (screwsym verify -v shows their results):" in out
+    assert "  - only if: skew lines give a non-zero pitch: counter-example, non-zero" in out
     assert main(["show", "1.34", "--latex"]) == 0
     assert r"\frac{\mathbf S\cdot\mathbf S^0}" in capsys.readouterr().out
     assert main(["show", "1.34"]) == 0
