@@ -116,8 +116,8 @@ def _line_r1_S():
     r"(\mathbf r-\mathbf r_1)\times\mathbf S=\mathbf 0",
     "conditional",
     """Line through generic r1 along generic S (library). For r = r1 + t S and for
-    r = B = r1 + S the expression vanishes and contains() is True; for the point
-    r1 + S x w off the line it does not vanish.""",
+    r = B = r1 + S the expression vanishes and contains() is True; for the point r1 + S x w off the line it does not vanish. With numbers, contains() answers
+    True on the line and False off it.""",
 )
 def _e1_7(c):
     r1, S, r, w, line = _line_r1_S()
@@ -388,8 +388,8 @@ def _e1_18(c):
     r"\mathbf S_0=\mathbf 0:\quad(\mathbf S;\ \mathbf 0)=(l\ m\ n;\ 0\ 0\ 0)",
     "conditional",
     """The library's line through the origin along generic S: S0 = 0, foot point 0,
-    distance 0, and the origin lies on it; a line through r1 off the origin has a
-    non-zero moment.""",
+    distance 0, and the origin lies on it (contains() is False for (1, 0, 0) on (1 2 3; 0 0 0)); a line
+    through r1 off the origin has a non-zero moment.""",
 )
 def _e_s0zero(c):
     S = vec("S")

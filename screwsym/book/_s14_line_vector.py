@@ -16,7 +16,8 @@ _SEC = "1.4.1"
     "conditional",
     """The library's line vector through generic r along S: every point r + t S satisfies
     the equation and contains() is True; r + S x w (off the line) does not satisfy it.
-    (S; S0) and (-S; -S0) are the same undirected line but different line vectors.""",
+    contains() answers False for a point off a numeric line. (S; S0) and (-S; -S0) are the same
+    undirected line but different line vectors.""",
     errata=("\"Unit line vectors stand in one-to-one correspondence with the lines\": "
             "one-to-one with directed lines, 2-to-1 (+-) with undirected lines.",),
 )

@@ -24,7 +24,8 @@ def _book_pitch(S, S0):
     r"\$=(\mathbf S;\ \mathbf S^0),\qquad \mathbf S\cdot\mathbf S^0\neq0",
     "definition",
     """Screw(S, S0) keeps S and S0 as its parts; (1 1 0; 1 0 0) with S . S0 = 1 is
-    classified 'screw'; a LineVector with S . S0 != 0 is refused (ValueError).""",
+    classified 'screw'; a LineVector with S . S0 != 0 is refused (ValueError); (1 0 0; 0 1 0) is a line and (0 0 0;
+    1 0 0) a couple, not screws.""",
     errata=("(1.31) defines a screw with S . S0 != 0, yet the book then calls line vectors "
             "(h = 0) and couples (S = 0) screws. The library calls every nonzero (S; S0) a "
             "screw and classifies it by S and h.",),
@@ -115,8 +116,8 @@ def _e1_34(c):
     r"(\mathbf S;\ \mathbf S^0)=(\mathbf S;\ \mathbf S^0-h\mathbf S+h\mathbf S),\qquad "
     r"\mathbf S^0-h\mathbf S\perp\mathbf S,\quad \mathbf S^0-h\mathbf S=\mathbf S_0",
     "identity",
-    """Generic screw: axis(s).S0 = S0 - h S with h the book's ratio, S . (S0 - h S) = 0,
-    and the parts of decompose(s) add back to s.""",
+    """Generic screw: axis(s).S0 = S0 - h S with h the book's ratio, axis(s).S = S, S . (S0 - h S) = 0, decompose(s)'s line part is (S; S0 - h S), and its parts
+    add back to s.""",
     errata=("S^0 and S_0 are both printed \"S0\": \"S0 - hS = S0\" reads "
             "S^0 - h S = S_0 = r x S, the moment of the axis.",),
 )
@@ -137,8 +138,8 @@ def _e1_35(c):
     r"\mathbf r\times\mathbf S=\mathbf S^0-h\mathbf S",
     "conditional",
     """Generic screw, P = foot(s) (library): every point P + t S satisfies the equation
-    and contains() is True; P = S x (S0 - h S)/(S . S); the point P + S x w off the axis
-    does not satisfy it.""",
+    and contains() is True; P = S x (S0 - h S)/(S . S); the point P + S x w off the axis does not satisfy it, and contains((1 1 0; 1 0 0), O)
+    is False.""",
 )
 def _e1_36(c):
     S, S0, a, s = _screw()
@@ -177,8 +178,8 @@ def _e1_37(c):
     r"\$=(\mathbf S;\ \mathbf S^0)=(\mathbf S;\ \mathbf r\times\mathbf S+h\mathbf S)"
     r"=(\mathbf S;\ \mathbf S_0+h\mathbf S)=(\mathbf S;\ \mathbf S_0)+(\mathbf 0;\ h\mathbf S)",
     "definition",
-    """Screw.from_axis(r, S, h) with generic r, S, h against (S; r x S + h S); its pitch
-    is h, its axis moment is r x S, r lies on its axis, and it is the line vector
+    """Screw.from_axis(r, S, h) with generic r, S, h against (S; r x S + h S); its pitch is h, its axis is (S; r x S), r lies on its axis (and (1, 2, 4) does not lie on a
+    numeric one), and it is the line vector
     (S; r x S) plus the couple (0; h S).""",
     errata=("Mixed notation: the first \"S0\" is S^0, the others S_0.",),
     notes=("A couple not parallel to S also gives a screw, with a displaced axis (see the "
@@ -209,7 +210,8 @@ def _e1_38(c):
     "definition",
     """classify() on a screw, a line, a couple and the zero screw, with numbers and with
     symbols (l > 0 and h > 0 in (l m n; h l h m h n)); with S != 0,
-    h (S . S) = S . S0, so S . S0 != 0 exactly when h != 0.""",
+    h (S . S) = S . S0, so S . S0 != 0 exactly when h != 0. Undecided cases answer None: the generic (S; S0), and (l
+    m n; 0 0 p) with generic p.""",
     errata=("S . S0 != 0 and h != 0 are listed as separate conditions, but given S != 0 "
             "they are the same; 'h = oo' for S = 0 needs a special case (0/0).",),
 )
@@ -236,8 +238,8 @@ def _e_classify(c):
     "Example 1.1", _SEC, "A screw whose axis passes through the origin",
     r"(l\ m\ n;\ hl\ hm\ hn)\ \text{has pitch } h \text{ and its axis passes through } O",
     "identity",
-    """s = Screw(S, h S) with generic S, h: pitch(s) = h, the axis moment S0 - h S is 0,
-    the foot point is O and contains(s, O) is True.""",
+    """s = Screw(S, h S) with generic S, h: pitch(s) = h, the axis is (S; 0), the foot point is O and contains(s, O) is True; (1 0 0) is not on the
+    axis of (1 2 3; 2 4 6).""",
 )
 def _ex1_1(c):
     S = vec("S")
@@ -258,7 +260,7 @@ def _ex1_1(c):
     r"\mathbf r\times\mathbf S=\mathbf S^0-h\mathbf S=\mathbf 0",
     "numeric",
     """pitch((1 0 0; 1 0 0)) = 1 exactly, its axis moment is 0, it is classified 'screw',
-    and its axis is the X axis (contains (5, 0, 0)).""",
+    and its axis is the X axis (contains (5, 0, 0), not (0, 1, 0)).""",
     notes=("Here h = 1 really is the number 1 (not oo, which the scanned text also shows as 1).",),
 )
 def _ex1_2(c):
@@ -299,7 +301,7 @@ def _ex1_3(c):
     r"h=\frac{\mathbf S\cdot\mathbf S^0}{\mathbf S\cdot\mathbf S}=\frac12,\qquad "
     r"\mathbf r\times\mathbf S=\mathbf S^0-h\mathbf S=\left(\tfrac12\ \ -\tfrac12\ \ 0\right)^T",
     "numeric",
-    """s = Screw((1,1,0), (1,0,0)): pitch 1/2, axis moment (1/2, -1/2, 0), foot point
+    """s = Screw((1,1,0), (1,0,0)): pitch 1/2, axis (1 1 0; 1/2 -1/2 0), foot point
     (0, 0, -1/2), every (t, t, -1/2) on the axis, distance 1/2, a proper screw; the unit
     screw s/sqrt2 has the same pitch.""",
     notes=("Completion of the book's solution (the book stops at r x S): foot point "

@@ -92,7 +92,8 @@ def _e1_40(c):
     r"intersection point }(\mathbf S_1+\mathbf S_2\neq\mathbf 0)",
     "conditional",
     """Library lines through a common generic point c: the sum has pitch 0 and contains
-    c. A point r on line 1 only (line 2 generic) is not on the sum. With S2 = -S1 the
+    c. A point r on line 1 only (line 2 generic) is not on the sum, and with numbers contains()
+    answers True for a point of the sum and False for a point of line 1 only. With S2 = -S1 the
     sum is the zero screw.""",
     errata=("Tacitly needs S1 + S2 != 0; otherwise the sum is (0; 0).",),
 )
@@ -121,7 +122,7 @@ def _th1_2(c):
     r"\mathbf r\times(\mathbf S_1+\mathbf S_2)=\mathbf S_{01}+\mathbf S_{02}",
     "conditional",
     """For library lines through c, every point c + t (S1 + S2) satisfies the line
-    equation of the sum and contains() is True; c + A (on line 1 only) does not.""",
+    equation of the sum and contains() is True; c + A (on line 1 only) does not, and contains() answers False for it with numbers.""",
 )
 def _e1_41(c):
     cpt, A, B, I1, I2 = _through_c()
@@ -140,8 +141,8 @@ def _e1_41(c):
     r"\mathbf r_1\times\mathbf S_1=\mathbf S_{01},\qquad \mathbf r_1\times\mathbf S_2=\mathbf S_{02}",
     "conditional",
     """Library lines through the generic point r1: both equations hold and contains() is
-    True for each; with line 2 through a generic q instead, r1 (on line 1 only) fails
-    the second equation.""",
+    True for each; with line 2 through a generic q instead, r1 (on line 1 only) fails the second equation; contains() answers False for a point off a
+    numeric line.""",
 )
 def _e1_42(c):
     r1, A, B = vec("r1"), vec("A"), vec("B")
@@ -238,8 +239,8 @@ def _e1_44(c):
     "definition",
     """reciprocal_product of two generic screws against the formula; it is symmetric;
     $ o $ = 2 h S . S; for line vectors it is mutual_moment; for a twist (omega; v_O) and
-    a wrench (a force f through r_f plus a couple C) power() equals
-    f . (velocity of r_f) + C . omega.""",
+    a wrench (a force f through r_f plus a couple C) power() equals f . (velocity of r_f) + C . omega; is_reciprocal answers True for a turn
+    about Z and a force along Z, False for a force along Y through (1, 0, 0).""",
 )
 def _e1_45(c):
     S1, D1, S2, D2, s1, s2 = _two_screws()
@@ -286,7 +287,8 @@ def _e1_46(c):
     r"+\mathbf S_2\cdot(\mathbf S_1^0+\overrightarrow{AO}\times\mathbf S_1)=\$_1\circ\$_2",
     "identity",
     """reciprocal_product of the two generic screws shifted to a generic a (library)
-    equals the expanded middle expression and the unshifted product.""",
+    equals the expanded middle expression and the unshifted product, and the middle expression
+    holds term by term (S1 . S2^A = S1 . (S2^0 + AO x S2)), which pins the shift.""",
 )
 def _e1_47(c):
     S1, D1, S2, D2, s1, s2 = _two_screws()
