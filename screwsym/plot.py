@@ -665,7 +665,8 @@ def plot_common_normal(l1: Any, l2: Any, ax: Any = None, *, subs: Subs = None,
     ``S2`` start at the feet; the twist angle ``alpha12`` is drawn at the foot on
     line 2 as an arc turning right-handedly about ``a12_hat`` from (a copy of)
     ``S1`` to ``S2``: the convention under which ``M = -a12 sin(alpha12)``
-    (1.25) for unit directions.  A label gives ``a12`` and ``alpha12``.
+    (1.25) for unit directions.  A label in the top left corner of the axes
+    gives ``a12`` and ``alpha12``.
 
     Examples
     ========
@@ -723,7 +724,9 @@ def plot_common_normal(l1: Any, l2: Any, ax: Any = None, *, subs: Subs = None,
     _polyline(ax, arc, "angle", color="black", lw=1.0)
     text = (f"$a_{{12}}$ = {_fmt(a12)}, $\\alpha_{{12}}$ = {alpha:.4g} rad "
             f"({math.degrees(alpha):.4g}°)")
-    _label(ax, (f1 + f2) / 2 + 0.05 * length * n, text)
+    # in the corner of the axes, where it cannot cover the lines, the normal or the axis labels
+    t = ax.text2D(0.02, 0.98, text, transform=ax.transAxes, va="top", fontsize=9)
+    t.set_gid(_gid("label"))
     _fit(ax)
     return ax
 

@@ -35,6 +35,12 @@ __all__ = [
 ]
 
 
+def _ignore_sigint() -> None:  # workers leave Ctrl-C to the parent, which stops the pool
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def _verify_one(args: tuple[str, int]) -> Result:
     id_, seed = args
     return entry(id_).verify(seed=seed)
@@ -65,7 +71,7 @@ def verify_all(ids=None, *, seed: int = 0, progress=None, jobs: int = 1) -> list
     import multiprocessing as mp
 
     method = "fork" if "fork" in mp.get_all_start_methods() else None
-    with mp.get_context(method).Pool(jobs) as pool:
+    with mp.get_context(method).Pool(jobs, initializer=_ignore_sigint) as pool:
         for i, r in enumerate(pool.imap(_verify_one, work, chunksize=1)):
             results.append(r)
             if progress is not None:

@@ -12,7 +12,8 @@ from sympy import ImmutableMatrix, Matrix, Symbol, cos, sin, symbols, zeros
 
 import screwsym as ss
 
-__all__ = ["ss", "real", "vec", "book_cross", "book_dot", "Z3", "canonical_pair", "six"]
+__all__ = ["ss", "real", "vec", "book_cross", "book_dot", "Z3", "canonical_pair", "six",
+           "placed_pair"]
 
 Z3 = ImmutableMatrix(zeros(3, 1))
 
@@ -50,7 +51,7 @@ def stack(S, S0) -> ImmutableMatrix:
 
 
 def canonical_pair():
-    """The canonical pair of unit lines of Section 2 of the transcription, via the library.
+    """The canonical pair of unit lines (Section 1.3 of the book), via the library.
 
     Line 1 is the X axis; line 2 passes through ``a12 k`` along
     ``(cos alpha12, sin alpha12, 0)``.  Returns ``(L1, L2, a12, alpha12)``.
@@ -66,6 +67,23 @@ def generic_lines():
     """Two generic lines through points ``p``, ``q`` along ``u``, ``w``, via the library."""
     p, q, u, w = vec("p"), vec("q"), vec("u"), vec("w")
     return ss.LineVector.from_axis(p, u), ss.LineVector.from_axis(q, w), p, q, u, w
+
+
+def placed_pair():
+    """Two lines off the origin with non-unit directions, via the library.
+
+    Line 1 passes through the generic point ``p`` along ``(k, 0, 0)``, ``k > 0``;
+    line 2 through the generic point ``q`` along the generic ``w``.  Every
+    statement of Section 1.3 is invariant under rotations ((1.22), (1.47)), so
+    turning line 1's direction onto the X axis loses no generality, while its
+    position and both lengths stay generic: a ``common_normal`` that dropped
+    line 1's position or assumed unit directions would fail.  Returns
+    ``(L1, L2, p, q, k, w)``.
+    """
+    k = symbols("k", positive=True)
+    p, q, w = vec("p"), vec("q"), vec("w")
+    L1 = ss.LineVector.from_axis(p, [k, 0, 0])
+    return L1, ss.LineVector.from_axis(q, w), p, q, k, w
 
 
 def x_axis_and_generic_line():

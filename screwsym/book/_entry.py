@@ -22,7 +22,8 @@ from ._verify import decide_nonzero, decide_zero, provably_nonnegative
 
 __all__ = ["KINDS", "Construction", "Check", "CheckResult", "Entry", "Result"]
 
-#: the kinds of statement, after Section 0.4 of the transcription
+#: the kinds of statement: a definition, an identity, a statement under a condition
+#: (with counter-examples where the condition fails) and a numeric example
 KINDS = ("definition", "identity", "conditional", "numeric")
 
 
@@ -152,10 +153,11 @@ class Entry:
 
     Attributes: ``id`` (``"1.34"``, ``"Example 1.4"``, ``"Theorem 1.1"``,
     ``"Counting: lines"``, ...), ``section``, ``title``, ``statement`` (LaTeX,
-    as the book means it after the transcription's corrections), ``kind``
-    (one of :data:`KINDS`), ``construction`` (the construction in words),
-    ``errata`` (corrections of the book), ``notes`` (remarks, including the
-    rows the transcription marks *Review*) and ``build`` (the construction).
+    as the book means it, its slips corrected; :attr:`text` is plain text),
+    ``kind`` (one of :data:`KINDS`), ``construction`` (the construction in
+    words), ``errata`` (corrections of the book, each citing the book's section
+    and equation), ``notes`` (remarks: readings of the scanned text, and points
+    reviewed and found not to be errors) and ``build`` (the construction).
 
     Examples
     ========
@@ -183,6 +185,18 @@ class Entry:
             raise ValueError(f"kind: expected one of {KINDS}, got {self.kind!r}")
 
     @property
+    def text(self) -> str:
+        """The statement as plain Unicode text (no LaTeX), for terminals.
+
+        >>> from screwsym.book import entry
+        >>> entry("1.34").text
+        'h = (S·S⁰)/(S·S) = (lp+mq+nr)/(l²+m²+n²)'
+        """
+        from ._text import latex_to_text
+
+        return latex_to_text(self.statement)
+
+    @property
     def tag(self) -> str:
         """The label used in ``\\tag{}``: the equation number, or the id."""
         return self.id
@@ -197,12 +211,22 @@ class Entry:
         self.build(c)
         return c
 
-    def verify(self, *, seed: int = 0) -> Result:
-        """Verify the entry exactly; see :class:`Result`."""
+    def verify(self, *, seed: int = 0, stop_at_failure: bool = False) -> Result:
+        """Verify the entry exactly; see :class:`Result`.
+
+        With ``stop_at_failure`` the checks after the first failing one are
+        not run (the result lists the checks run so far); the mutation tests
+        use it to fail fast.
+        """
         t0 = time.perf_counter()
         try:
             c = self.construct()
-            results = tuple(_run(ch, seed + 7 * i) for i, ch in enumerate(c.checks))
+            done: list[CheckResult] = []
+            for i, ch in enumerate(c.checks):
+                done.append(_run(ch, seed + 7 * i))
+                if stop_at_failure and not done[-1].ok:
+                    break
+            results = tuple(done)
             error = None if results else "the construction recorded no checks"
         except Exception as exc:  # a broken core operation must fail the entry, not the run
             results, error = (), f"{type(exc).__name__}: {exc}"

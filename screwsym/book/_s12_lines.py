@@ -116,16 +116,21 @@ def _line_r1_S():
     r"(\mathbf r-\mathbf r_1)\times\mathbf S=\mathbf 0",
     "conditional",
     """Line through generic r1 along generic S (library). For r = r1 + t S and for
-    r = B = r1 + S the expression vanishes and contains() is True; for the point
-    r1 + S x w off the line it does not vanish.""",
+    r = B = r1 + S the expression vanishes and contains() is True; for the point r1 + S x w off the line it does not vanish. With numbers, contains() answers
+    True on the line and False off it.""",
 )
 def _e1_7(c):
     r1, S, r, w, line = _line_r1_S()
     t = real("t")
     for lbl, pt in (("r = r1 + t S", r1 + t * S), ("r = r2 = r1 + S", r1 + S)):
         c.zero(f"(r - r1) x S at {lbl}", book_cross(pt - r1, line.S))
-        c.holds(f"contains(line, {lbl})", ss.contains(line, pt))
+        c.holds(f"contains(line, {lbl}) is True", ss.contains(line, pt) is True)
     c.nonzero("counter-example: r = r1 + S x w (off the line)", book_cross(book_cross(S, w), line.S))
+    N = ss.LineVector.from_axis([1, 2, 3], [2, -1, 1])
+    c.holds("contains(line through (1, 2, 3) along (2, -1, 1), (3, 1, 4)) is True",
+            ss.contains(N, [3, 1, 4]) is True)
+    c.holds("contains(the same line, (1, 2, 4)) is False (off the line)",
+            ss.contains(N, [1, 2, 4]) is False)
 
 
 @statement(
@@ -164,12 +169,21 @@ def _e1_9(c):
     "1.10", _SEC, "Orthogonality (Plücker) condition",
     r"\mathbf S\cdot\mathbf S_0=0",
     "identity",
-    """For the library's line through generic r1 along generic S, S . S0 vanishes;
-    the counter-example (S; S) is no line (its dot product is S . S != 0).""",
+    """For the library's line through generic r1 along generic S, S0 is r1 x S
+    (checked against the determinant expansion, which pins its sign) and S . S0
+    vanishes; the counter-example (S; S) is no line (its dot product is S . S != 0),
+    and the library refuses the line vector (1 2 3; 1 2 3).""",
 )
 def _e1_10(c):
     r1, S, r, w, line = _line_r1_S()
+    c.zero("S0 - r1 x S (1.9)", line.S0 - book_cross(r1, S))
     c.zero("S . S0", book_dot(line.S, line.S0))
+    try:
+        ss.LineVector([1, 2, 3], [1, 2, 3])
+        refused = False
+    except ValueError:
+        refused = True
+    c.holds("LineVector((1 2 3), (1 2 3)) is refused (S . S0 = 14)", refused)
     c.nonzero("counter-example: (S; S) has S . S0 = S . S", book_dot(S, S))
 
 
@@ -238,7 +252,7 @@ def _e1_12(c):
     "identity",
     """The library's moment of the line through (x1, y1, z1) along (L, M, N) against
     the three printed formulas.""",
-    notes=("OCR: the Q line is lost in the OCR and was rebuilt as the cofactor of j, "
+    notes=("The Q line is illegible in the scanned text and was rebuilt as the cofactor of j, "
            "Q = z1 L - x1 N.",),
 )
 def _e1_13(c):
@@ -276,12 +290,14 @@ def _e1_14(c):
     "1.15", _SEC, "Orthogonality condition in components",
     r"LP+MQ+NR=0",
     "identity",
-    """(P, Q, R) the library's moment of the line through (x1, y1, z1) along (L, M, N);
-    L P + M Q + N R must vanish.""",
+    """(P, Q, R) the library's moment of the line through (x1, y1, z1) along (L, M, N),
+    checked against the determinant expansion of r1 x S (which pins its sign); L P +
+    M Q + N R must vanish.""",
 )
 def _e1_15(c):
     L, M, N, r1, S = _LMN()
     P, Q, R = ss.LineVector.from_axis(r1, S).S0
+    c.zero("(P, Q, R) - r1 x S", Matrix([P, Q, R]) - book_cross(r1, S))
     c.zero("L P + M Q + N R", L * P + M * Q + N * R)
 
 
@@ -336,9 +352,9 @@ def _e1_16(c):
     """P = foot(line) of the library's line through generic r1 along S; |S x S0| =
     |S| |S0|; P is parallel to S x S0 with the same sense, perpendicular to S0, and
     |P|^2 = |S0|^2/|S|^2 (squared, so that no radicals are needed).""",
-    notes=("e is parallel to S x S0 (perpendicular to S and S0); the OCR reads "
+    notes=("e is parallel to S x S0 (perpendicular to S and S0); the scanned text reads "
            "\"perpendicular to S x S0\". Review: the mathematics is right; whether the "
-           "book or the OCR lost the word cannot be told. e is undefined when S0 = 0.",),
+           "book or the scan lost the word cannot be told. e is undefined when S0 = 0.",),
 )
 def _e1_17(c):
     r1, S, r, w, line = _line_r1_S()
@@ -372,8 +388,8 @@ def _e1_18(c):
     r"\mathbf S_0=\mathbf 0:\quad(\mathbf S;\ \mathbf 0)=(l\ m\ n;\ 0\ 0\ 0)",
     "conditional",
     """The library's line through the origin along generic S: S0 = 0, foot point 0,
-    distance 0, and the origin lies on it; a line through r1 off the origin has a
-    non-zero moment.""",
+    distance 0, and the origin lies on it (contains() is False for (1, 0, 0) on (1 2 3; 0 0 0)); a line
+    through r1 off the origin has a non-zero moment.""",
 )
 def _e_s0zero(c):
     S = vec("S")
@@ -381,7 +397,9 @@ def _e_s0zero(c):
     c.zero("S0", line.S0)
     c.zero("foot", ss.foot(line))
     c.zero("distance", ss.distance_to_origin(line))
-    c.holds("contains(line, O)", ss.contains(line, Z3))
+    c.holds("contains(line, O) is True", ss.contains(line, Z3) is True)
+    c.holds("contains((1 2 3; 0 0 0), (1, 0, 0)) is False",
+            ss.contains(ss.LineVector.from_axis(Z3, [1, 2, 3]), [1, 0, 0]) is False)
     r1 = vec("r1")
     c.nonzero("counter-example: line through r1 has S0 != 0", ss.LineVector.from_axis(r1, S).S0)
 

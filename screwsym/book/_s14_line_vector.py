@@ -16,7 +16,8 @@ _SEC = "1.4.1"
     "conditional",
     """The library's line vector through generic r along S: every point r + t S satisfies
     the equation and contains() is True; r + S x w (off the line) does not satisfy it.
-    (S; S0) and (-S; -S0) are the same undirected line but different line vectors.""",
+    contains() answers False for a point off a numeric line. (S; S0) and (-S; -S0) are the same
+    undirected line but different line vectors.""",
     errata=("\"Unit line vectors stand in one-to-one correspondence with the lines\": "
             "one-to-one with directed lines, 2-to-1 (+-) with undirected lines.",),
 )
@@ -25,7 +26,9 @@ def _e1_28(c):
     t = real("t")
     L = ss.LineVector.from_axis(r, S)
     c.zero("(r + t S) x S - S0", book_cross(r + t * S, S) - L.S0)
-    c.holds("contains(L, r + t S)", ss.contains(L, r + t * S))
+    c.holds("contains(L, r + t S) is True", ss.contains(L, r + t * S) is True)
+    c.holds("contains((1 0 0; 0 0 1), (0, 0, 0)) is False (the line is y = 1, z = 0)",
+            ss.contains(ss.LineVector([1, 0, 0], [0, 0, 1]), [0, 0, 0]) is False)
     c.zero("S . S0", book_dot(L.S, L.S0))
     c.nonzero("counter-example: (r + S x w) x S - S0", book_cross(r + book_cross(S, w), S) - L.S0)
     c.zero("-L has the same points: (r + t S) x (-S) - (-S0)", book_cross(r + t * S, (-L).S) - (-L).S0)
@@ -83,8 +86,8 @@ def _e1_30(c):
     moment with the Z axis = S0_z are checked. General line; line meeting (or parallel
     to) the Z axis; line through O; line parallel to XY; line parallel to XY meeting Z
     perpendicularly; line in the XY plane; lines parallel to X; the X axis.""",
-    notes=("The patterns are OCR-exact; their grouping into the three categories and the "
-           "geometric readings are reconstructed by the transcription.",),
+    notes=("The patterns are exactly as printed; their grouping into the three categories and "
+           "the geometric readings are ours.",),
 )
 def _fig_1_5(c):
     a, b, cc, X0, Y0, Z0 = real("a b c X0 Y0 Z0")

@@ -92,7 +92,8 @@ def _e1_40(c):
     r"intersection point }(\mathbf S_1+\mathbf S_2\neq\mathbf 0)",
     "conditional",
     """Library lines through a common generic point c: the sum has pitch 0 and contains
-    c. A point r on line 1 only (line 2 generic) is not on the sum. With S2 = -S1 the
+    c. A point r on line 1 only (line 2 generic) is not on the sum, and with numbers contains()
+    answers True for a point of the sum and False for a point of line 1 only. With S2 = -S1 the
     sum is the zero screw.""",
     errata=("Tacitly needs S1 + S2 != 0; otherwise the sum is (0; 0).",),
 )
@@ -101,7 +102,10 @@ def _th1_2(c):
     s = I1 + I2
     c.zero("pitch of the sum", ss.pitch(s))
     c.zero("c x (S1 + S2) - (S01 + S02)", book_cross(cpt, s.S) - s.S0)
-    c.holds("contains(sum, c)", ss.contains(s, cpt))
+    c.holds("contains(sum, c) is True", ss.contains(s, cpt) is True)
+    N = ss.LineVector.from_axis([1, 2, 3], [1, 0, 0]) + ss.LineVector.from_axis([1, 2, 3], [0, 1, 0])
+    c.holds("numbers: the sum through (1, 2, 3) contains (2, 3, 3)", ss.contains(N, [2, 3, 3]) is True)
+    c.holds("numbers: (2, 2, 3), on line 1 only, is not on the sum", ss.contains(N, [2, 2, 3]) is False)
     q = vec("q")
     t = real("t")
     G2 = ss.LineVector.from_axis(q, B)
@@ -118,7 +122,7 @@ def _th1_2(c):
     r"\mathbf r\times(\mathbf S_1+\mathbf S_2)=\mathbf S_{01}+\mathbf S_{02}",
     "conditional",
     """For library lines through c, every point c + t (S1 + S2) satisfies the line
-    equation of the sum and contains() is True; c + A (on line 1 only) does not.""",
+    equation of the sum and contains() is True; c + A (on line 1 only) does not, and contains() answers False for it with numbers.""",
 )
 def _e1_41(c):
     cpt, A, B, I1, I2 = _through_c()
@@ -126,7 +130,9 @@ def _e1_41(c):
     s = I1 + I2
     r = cpt + t * (A + B)
     c.zero("r x (S1 + S2) - (S01 + S02)", book_cross(r, A + B) - (I1.S0 + I2.S0))
-    c.holds("contains(sum, r)", ss.contains(s, r))
+    c.holds("contains(sum, r) is True", ss.contains(s, r) is True)
+    N = ss.LineVector.from_axis([1, 2, 3], [1, 0, 0]) + ss.LineVector.from_axis([1, 2, 3], [0, 1, 0])
+    c.holds("numbers: contains(sum, (1, 2, 3) + (1, 0, 0)) is False", ss.contains(N, [2, 2, 3]) is False)
     c.nonzero("counter-example: r = c + S1", book_cross(cpt + A, A + B) - (I1.S0 + I2.S0))
 
 
@@ -135,8 +141,8 @@ def _e1_41(c):
     r"\mathbf r_1\times\mathbf S_1=\mathbf S_{01},\qquad \mathbf r_1\times\mathbf S_2=\mathbf S_{02}",
     "conditional",
     """Library lines through the generic point r1: both equations hold and contains() is
-    True for each; with line 2 through a generic q instead, r1 (on line 1 only) fails
-    the second equation.""",
+    True for each; with line 2 through a generic q instead, r1 (on line 1 only) fails the second equation; contains() answers False for a point off a
+    numeric line.""",
 )
 def _e1_42(c):
     r1, A, B = vec("r1"), vec("A"), vec("B")
@@ -144,6 +150,8 @@ def _e1_42(c):
     c.zero("r1 x S1 - S01", book_cross(r1, A) - L1.S0)
     c.zero("r1 x S2 - S02", book_cross(r1, B) - L2.S0)
     c.holds("contains(L1, r1) and contains(L2, r1)", ss.contains(L1, r1) is True and ss.contains(L2, r1) is True)
+    c.holds("numbers: (1, 2, 3) is not on the line through O along (0, 1, 0)",
+            ss.contains(ss.LineVector.from_axis([0, 0, 0], [0, 1, 0]), [1, 2, 3]) is False)
     G2 = ss.LineVector.from_axis(vec("q"), B)
     c.nonzero("counter-example: r1 on line 1 only, r1 x S2 - S02", book_cross(r1, B) - G2.S0)
 
@@ -231,8 +239,8 @@ def _e1_44(c):
     "definition",
     """reciprocal_product of two generic screws against the formula; it is symmetric;
     $ o $ = 2 h S . S; for line vectors it is mutual_moment; for a twist (omega; v_O) and
-    a wrench (a force f through r_f plus a couple C) power() equals
-    f . (velocity of r_f) + C . omega.""",
+    a wrench (a force f through r_f plus a couple C) power() equals f . (velocity of r_f) + C . omega; is_reciprocal answers True for a turn
+    about Z and a force along Z, False for a force along Y through (1, 0, 0).""",
 )
 def _e1_45(c):
     S1, D1, S2, D2, s1, s2 = _two_screws()
@@ -246,6 +254,11 @@ def _e1_45(c):
     T = ss.Twist(om, vO)
     W = ss.Wrench.force(f, point=rf) + ss.Wrench.couple(Cw)
     c.zero("power - (f . v(rf) + C . omega)", ss.power(T, W) - (book_dot(f, T.velocity_at(rf)) + book_dot(Cw, om)))
+    z_turn = ss.Screw([0, 0, 1], [0, 0, 0])
+    c.holds("is_reciprocal: a turn about Z and a force along Z through (1, 0, 0)",
+            ss.is_reciprocal(z_turn, ss.Screw([0, 0, 1], [0, -1, 0])) is True)
+    c.holds("is_reciprocal is False: a force along Y through (1, 0, 0) (product 1)",
+            ss.is_reciprocal(z_turn, ss.Screw([0, 1, 0], [0, 0, 1])) is False)
 
 
 @statement(
@@ -274,7 +287,8 @@ def _e1_46(c):
     r"+\mathbf S_2\cdot(\mathbf S_1^0+\overrightarrow{AO}\times\mathbf S_1)=\$_1\circ\$_2",
     "identity",
     """reciprocal_product of the two generic screws shifted to a generic a (library)
-    equals the expanded middle expression and the unshifted product.""",
+    equals the expanded middle expression and the unshifted product, and the middle expression
+    holds term by term (S1 . S2^A = S1 . (S2^0 + AO x S2)), which pins the shift.""",
 )
 def _e1_47(c):
     S1, D1, S2, D2, s1, s2 = _two_screws()
@@ -284,5 +298,10 @@ def _e1_47(c):
     c.zero("$1^A o $2^A - middle expression",
            shifted - (book_dot(S1, D2 + book_cross(AO, S2)) + book_dot(S2, D1 + book_cross(AO, S1))))
     c.zero("$1^A o $2^A - $1 o $2", shifted - ss.reciprocal_product(s1, s2))
+    s1A, s2A = ss.shift_origin(s1, a), ss.shift_origin(s2, a)
+    c.zero("term by term: S1 . S2^A - S1 . (S2^0 + AO x S2)",
+           book_dot(S1, s2A.S0) - book_dot(S1, D2 + book_cross(AO, S2)))
+    c.zero("term by term: S2 . S1^A - S2 . (S1^0 + AO x S1)",
+           book_dot(S2, s1A.S0) - book_dot(S2, D1 + book_cross(AO, S1)))
 
 

@@ -20,11 +20,14 @@ def _rot():
     "1.48", "1.6.1", "Twist of a pure rotation",
     r"\omega\$=\omega(\mathbf S;\ \mathbf S_0)=(\omega\mathbf S;\ \omega\mathbf S_0)",
     "definition",
-    "Twist.from_axis(r, S, magnitude=omega), generic, against (omega S; omega r x S).",
+    """Twist.from_axis(r, S, magnitude=omega) and Twist.rotation(omega S, point=r),
+    generic, against (omega S; omega r x S).""",
 )
 def _e1_48(c):
     S, r, w, T = _rot()
-    c.zero("rotation - (omega S; omega r x S)", T.as_matrix() - stack(w * S, w * book_cross(r, S)))
+    c.zero("from_axis - (omega S; omega r x S)", T.as_matrix() - stack(w * S, w * book_cross(r, S)))
+    c.zero("Twist.rotation(omega S, point=r) - (omega S; omega r x S)",
+           ss.Twist.rotation(w * S, point=r).as_matrix() - stack(w * S, w * book_cross(r, S)))
 
 
 @statement(
@@ -66,7 +69,7 @@ def _e1_50(c):
     """Twist.rotation: omega (the property) = omega S and v_O = r x omega S; with the axis
     through O the twist is (omega; 0); an axis off O gives v_O != 0.""",
     notes=("\"(v; 0) or (v; 0)\" reads omega(S; 0) or (omega; 0). Review: more likely an "
-           "OCR duplication than a book error.",),
+           "duplication in the scanned text than a book error.",),
 )
 def _e1_51(c):
     S, r, w, T = _rot()
@@ -83,7 +86,7 @@ def _e1_51(c):
     """Twist.translation(v S): it is (0; v S), it does not change when the origin moves
     (shift_origin), and every point has the velocity v S (velocity_at).""",
     notes=("\"(as illustrated in Fig. 1.7)\": Fig. 1.7 shows rotation. Review: the figure "
-           "reference cannot be checked from the OCR. v is the translational speed.",),
+           "reference cannot be checked from the scanned text. v is the translational speed.",),
 )
 def _e_translation(c):
     S, a, p = vec("S"), vec("a"), vec("p")
@@ -107,7 +110,8 @@ def _screw_motion():
     r"=(\omega_1\mathbf S_1;\ \omega_1\mathbf S_{01}+h\,\omega_1\mathbf S_1)=\omega_1(\mathbf S_1;\ \mathbf S_1^0)",
     "identity",
     """Twist.from_axis(r, S, magnitude=omega) + Twist.translation(h omega S) equals
-    Twist.from_axis(r, S, h, magnitude=omega) and omega (S; r x S + h S).""",
+    Twist.from_axis(r, S, h, magnitude=omega), Twist.screw_motion(omega S, point=r,
+    pitch=h) and omega (S; r x S + h S).""",
     errata=("\"instantaneous wrench omega1(S1; S01)\" should read twist (rotation); "
             "\"v2(0; S1)\" should read v1(0; S1); the left side's index i should be 1.",),
     notes=("Review: \"(S1; S01) is unit screw\" is consistent with the book's own \"a line "
@@ -117,7 +121,10 @@ def _e1_52(c):
     S, r, w, h, T = _screw_motion()
     parts = ss.Twist.from_axis(r, S, magnitude=w) + ss.Twist.translation(h * w * S)
     c.zero("rotation + translation - screw_motion", parts.as_matrix() - T.as_matrix())
-    c.zero("screw_motion - omega (S; r x S + h S)", T.as_matrix() - stack(w * S, w * (book_cross(r, S) + h * S)))
+    c.zero("from_axis - omega (S; r x S + h S)", T.as_matrix() - stack(w * S, w * (book_cross(r, S) + h * S)))
+    c.zero("Twist.screw_motion(omega S, point=r, pitch=h) - omega (S; r x S + h S)",
+           ss.Twist.screw_motion(w * S, point=r, pitch=h).as_matrix()
+           - stack(w * S, w * (book_cross(r, S) + h * S)))
 
 
 @statement(
@@ -129,7 +136,7 @@ def _e1_52(c):
     velocity of the body point at O); the velocity at the axis point r is h omega S,
     along S; v_O x omega = (r x omega) x omega, so v_O is parallel to omega when the axis
     passes through O and not otherwise.""",
-    notes=("OCR: the book's (v1; v0) is (omega1; v0).",),
+    notes=("Scanned text: the book's (v1; v0) is (omega1; v0).",),
 )
 def _e1_53(c):
     S, r, w, h, T = _screw_motion()

@@ -17,8 +17,8 @@ _SEC = "1.7"
     "identity",
     """Wrench.force(f S, point=r): the dual part is f r x S = r x f; the force has no moment
     about r (moment_about); through O the moment is 0.""",
-    notes=("\"C0 = f S0 = f r x S0\" (as OCR'd) should read f r x S. Review: the mathematics "
-           "is right; it may be an OCR loss rather than a book error.",),
+    notes=("\"C0 = f S0 = f r x S0\" (as scanned) should read f r x S. Review: the mathematics "
+           "is right; it may be a loss in the scan rather than a book error.",),
 )
 def _e1_55(c):
     S, r = vec("S"), vec("r")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from sympy import Matrix, Rational, symbols
 
-from ._common import book_cross, book_dot, ss
+from ._common import book_cross, book_dot, ss, stack
 from ._registry import statement
 
 _POINT = {"a": Rational(2, 7), "b": Rational(-3, 5), "u": Rational(2, 3), "v": Rational(-5, 4),
@@ -22,6 +22,16 @@ def _parametrised():
     return (a, b, u, v, h, rho), S, foot
 
 
+def _values() -> dict:
+    return {symbols(k, real=True): v for k, v in _POINT.items()}
+
+
+def _at_point(foot, S):
+    """foot() of the library's line through ``foot`` along ``S`` at the rational point."""
+    at = _values()
+    return ss.foot(ss.LineVector.from_axis(foot.xreplace(at), S.xreplace(at)))
+
+
 def _rank(vec6, params):
     """Exact rank of the Jacobian at the generic rational point."""
     J = vec6.jacobian(Matrix(params))
@@ -32,7 +42,8 @@ def _rank(vec6, params):
 _HOW = """Directions S on the unit sphere by the rational stereographic map of (a, b), foot
     points u e1 + v e2 in the plane normal to S; the 6-vectors are built with the library
     ({what}); the exact rank of their Jacobian at the rational point a=2/7, b=-3/5,
-    u=2/3, v=-5/4, h=1/3, rho=2 is the dimension."""
+    u=2/3, v=-5/4, h=1/3, rho=2 is the dimension. The map itself is checked against the
+    book's formula (S; foot x S + h S), so that a wrong formula of the same rank fails."""
 
 
 @statement(
@@ -48,7 +59,10 @@ _HOW = """Directions S on the unit sphere by the rational stereographic map of (
 )
 def _count_lines(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
-    L = ss.LineVector.from_axis(foot, S).as_matrix()
+    line = ss.LineVector.from_axis(foot, S)
+    L = line.as_matrix()
+    c.zero("the map: L - (S; foot x S)", L - stack(S, book_cross(foot, S)))
+    c.zero("foot(L) - foot at the rational point", _at_point(foot, S) - foot.xreplace(_values()))
     c.zero("rank - 4", _rank(L, (a, b, u, v)) - 4)
     x = Matrix(symbols("x1:7", real=True))
     G = Matrix([book_dot(x[:3, :], x[:3, :]) - 1, book_dot(x[:3, :], x[3:, :])])
@@ -70,6 +84,8 @@ def _count_lines(c):
 def _count_unit_lines(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
     L = ss.LineVector.from_axis(foot, S)
+    c.zero("the map: L - (S; foot x S)", L.as_matrix() - stack(S, book_cross(foot, S)))
+    c.zero("foot(L) - foot at the rational point", _at_point(foot, S) - foot.xreplace(_values()))
     c.zero("rank - 4", _rank(L.as_matrix(), (a, b, u, v)) - 4)
     c.zero("|S|^2 - 1", book_dot(L.S, L.S) - 1)
     c.zero("foot(-L) - foot(L)", ss.foot(-L) - ss.foot(L))
@@ -85,6 +101,7 @@ def _count_unit_lines(c):
 def _count_unit_screws(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
     s = ss.Screw.from_axis(foot, S, h).as_matrix()
+    c.zero("the map: s - (S; foot x S + h S)", s - stack(S, book_cross(foot, S) + h * S))
     c.zero("rank - 5", _rank(s, (a, b, u, v, h)) - 5)
 
 
@@ -98,4 +115,5 @@ def _count_unit_screws(c):
 def _count_screws(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
     s = (rho * ss.Screw.from_axis(foot, S, h)).as_matrix()
+    c.zero("the map: s - rho (S; foot x S + h S)", s - rho * stack(S, book_cross(foot, S) + h * S))
     c.zero("rank - 6", _rank(s, (a, b, u, v, h, rho)) - 6)

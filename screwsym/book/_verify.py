@@ -169,26 +169,56 @@ def _symbols(e: Basic) -> list[Symbol]:
     return sorted((s for s in e.free_symbols if isinstance(s, Symbol)), key=str)
 
 
+def _satisfies(value: Rational, sym: Symbol) -> bool:
+    """Does ``value`` agree with every assumption of ``sym`` (positive, integer, even, ...)?"""
+    for fact, wanted in sym.assumptions0.items():
+        got = getattr(value, f"is_{fact}", None)
+        if got is not None and got != wanted:
+            return False
+    return True
+
+
 def _random_value(sym: Symbol, rng: random.Random) -> Rational:
-    while True:
+    """A random small rational inside ``sym``'s assumptions.
+
+    The sign (positive, negative, nonnegative, nonpositive, nonzero) and the
+    integrality are drawn directly; every other assumption (even, odd, prime,
+    ...) is enforced by rejection, so a point never leaves the symbol's domain.
+    """
+    integer = bool(sym.is_integer)
+    for _ in range(500):
         num = rng.randint(-9, 9)
-        den = rng.randint(1, 7)
-        if sym.is_nonnegative or sym.is_positive:
+        den = 1 if integer else rng.randint(1, 7)
+        if sym.is_nonnegative:
             num = abs(num)
-        if num == 0 and (sym.is_nonzero or sym.is_positive):
+        elif sym.is_nonpositive:
+            num = -abs(num)
+        if num == 0 and (sym.is_zero is False or rng.random() < 0.7):
             continue
-        if num == 0 and rng.random() < 0.7:
-            continue
-        return Rational(num, den)
+        value = Rational(num, den)
+        if _satisfies(value, sym):
+            return value
+    raise ValueError(
+        f"{sym}: no small rational satisfies its assumptions {sym.assumptions0}; "
+        "the decision procedure samples rationals only"
+    )
 
 
 def rational_point(syms: Iterable[Symbol], rng: random.Random) -> dict[Symbol, Rational]:
-    """A random rational value for each symbol, respecting sign assumptions.
+    """A random rational value for each symbol, inside the symbol's assumptions.
+
+    Positive, negative, nonnegative, nonpositive and nonzero symbols get values
+    of that sign, integer symbols integers, even and odd symbols even and odd
+    integers, and so on: a point never leaves the domain the symbols declare.
 
     >>> import random
     >>> from sympy import symbols
     >>> x, y = symbols("x y", positive=True)
     >>> all(v > 0 for v in rational_point([x, y], random.Random(1)).values())
+    True
+    >>> n = symbols("n", negative=True, integer=True)
+    >>> v = rational_point([n], random.Random(1))[n]
+    >>> v.is_integer and v < 0
     True
     """
     return {s: _random_value(s, rng) for s in syms}

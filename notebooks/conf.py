@@ -1,0 +1,144 @@
+"""Sphinx configuration of the screwsym documentation.
+
+The source directory is ``notebooks/``: the teaching notebooks are pages of the
+site, executed at build time by myst-nb (they are stored without outputs), next
+to the API reference from the docstrings, the book registry (generated from
+:mod:`screwsym.book` at build time) and the benchmark tables.  Build with
+
+    python -m sphinx -W -b html notebooks build/docs
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+from docutils import nodes
+from docutils.statemachine import StringList
+from sphinx.util.docutils import SphinxDirective
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+os.environ.setdefault("MPLBACKEND", "Agg")
+
+import screwsym  # noqa: E402
+
+project = "screwsym"
+author = "screwsym developers"
+copyright = "screwsym developers, BSD-3-Clause"
+release = version = screwsym.__version__
+
+extensions = [
+    "myst_nb",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.napoleon",
+    "sphinx.ext.mathjax",
+    "sphinx.ext.viewcode",
+]
+exclude_patterns = ["_build", "figures/*.py", "make_readme_figure.py", "**.ipynb_checkpoints"]
+source_suffix = {".md": "myst-nb", ".ipynb": "myst-nb"}
+myst_enable_extensions = ["dollarmath", "amsmath"]
+myst_heading_anchors = 3
+html_theme = "alabaster"
+html_title = f"screwsym {release}"
+html_static_path: list[str] = []
+
+# the notebooks are stored without outputs: run every one at build time, fail on an error
+nb_execution_mode = "force"
+nb_execution_timeout = 300
+nb_execution_raise_on_error = True
+nb_execution_show_tb = True
+nb_merge_streams = True
+
+autodoc_default_options = {"members": True, "undoc-members": False, "show-inheritance": True}
+autodoc_member_order = "bysource"
+autodoc_typehints = "description"
+napoleon_numpy_docstring = True
+napoleon_google_docstring = False
+suppress_warnings = ["myst.header"]
+
+
+def _rst(text: str) -> str:
+    """Plain text for reStructuredText: |x|, *, _ and backquotes are not markup here."""
+    for ch in ("\\", "|", "*", "_", "`"):
+        text = text.replace(ch, "\\" + ch)
+    return text
+
+
+def _plain_formulas(app, what, name, obj, options, lines) -> None:
+    """Docstrings write norms as |S1| in plain text; reStructuredText reads |S1| as a
+    substitution.  Escape the bars outside doctest blocks, inline literals and math."""
+    in_doctest = False
+    for i, line in enumerate(lines):
+        stripped = line.lstrip()
+        if stripped.startswith(">>>"):
+            in_doctest = True
+        elif not stripped:
+            in_doctest = False
+        if in_doctest or "|" not in line or "``" in line or ":math:" in line:
+            continue
+        lines[i] = line.replace("|", "\\|")
+
+
+def _book_lines() -> list[str]:
+    """The registry as reStructuredText: statement, how it is checked, errata, notes."""
+    from screwsym.book import entries
+
+    out: list[str] = []
+    section = None
+    for e in entries():
+        if e.section.split(".")[:2] != section:
+            section = e.section.split(".")[:2]
+            title = f"Section {'.'.join(section)}"
+            out += [title, "-" * len(title), ""]
+        title = _rst(f"({e.id}) {e.title}" if e.id[:1].isdigit() else f"{e.id}: {e.title}")
+        out += [title, "~" * len(title), ""]
+        out += [f"*{e.kind}*, Section {e.section}", "", ".. math::", ""]
+        out += ["   " + line for line in e.statement.splitlines()] + [""]
+        out += ["**How it is checked.** " + _rst(e.construction), ""]
+        checks = e.construct().checks
+        out += ["Checks:", ""]
+        for c in checks:
+            what = {"zero": "vanishes exactly", "nonzero": "counter-example, shown non-zero",
+                    "holds": "predicate is True", "nonnegative": "nonnegative"}[c.kind]
+            book = " (the book's wording, shown failing)" if c.book else ""
+            out.append(f"- ``{c.label}``: {what}{book}")
+        out.append("")
+        for label, items in (("Errata", e.errata), ("Notes", e.notes)):
+            if items:
+                out += [f"**{label}.**", ""]
+                out += ["- " + _rst(x) for x in items]
+                out.append("")
+    return out
+
+
+class BookRegistry(SphinxDirective):
+    """``.. screwsym-book::`` inserts every entry of the registry."""
+
+    def run(self) -> list[nodes.Node]:
+        container = nodes.section()
+        container.document = self.state.document
+        self.state.nested_parse(StringList(_book_lines(), source="screwsym.book"), 0, container,
+                                match_titles=True)
+        return container.children
+
+
+#: repository files that a page of the site includes: a notebook's link to the file goes there
+_INCLUDED = {str(ROOT / "benchmarks" / "README"): "benchmarks"}
+
+
+def _links_to_included_files(app, doctree) -> None:
+    from sphinx.addnodes import pending_xref
+
+    for node in doctree.findall(pending_xref):
+        target = node.get("reftarget", "")
+        if node.get("reftype") == "myst" and target in _INCLUDED:
+            node["reftarget"] = _INCLUDED[target]
+
+
+def setup(app):
+    app.connect("doctree-read", _links_to_included_files)
+    app.add_directive("screwsym-book", BookRegistry)
+    app.connect("autodoc-process-docstring", _plain_formulas)
+    return {"parallel_read_safe": True}
