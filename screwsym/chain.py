@@ -41,8 +41,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, Pow, Tuple, cos, count_ops, expand, sin, zeros
-from sympy.simplify.fu import TR10i
+from sympy import Expr, ImmutableMatrix, Tuple, zeros
 
 from ._basic import ScrewsymBasic
 from ._decide import is_zero_vector
@@ -55,48 +54,15 @@ from ._validation import (
 )
 from .displacement import exp
 from .screw import foot, pitch
+from .tidy import tidy
 from .transform import Transform
 from .twist import Twist
 
-__all__ = ["Chain", "tidy"]
-
-
-def _pythagoras(e: Expr) -> Expr:
-    """Replace ``sin(a)**2`` by ``1 - cos(a)**2`` where both squares occur, if that is shorter."""
-    squares = {
-        p.base.args[0]
-        for p in e.atoms(Pow)
-        if p.exp == 2 and isinstance(p.base, sin)
-    }
-    both = [a for a in squares if e.has(cos(a) ** 2)]
-    if not both:
-        return e
-    candidate = expand(e.xreplace({sin(a) ** 2: 1 - cos(a) ** 2 for a in both}))
-    return candidate if count_ops(candidate) < count_ops(e) else e
-
-
-def tidy(e: Any) -> Expr:
-    r"""Tidy a trigonometric polynomial without ``simplify``.
-
-    ``expand``; then ``sin(a)^2 -> 1 - cos(a)^2`` where both squares occur and
-    that shortens the expression; then products of sines and cosines gathered
-    into sines and cosines of sums (``sympy.simplify.fu.TR10i``).  The result
-    equals the input identically (each step is an identity).
-
-    >>> from sympy import symbols, sin, cos
-    >>> from screwsym.chain import tidy
-    >>> a, b = symbols("a b", real=True)
-    >>> tidy(cos(a)*cos(b) - sin(a)*sin(b) + 3*sin(b)**2 + 3*cos(b)**2)
-    cos(a + b) + 3
-    """
-    e = expand(e)
-    if not e.has(sin, cos):
-        return e
-    return TR10i(_pythagoras(e))
+__all__ = ["Chain"]
 
 
 def _tidy_matrix(m: ImmutableMatrix) -> ImmutableMatrix:
-    return ImmutableMatrix(m.applyfunc(tidy))
+    return ImmutableMatrix(tidy(m))
 
 
 def _tidy_transform(T: Transform) -> Transform:

@@ -31,6 +31,7 @@ from sympy import Expr, ImmutableMatrix, S, acos, cos, pi, sin, sqrt, zeros
 
 from ._decide import is_zero, is_zero_scaled, is_zero_vector, is_zero_vector_scaled
 from ._validation import check_instance, check_scalar, check_screw
+from .tidy import tidy
 from .transform import Transform, skew
 from .twist import Twist
 
@@ -116,7 +117,7 @@ def exp(twist: Any, theta: Any) -> Transform:
     p = (ImmutableMatrix.eye(3) - R) * r + (h * theta) * omega
     if all(e.is_number for e in p) or is_zero(ww - 1) is True:
         p = p.applyfunc(lambda e: e.expand())
-    return Transform._new(R, p)
+    return tidy(Transform._new(R, p))
 
 
 def _half_turn(c: Expr) -> bool:

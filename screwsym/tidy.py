@@ -58,6 +58,7 @@ from sympy import (
     Tuple,
     cos,
     count_ops,
+    expand,
     factor,
     sin,
 )
@@ -70,6 +71,7 @@ from sympy.polys.domains import QQ, ZZ
 from sympy.polys.monomials import monomial_min
 from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
 from sympy.polys.rings import ring
+from sympy.simplify.fu import TR10i
 
 from ._basic import ScrewsymBasic
 from ._validation import check_count, check_tidy_input
@@ -214,7 +216,25 @@ def _rewrite(e: Expr) -> Expr:
     except (PolynomialError, GeneratorsError, CoercionFailed):  # pragma: no cover
         return _smallest(candidates)  # a form the polynomial rings refuse
     candidates += [x.xreplace(thaw) for x in forms]
+    if not rational and relations:
+        candidates.append(_sum_of_angles(e))
     return _smallest(candidates)
+
+
+def _sum_of_angles(e: Expr) -> Expr:
+    """A trigonometric polynomial with products gathered into sines and cosines of sums.
+
+    ``expand``; ``sin(a)**2 -> 1 - cos(a)**2`` where both squares occur (if shorter);
+    then SymPy's ``TR10i`` (``cos(a)cos(b) - sin(a)sin(b) -> cos(a + b)``).  This is
+    the form a chain's forward kinematics reads best in.
+    """
+    e = expand(e)
+    squares = {p.base.args[0] for p in e.atoms(Pow) if p.exp == 2 and isinstance(p.base, sin)}
+    both = [a for a in squares if e.has(cos(a) ** 2)]
+    if both:
+        reduced = expand(e.xreplace({sin(a) ** 2: 1 - cos(a) ** 2 for a in both}))
+        e = _smallest([e, reduced])
+    return TR10i(e)
 
 
 def _smallest(candidates: list) -> Expr:

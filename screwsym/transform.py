@@ -47,6 +47,7 @@ from ._validation import (
     check_vector,
 )
 from .screw import Screw
+from .tidy import tidy
 
 __all__ = ["Transform", "skew", "adjoint"]
 
@@ -306,7 +307,7 @@ class Transform(ScrewsymBasic):
         if isinstance(obj, Screw):
             S = self.R * obj.S
             S0 = self.R * obj.S0 + self.p.cross(S)
-            return type(obj)(S, S0)
+            return tidy(type(obj)(S, S0))
         x = check_point_or_direction(obj, "obj")
         return ImmutableMatrix(self.R * x) if direction else ImmutableMatrix(self.R * x + self.p)
 

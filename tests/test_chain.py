@@ -18,8 +18,7 @@ from sympy import (
     trigsimp,
 )
 
-from screwsym import Chain, Transform, Twist, Wrench, exp, lambdify
-from screwsym.chain import tidy
+from screwsym import Chain, Transform, Twist, Wrench, exp, lambdify, tidy
 from screwsym.displacement import se3_matrix
 
 q1, q2, q3 = q = symbols("q1:4", real=True)
@@ -101,7 +100,7 @@ def test_tidy_is_an_identity_and_gathers_sums():
     assert is_exactly_zero(Matrix([tidy(e) - e]))
     assert count_ops(tidy(e)) < count_ops(expand(e))
     assert tidy(3 * sin(a) ** 2 + 3 * cos(a) ** 2) == 3
-    assert tidy(a * (a + 1)) == a**2 + a
+    assert count_ops(tidy(a * (a + 1))) <= count_ops(a**2 + a)
 
 
 def test_tidied_jacobian_is_no_larger_than_the_raw_product(rph):
