@@ -4,39 +4,11 @@ from __future__ import annotations
 
 import difflib
 import re
-from collections.abc import Callable
 
-from ._entry import Construction, Entry
+from ._entry import Entry
+from ._statement import _REGISTRY
 
-__all__ = ["statement", "entries", "entry", "ids"]
-
-_REGISTRY: dict[str, Entry] = {}
-
-
-def statement(
-    id: str,
-    section: str,
-    title: str,
-    latex: str,
-    kind: str,
-    construction: str,
-    *,
-    errata: tuple[str, ...] = (),
-    notes: tuple[str, ...] = (),
-) -> Callable[[Callable[[Construction], None]], Callable[[Construction], None]]:
-    """Register the decorated construction as the entry ``id``."""
-
-    def register(build: Callable[[Construction], None]) -> Callable[[Construction], None]:
-        if id in _REGISTRY:
-            raise ValueError(f"id: entry {id!r} is registered twice")
-        _REGISTRY[id] = Entry(
-            id, section, title, latex.strip(), kind, " ".join(construction.split()), build,
-            tuple(errata), tuple(notes),
-        )
-        return build
-
-    return register
-
+__all__ = ["entries", "entry", "ids"]
 
 def _load() -> None:
     if not _REGISTRY:

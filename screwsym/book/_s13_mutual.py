@@ -14,7 +14,7 @@ from ._common import (
     ss,
     vec,
 )
-from ._registry import statement
+from ._statement import statement
 
 _SEC = "1.3"
 _CONVENTION = (

@@ -5,7 +5,7 @@ from __future__ import annotations
 from sympy import Matrix
 
 from ._common import Z3, book_cross, book_dot, real, ss, vec
-from ._registry import statement
+from ._statement import statement
 
 _SEC = "1.4.1"
 

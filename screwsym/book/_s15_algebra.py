@@ -5,7 +5,7 @@ from __future__ import annotations
 from sympy import cos, pi, sin, symbols
 
 from ._common import Z3, book_cross, book_dot, canonical_pair, generic_lines, real, ss, stack, vec
-from ._registry import statement
+from ._statement import statement
 
 _SEC = "1.5"
 

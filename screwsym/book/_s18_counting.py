@@ -5,7 +5,7 @@ from __future__ import annotations
 from sympy import Matrix, Rational, symbols
 
 from ._common import book_cross, book_dot, ss, stack
-from ._registry import statement
+from ._statement import statement
 
 _POINT = {"a": Rational(2, 7), "b": Rational(-3, 5), "u": Rational(2, 3), "v": Rational(-5, 4),
           "h": Rational(1, 3), "rho": 2}
