@@ -131,10 +131,15 @@ def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
     if _half_turn(c):
         # a half-turn: R = I + 2 K^2, so omega omega^T = (R + I)/2; pick a column with a
         # non-zero diagonal (the sign of the axis does not matter for a half-turn)
+        # non-zero diagonal, the largest: a float diagonal that should be 0 carries rounding,
+        # and dividing by its root would give a far from unit axis
         P = (R + ImmutableMatrix.eye(3)) / 2
-        for i in range(3):
-            if is_zero(P[i, i]) is False:
-                return P[:, i] / sqrt(P[i, i]), s
+        found = [i for i in range(3) if is_zero(P[i, i]) is False]
+        if found:
+            if all(P[i, i].is_comparable for i in found):
+                found = [max(found, key=lambda i: P[i, i])]
+            i = found[0]
+            return P[:, i] / sqrt(P[i, i]), s
         raise ValueError(f"T: cannot decide the axis of this half-turn, R = {R.tolist()}")
     vee = ImmutableMatrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
     return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s
@@ -206,7 +211,7 @@ def log(T: Any) -> tuple[Twist, Expr]:
     if half_turn:
         # fix the sign: the first non-zero component positive
         for e in omega:
-            if is_zero(e) is False:
+            if is_zero_scaled(e, S.One) is False:  # a unit axis: rounding residue is zero
                 if e.is_negative:
                     omega = -omega
                 break

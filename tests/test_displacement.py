@@ -150,3 +150,25 @@ def test_log_of_float_motions_follows_the_float_policy():
     )
     twist, d = log(Transform.translation([0.0, 3.0, 4.0]))
     assert abs(d - 5) < 1e-12 and twist.omega == Matrix([0, 0, 0])
+
+
+def test_log_of_a_float_half_turn_with_rounding_on_a_zero_diagonal():
+    # (R + I)/2 = omega omega^T has R[0, 0] + 1 = 2.2e-16 where omega_x = 0: the axis must come
+    # from the largest diagonal, not from the first one that is not exactly zero (which gave
+    # omega = (1.05e-8, 0, 0) and an exp(log(T)) off by 2)
+    R = [[-1 + 2.2e-16, 0, 0], [0, 0, 1.0], [0, 1.0, 0]]
+    T = Transform(R, [0, 0, 0])
+    twist, theta = log(T)
+    assert theta == pi
+    np.testing.assert_allclose(
+        np.array(twist.omega, dtype=float).ravel(), [0, np.sqrt(0.5), np.sqrt(0.5)], atol=1e-12
+    )
+    np.testing.assert_allclose(
+        np.array(exp(twist, theta).matrix.evalf(), dtype=float),
+        np.array(T.matrix, dtype=float),
+        atol=1e-12,
+    )
+    # rounding in the first component (-1.4e-16) does not decide the axis' sign
+    R = [[-1.0, -2e-16, 0], [-2e-16, 0, 1.0], [0, 1.0, 0]]
+    omega = log(Transform(R, [0, 0, 0]))[0].omega
+    assert abs(omega[0]) < 1e-15 and omega[1] > 0 and omega[2] > 0
