@@ -62,3 +62,32 @@ def test_readme_verify_output_is_what_the_cli_prints(capsys):
     ids = [a or b for a, b in ids]
     assert main(["verify", *ids, "--jobs", "1"]) == 0
     assert _normalise(capsys.readouterr().out) == _normalise(block.group(2))
+
+
+#: modules documented in sections of their own rather than in the module table
+_OWN_SECTION = ("screwsym.book", "screwsym.cli")
+
+
+def test_readme_module_table_lists_every_public_name():
+    import importlib
+    import pkgutil
+
+    import screwsym
+
+    rows = {
+        m.group(1): m.group(0)
+        for m in re.finditer(r"^\| `(screwsym\.[\w.]+)` \|.*$", README.read_text(), re.M)
+    }
+    missing = {}
+    for info in pkgutil.iter_modules(screwsym.__path__, "screwsym."):
+        name = info.name
+        if name.rpartition(".")[2].startswith("_") or name in _OWN_SECTION:
+            continue
+        if name not in rows:
+            missing[name] = ["(no row)"]
+            continue
+        names = importlib.import_module(name).__all__
+        absent = [a for a in names if not re.search(rf"`{re.escape(a)}[`(]", rows[name])]
+        if absent:
+            missing[name] = absent
+    assert missing == {}
