@@ -157,7 +157,12 @@ class H(Joint):
 
 
 class C(Joint):
-    """Cylindrical joint: rotation about and translation along one line (2 freedoms)."""
+    """Cylindrical joint: rotation about and translation along one line (2 freedoms).
+
+    >>> from screwsym.mechanism import C
+    >>> C([1, 0, 0], [0, 0, 1]).twists()
+    ScrewSystem(Twist([0, 0, 1], [0, -1, 0]), Twist([0, 0, 0], [0, 0, 1]))
+    """
 
     __slots__ = ()
     freedom = 2
@@ -176,6 +181,10 @@ class U(Joint):
     """Universal (Hooke) joint: rotations about two axes through ``point`` (2 freedoms).
 
     ``dir1`` is the axis fixed in the link nearer the base, ``dir2`` the other.
+
+    >>> from screwsym.mechanism import U
+    >>> U([0, 0, 1], [1, 0, 0], [0, 1, 0]).twists()
+    ScrewSystem(Twist([1, 0, 0], [0, 1, 0]), Twist([0, 1, 0], [-1, 0, 0]))
     """
 
     __slots__ = ()
@@ -195,7 +204,12 @@ class U(Joint):
 
 
 class S(Joint):
-    """Spherical joint: the three rotations about the axes x, y, z through ``point``."""
+    """Spherical joint: the three rotations about the axes x, y, z through ``point``.
+
+    >>> from screwsym.mechanism import S
+    >>> S([0, 0, 1]).twists().rank
+    3
+    """
 
     __slots__ = ()
     freedom = 3

@@ -419,11 +419,23 @@ class Screw(ScrewsymBasic):
         return self._apply(lambda m: m.evalf(n, **options))
 
     def expand(self, **hints):
-        """Expand every component."""
+        """Expand every component.
+
+        >>> from sympy import symbols
+        >>> t = symbols("t", real=True)
+        >>> Screw([(t + 1)**2, 0, 0], [0, 0, 0]).expand()
+        Screw([t**2 + 2*t + 1, 0, 0], [0, 0, 0])
+        """
         return self._apply(lambda m: m.expand(**hints))
 
     def applyfunc(self, f):
-        """Apply ``f`` to every one of the six components (e.g. ``cancel``)."""
+        """Apply ``f`` to every one of the six components (e.g. ``cancel``).
+
+        >>> from sympy import cos, sin, symbols, trigsimp
+        >>> t = symbols("t", real=True)
+        >>> Screw([cos(t)**2 + sin(t)**2, 0, 0], [0, 0, 0]).applyfunc(trigsimp)
+        Screw([1, 0, 0], [0, 0, 0])
+        """
         return self._apply(lambda m: m.applyfunc(f))
 
     # ------------------------------------------------------------ printing

@@ -233,7 +233,12 @@ class ScrewSystem(ScrewsymBasic):
         return _analysis(self.matrix.row_join(s.as_matrix())).rank == self.rank
 
     def union(self, other: ScrewSystem) -> ScrewSystem:
-        """The system spanned by the members of both (the sum of the spans)."""
+        """The system spanned by the members of both (the sum of the spans).
+
+        >>> from screwsym import ScrewSystem
+        >>> (ScrewSystem([1, 0, 0, 0, 0, 0]) | ScrewSystem([0, 1, 0, 0, 0, 0])).rank
+        2
+        """
         other = _check_system(other, "other")
         return ScrewSystem(*self.args, *other.args)
 
@@ -313,6 +318,14 @@ class ScrewSystem(ScrewsymBasic):
 
         The basis of a case is valid wherever its condition holds; ``None``
         where the rank of the case is ``None``.
+
+        >>> from sympy import symbols
+        >>> from screwsym import ScrewSystem, Twist
+        >>> a = symbols("a", real=True)
+        >>> RR = ScrewSystem(Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+        ...                  Twist.rotation([0, 0, 1], point=[a, 0, 0]))
+        >>> [(c, w.rank) for c, w in RR.reciprocal_cases()]
+        [(Ne(a, 0), 4), (Eq(a, 0), 5)]
         """
         kind = _DUAL_KIND[self.kind]
         return [
@@ -325,6 +338,14 @@ class ScrewSystem(ScrewsymBasic):
 
         Applying the substitution (``system.xreplace(subs)``) gives a system
         whose generic rank is the case's rank.
+
+        >>> from sympy import symbols
+        >>> from screwsym import ScrewSystem, Twist
+        >>> a = symbols("a", real=True)
+        >>> RR = ScrewSystem(Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+        ...                  Twist.rotation([0, 0, 1], point=[a, 0, 0]))
+        >>> RR.substitutions()
+        [(Ne(a, 0), {}), (Eq(a, 0), {a: 0})]
         """
         cases = _cases(self.matrix, check_count(max_cases, "max_cases"))
         return [(n.condition, dict(n.subs)) for n in cases]

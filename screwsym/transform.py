@@ -326,7 +326,13 @@ class Transform(ScrewsymBasic):
 
     # ------------------------------------------------------- SymPy integration
     def applyfunc(self, f) -> Transform:
-        """Apply ``f`` to every entry of ``R`` and ``p`` (e.g. ``trigsimp``); checked again."""
+        """Apply ``f`` to every entry of ``R`` and ``p`` (e.g. ``trigsimp``); checked again.
+
+        >>> from sympy import symbols
+        >>> t = symbols("t", real=True)
+        >>> Transform.rotation([0, 0, 1], t).applyfunc(lambda e: e.subs(t, 0))
+        Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[0, 0, 0])
+        """
         return Transform(self.R.applyfunc(f), self.p.applyfunc(f))
 
     def _eval_simplify(self, **kwargs):

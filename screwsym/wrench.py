@@ -68,6 +68,9 @@ class Wrench(Screw):
         r"""The moment of the wrench about ``point``: ``C_A = C_O - A x f`` (1.32).
 
         In lowest terms (``tidy=False``: as built); it holds for every value of the symbols.
+
+        >>> Wrench.force([0, 0, -10], point=[1, 0, 0]).moment_about([0, 1, 0]).T
+        Matrix([[10, 10, 0]])
         """
         return _shift_origin(self, check_vector(point, "point"), check_flag(tidy, "tidy")).S0
 
