@@ -170,8 +170,9 @@ def convert_from(value: Any, source: str, kind: type) -> Any:
         )
     c = CONVENTIONS[source]
     if kind is Transform:
-        T = Transform.from_matrix(value)
+        T = Transform.from_matrix(value, name="value")
         return T.inverse() if c.transform_inverse else T
     first, second = check_six(value, "value")
     swap = c.force_moment_first if kind is Wrench else not c.motion_angular_first
-    return kind(second, first) if swap else kind(first, second)
+    ours = ImmutableMatrix.vstack(second, first) if swap else ImmutableMatrix.vstack(first, second)
+    return kind.from_matrix(ours, name="value")

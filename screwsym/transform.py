@@ -191,8 +191,11 @@ class Transform(ScrewsymBasic):
         return cls._new(R, (ImmutableMatrix.eye(3) - R) * point)
 
     @classmethod
-    def from_matrix(cls, M: Any) -> Transform:
+    def from_matrix(cls, M: Any, *, name: str = "M") -> Transform:
         """The transform of the 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
+
+        Errors name the argument ``name`` (as :meth:`Screw.from_matrix
+        <screwsym.screw.Screw.from_matrix>`'s do).
 
         >>> Transform.from_matrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
         Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[5, 0, 0])
@@ -201,11 +204,11 @@ class Transform(ScrewsymBasic):
         ...
         ValueError: M: expected the last row [0, 0, 0, 1], got [0, 0, 1, 1]
         """
-        M = check_matrix(M, "M", (4, 4))
+        M = check_matrix(M, name, (4, 4))
         last = list(M[3, :])
         if any((e - target).is_zero is not True for e, target in zip(last, (0, 0, 0, 1), strict=True)):
-            raise ValueError(f"M: expected the last row [0, 0, 0, 1], got {last}")
-        return cls._new(check_rotation(M[:3, :3], "M[:3, :3]"), M[:3, 3])
+            raise ValueError(f"{name}: expected the last row [0, 0, 0, 1], got {last}")
+        return cls._new(check_rotation(M[:3, :3], f"{name}[:3, :3]"), M[:3, 3])
 
     # ------------------------------------------------------------------ parts
     @property

@@ -126,5 +126,14 @@ def test_bad_arguments():
         convert_from([0, 0, 1, 0, 0, 0], "pinocchio", "Twist")
     with pytest.raises(ValueError, match=r"value: expected a 6-vector \(S; S0\), got shape \(4, 4\)"):
         convert_from(ImmutableMatrix.eye(4), "pinocchio", Twist)
-    with pytest.raises(ValueError, match=r"M: expected a 4x4 matrix, got shape \(6, 1\)"):
+    # the errors name convert_from's argument, value, not the M of the constructor it calls
+    with pytest.raises(ValueError, match=r"^value: expected a 4x4 matrix, got shape \(6, 1\)"):
         convert_from(ImmutableMatrix.zeros(6, 1), "pinocchio", Transform)
+    with pytest.raises(ValueError, match=r"^value: expected the last row \[0, 0, 0, 1\]"):
+        convert_from([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]], "featherstone",
+                     Transform)
+    with pytest.raises(ValueError, match=r"^value\[:3, :3\]: expected an orthonormal matrix"):
+        convert_from([[1, 1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], "pinocchio",
+                     Transform)
+    with pytest.raises(ValueError, match=r"^value: a line vector needs S.S0 = 0 \(1.10\)"):
+        convert_from([1, 0, 0, 1, 0, 0], "spatialmath", LineVector)
