@@ -73,7 +73,7 @@ def _axis(value: Any, name: str) -> ImmutableMatrix:
 
 def _rotation(point: ImmutableMatrix, direction: ImmutableMatrix) -> Twist:
     """The unit-rate rotation about the line through ``point`` along ``direction`` (1.48)."""
-    return Twist(direction, point.cross(direction))
+    return Twist.rotation(direction, point=point)
 
 
 class Joint(ScrewsymBasic):
@@ -129,7 +129,7 @@ class P(Joint):
         return ScrewsymBasic.__new__(cls, _axis(direction, "direction"))
 
     def _twists(self):
-        return [Twist([0, 0, 0], self.args[0])]
+        return [Twist.translation(self.args[0])]
 
 
 class H(Joint):
@@ -153,7 +153,7 @@ class H(Joint):
 
     def _twists(self):
         r, u, h = self.args
-        return [Twist(u, r.cross(u) + h * u)]
+        return [Twist.screw_motion(u, point=r, pitch=h)]
 
 
 class C(Joint):
@@ -174,7 +174,7 @@ class C(Joint):
 
     def _twists(self):
         r, u = self.args
-        return [_rotation(r, u), Twist([0, 0, 0], u)]
+        return [_rotation(r, u), Twist.translation(u)]
 
 
 class U(Joint):
@@ -468,7 +468,7 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     rotations = spin.rank
     translations = twists.rank - rotations
     # the pure translations the platform has: its twists with omega = 0 (generic, polynomial)
-    pure = twists & ScrewSystem(*(Twist([0, 0, 0], e) for e in _E)) if translations else None
+    pure = twists & ScrewSystem(*(Twist.translation(e) for e in _E)) if translations else None
     moves = pure.basis().matrix[3:, :] if pure is not None else ImmutableMatrix.zeros(3, 0)
     return Mobility(
         dof=dof,
