@@ -1,8 +1,8 @@
 """The base of every screwsym SymPy object: a ``Basic`` that never evaluates a string.
 
-SymPy's ``subs``, ``xreplace``, ``diff`` and ``evalf(subs=...)`` sympify their
-arguments without ``strict=True``, so a string passed to them is parsed and
-evaluated as Python.  screwsym promises that text a user wrote is never run:
+SymPy's ``subs``, ``xreplace``, ``match``, ``matches``, ``diff`` and
+``evalf(subs=...)`` sympify their arguments without ``strict=True``, so a
+string passed to them is parsed and evaluated as Python.  screwsym promises that text a user wrote is never run:
 every screwsym object derives from :class:`ScrewsymBasic`, whose versions of
 these methods refuse strings (anywhere in their arguments) with a
 ``TypeError`` before SymPy sees them.
@@ -18,7 +18,7 @@ __all__ = ["ScrewsymBasic"]
 
 
 class ScrewsymBasic(Basic):
-    """A SymPy ``Basic`` whose ``subs``, ``xreplace``, ``diff`` and ``evalf`` refuse strings.
+    """A SymPy ``Basic`` whose ``subs``, ``xreplace``, ``match``, ``diff`` and ``evalf`` refuse strings.
 
     >>> from sympy import Symbol
     >>> from screwsym import Screw
@@ -40,6 +40,14 @@ class ScrewsymBasic(Basic):
     def xreplace(self, rule, *args, **kwargs):
         check_no_strings((rule, args, kwargs), "xreplace")
         return super().xreplace(rule, *args, **kwargs)
+
+    def match(self, pattern, *args, **kwargs):
+        check_no_strings((pattern, args, kwargs), "match")
+        return super().match(pattern, *args, **kwargs)
+
+    def matches(self, expr, *args, **kwargs):
+        check_no_strings((expr, args, kwargs), "matches")
+        return super().matches(expr, *args, **kwargs)
 
     def diff(self, *symbols, **kwargs):
         check_no_strings((symbols, kwargs), "diff")

@@ -188,6 +188,8 @@ def _untouched():
         (lambda s: s.diff(PAYLOAD), "diff"),
         (lambda s: s.evalf(subs={x: PAYLOAD}), "evalf"),
         (lambda s: s.n(subs={x: PAYLOAD}), "evalf"),
+        (lambda s: s.match(PAYLOAD), "match"),  # Basic.match sympifies without strict=True
+        (lambda s: s.matches(PAYLOAD), "matches"),
     ],
 )
 @pytest.mark.parametrize(
