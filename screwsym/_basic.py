@@ -17,6 +17,11 @@ from ._validation import check_no_strings
 __all__ = ["ScrewsymBasic"]
 
 
+def _values(kwargs: dict) -> tuple:
+    """The values of keyword arguments: their names are Python identifiers, never evaluated."""
+    return tuple(kwargs.values())
+
+
 class ScrewsymBasic(Basic):
     """A SymPy ``Basic`` whose ``subs``, ``xreplace``, ``match``, ``diff`` and ``evalf`` refuse strings.
 
@@ -34,23 +39,23 @@ class ScrewsymBasic(Basic):
     __slots__ = ()
 
     def subs(self, *args, **kwargs):
-        check_no_strings((args, kwargs), "subs")
+        check_no_strings((args, _values(kwargs)), "subs")
         return super().subs(*args, **kwargs)
 
     def xreplace(self, rule, *args, **kwargs):
-        check_no_strings((rule, args, kwargs), "xreplace")
+        check_no_strings((rule, args, _values(kwargs)), "xreplace")
         return super().xreplace(rule, *args, **kwargs)
 
     def match(self, pattern, *args, **kwargs):
-        check_no_strings((pattern, args, kwargs), "match")
+        check_no_strings((pattern, args, _values(kwargs)), "match")
         return super().match(pattern, *args, **kwargs)
 
     def matches(self, expr, *args, **kwargs):
-        check_no_strings((expr, args, kwargs), "matches")
+        check_no_strings((expr, args, _values(kwargs)), "matches")
         return super().matches(expr, *args, **kwargs)
 
     def diff(self, *symbols, **kwargs):
-        check_no_strings((symbols, kwargs), "diff")
+        check_no_strings((symbols, _values(kwargs)), "diff")
         return self._eval_diff_parts(*symbols, **kwargs)
 
     def _eval_diff_parts(self, *symbols, **kwargs):
@@ -58,7 +63,7 @@ class ScrewsymBasic(Basic):
         return self.func(*(a.diff(*symbols, **kwargs) for a in self.args))
 
     def evalf(self, n: int = 15, subs=None, **options):
-        check_no_strings((subs, options), "evalf")
+        check_no_strings((subs, _values(options)), "evalf")
         return self._eval_evalf_parts(n, subs=subs, **options)
 
     def _eval_evalf_parts(self, n, **options):

@@ -229,6 +229,18 @@ def test_the_string_guard_still_substitutes_numbers():
     assert s.evalf(3, subs={x: 2}) == Screw([Float(2, 3), 0, 0], [0, Float(4, 3), 0])
 
 
+def test_the_string_guard_lets_keyword_arguments_through():
+    # keyword names are strings but never evaluated: they were refused ("got str 'chop'")
+    s = Screw([x, 0, 0], [0, x**2, 0])
+    assert s.subs(x, 2, evaluate=True) == Screw([2, 0, 0], [0, 4, 0])
+    assert s.evalf(3, subs={x: Rational(1, 3)}, chop=True) == s.evalf(3, subs={x: Rational(1, 3)})
+    assert s.diff(x, evaluate=True) == Screw([1, 0, 0], [0, 2 * x, 0])
+    assert s.match(s) == {}
+    with pytest.raises(TypeError, match="subs: strings are never evaluated"):
+        s.subs(x, 2, simultaneous=PAYLOAD)
+    assert _untouched()
+
+
 # ---------------------------------------------------------- NumPy, names
 def test_numpy_conversion_in_ray_order():
     s = Screw([1, 1, 0], [1, 0, 0])
