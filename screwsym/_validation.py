@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from sympy import Basic, Expr, ImmutableMatrix, S
+from sympy import Basic, Expr, Float, ImmutableMatrix, S
 from sympy.core.sympify import SympifyError, sympify
 from sympy.matrices import MatrixBase
 
@@ -490,8 +490,6 @@ def check_screw_system_members(values: Any, name: str, kinds: dict) -> tuple:
     ...
     TypeError: screws: expected screws of one kind, got Twist and Wrench
     """
-    from sympy import Float
-
     root = kinds[None]
     values = tuple(values)
     found: list = []
@@ -508,14 +506,31 @@ def check_screw_system_members(values: Any, name: str, kinds: dict) -> tuple:
     cls = kinds[found[0]] if found else root
     screws = tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
     for i, s in enumerate(screws):
-        floats = s.atoms(Float)
-        if floats:
-            raise ValueError(
-                f"{name}[{i}]: expected exact entries (integers, rationals, algebraic numbers, "
-                f"symbols), got the float {min(floats)}; screw systems decide ranks exactly "
-                "(use Rational, or screwsym.mechanism_numeric for floating point)"
-            )
+        check_exact(s, f"{name}[{i}]")
     return screws
+
+
+def check_exact(value: Any, name: str) -> Any:
+    """Return the checked SymPy object ``value`` if it holds no float, else ``ValueError``.
+
+    Screw systems and the joints of a mechanism decide ranks exactly.
+
+    >>> from sympy import ImmutableMatrix, Rational
+    >>> check_exact(ImmutableMatrix([Rational(1, 2), 0, 0]), "point").T
+    Matrix([[1/2, 0, 0]])
+    >>> check_exact(ImmutableMatrix([0.5, 0, 0]), "point")
+    Traceback (most recent call last):
+    ...
+    ValueError: point: expected exact entries (integers, rationals, algebraic numbers, symbols), got the float 0.500000000000000; screw systems decide ranks exactly (use Rational, or screwsym.mechanism_numeric for floating point)
+    """
+    floats = value.atoms(Float)
+    if floats:
+        raise ValueError(
+            f"{name}: expected exact entries (integers, rationals, algebraic numbers, "
+            f"symbols), got the float {min(floats)}; screw systems decide ranks exactly "
+            "(use Rational, or screwsym.mechanism_numeric for floating point)"
+        )
+    return value
 
 
 def check_count(value: Any, name: str) -> int:

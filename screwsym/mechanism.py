@@ -46,7 +46,7 @@ from typing import Any, NamedTuple
 from sympy import And, ImmutableMatrix, cancel, false, true
 
 from ._basic import ScrewsymBasic
-from ._validation import check_count, check_nonzero_vector, check_scalar, check_vector
+from ._validation import check_count, check_exact, check_nonzero_vector, check_scalar, check_vector
 from .system import MAX_CASES, ScrewSystem, _analysis
 from .twist import Twist
 
@@ -68,7 +68,13 @@ _E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
 
 
 def _axis(value: Any, name: str) -> ImmutableMatrix:
-    return check_nonzero_vector(value, name, "a joint axis needs a non-zero direction")
+    return check_exact(
+        check_nonzero_vector(value, name, "a joint axis needs a non-zero direction"), name
+    )
+
+
+def _point(value: Any, name: str) -> ImmutableMatrix:
+    return check_exact(check_vector(value, name), name)
 
 
 def _rotation(point: ImmutableMatrix, direction: ImmutableMatrix) -> Twist:
@@ -107,7 +113,7 @@ class R(Joint):
 
     def __new__(cls, point: Any, direction: Any):
         return ScrewsymBasic.__new__(
-            cls, check_vector(point, "point"), _axis(direction, "direction")
+            cls, _point(point, "point"), _axis(direction, "direction")
         )
 
     def _twists(self):
@@ -146,9 +152,9 @@ class H(Joint):
     def __new__(cls, point: Any, direction: Any, pitch: Any):
         return ScrewsymBasic.__new__(
             cls,
-            check_vector(point, "point"),
+            _point(point, "point"),
             _axis(direction, "direction"),
-            check_scalar(pitch, "pitch"),
+            check_exact(check_scalar(pitch, "pitch"), "pitch"),
         )
 
     def _twists(self):
@@ -169,7 +175,7 @@ class C(Joint):
 
     def __new__(cls, point: Any, direction: Any):
         return ScrewsymBasic.__new__(
-            cls, check_vector(point, "point"), _axis(direction, "direction")
+            cls, _point(point, "point"), _axis(direction, "direction")
         )
 
     def _twists(self):
@@ -193,7 +199,7 @@ class U(Joint):
     def __new__(cls, point: Any, dir1: Any, dir2: Any):
         return ScrewsymBasic.__new__(
             cls,
-            check_vector(point, "point"),
+            _point(point, "point"),
             _axis(dir1, "dir1"),
             _axis(dir2, "dir2"),
         )
@@ -215,7 +221,7 @@ class S(Joint):
     freedom = 3
 
     def __new__(cls, point: Any):
-        return ScrewsymBasic.__new__(cls, check_vector(point, "point"))
+        return ScrewsymBasic.__new__(cls, _point(point, "point"))
 
     def _twists(self):
         return [_rotation(self.args[0], ImmutableMatrix(e)) for e in _E]

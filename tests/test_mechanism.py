@@ -304,6 +304,23 @@ def test_bad_input():
         H(O, Z, "2")
 
 
+def test_joints_refuse_floats_naming_the_argument():
+    # the ranks are exact: a float was accepted here and refused later by the limb's screw
+    # system, as "screws[0]: ... got the float -0.5" (a moment the user never wrote)
+    exact = r"expected exact entries .* got the float 0.5"
+    with pytest.raises(ValueError, match=rf"^point: {exact}"):
+        R([0.5, 0, 0], Z)
+    with pytest.raises(ValueError, match=rf"^direction: {exact}"):
+        P([0, 0.5, 1])
+    with pytest.raises(ValueError, match=rf"^pitch: {exact}"):
+        H(O, Z, 0.5)
+    with pytest.raises(ValueError, match=rf"^dir1: {exact}"):
+        U(O, [0.5, 1, 0], Z)
+    with pytest.raises(ValueError, match=rf"^point: {exact}"):
+        S([0, 0, 0.5])
+    assert R([Rational(1, 2), 0, 0], Z).twists().rank == 1
+
+
 # ---------------------------------------------------------------- numeric
 
 
