@@ -257,7 +257,9 @@ class Screw(ScrewsymBasic):
         S_ = check_nonzero_vector(direction, "direction", "an axis needs a non-zero direction")
         h = check_pitch(pitch, "pitch")
         m = check_scalar(magnitude, "magnitude")
-        return cls._rebuild(m * S_, m * (r.cross(S_) + h * S_), "point, direction, pitch")
+        # a kind that refuses the result (a line vector of zero direction) names the culprit
+        label = "magnitude" if is_zero(m) is True else "point, direction, pitch"
+        return cls._rebuild(m * S_, m * (r.cross(S_) + h * S_), label)
 
     @classmethod
     def through(cls, A: VectorLike, B: VectorLike):

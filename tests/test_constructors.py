@@ -88,6 +88,9 @@ def test_wrench_from_axis_is_the_screws():
          "point, direction, pitch: a line vector needs S.S0 = 0 (1.10), got S.S0 = 1"),
         (lambda: LineVector.couple([0, 0, 1]),
          "C: a line vector needs a non-zero direction S, got [0, 0, 0]"),
+        # the error named "point, direction, pitch", none of which is at fault
+        (lambda: LineVector.from_axis([0, 0, 0], [1, 0, 0], magnitude=0),
+         "magnitude: a line vector needs a non-zero direction S, got [0, 0, 0]"),
         (lambda: LineVector.through([1, 2, 3], [1, 2, 3]),
          "A, B: expected two distinct points, got A = B = [1, 2, 3]"),
     ],
