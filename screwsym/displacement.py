@@ -139,7 +139,7 @@ def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
             if all(P[i, i].is_comparable for i in found):
                 found = [max(found, key=lambda i: P[i, i])]
             i = found[0]
-            return P[:, i] / sqrt(P[i, i]), s
+            return P[:, i] / sqrt(P[i, i]), S.Zero  # sin(pi), not the root of a rounding residue
         raise ValueError(f"T: cannot decide the axis of this half-turn, R = {R.tolist()}")
     vee = ImmutableMatrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
     return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s

@@ -172,3 +172,8 @@ def test_log_of_a_float_half_turn_with_rounding_on_a_zero_diagonal():
     R = [[-1.0, -2e-16, 0], [-2e-16, 0, 1.0], [0, 1.0, 0]]
     omega = log(Transform(R, [0, 0, 0]))[0].omega
     assert abs(omega[0]) < 1e-15 and omega[1] > 0 and omega[2] > 0
+    # cos(theta) = -1 + 1e-16 is a half-turn: sin(theta) is 0, not sqrt(2e-16) = 1.4e-8, which
+    # moved the axis by 3.7e-9
+    R = [[-1.0, 0, 0], [0, -1.0 + 2e-16, 0], [0, 0, 1.0]]
+    twist, theta = log(Transform(R, [1.0, 0, 0]))
+    assert theta == pi and twist.v_O[0] == 0 and twist.v_O[1] == -0.5
