@@ -27,9 +27,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, S, acos, cos, pi, sin, sqrt, zeros
+from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, cos, pi, sin, sqrt, zeros
 
-from ._decide import is_zero, is_zero_scaled, is_zero_vector, is_zero_vector_scaled
+from ._decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
 from ._validation import check_instance, check_scalar, check_screw
 from .tidy import tidy
 from .transform import Transform, skew
@@ -142,6 +142,10 @@ def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
             return P[:, i] / sqrt(P[i, i]), S.Zero  # sin(pi), not the root of a rounding residue
         raise ValueError(f"T: cannot decide the axis of this half-turn, R = {R.tolist()}")
     vee = ImmutableMatrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    if float_tau(*R) is not None:
+        # floats: sin(theta) from |vee| = 2 sin(theta), not from cos(theta), which near 1 has
+        # lost half its digits (a turn by 1e-5 gave |omega| = 1 - 4e-8, one by 1e-8 a NaN)
+        s = norm(vee) / 2
     return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s
 
 
@@ -166,6 +170,8 @@ def log(T: Any) -> tuple[Twist, Expr]:
 
     Exact: the angle is ``acos((tr R - 1)/2)`` (a number such as ``pi/3`` when
     SymPy knows it), the axis and the moment are exact algebraic numbers.
+    A float rotation takes ``sin theta`` from the skew part of ``R`` and the
+    angle from ``atan2``, which keeps every digit of small angles.
     The translation ``p`` may be symbolic; a rotation whose angle is symbolic
     (``tr R`` not a number) is refused: ``acos`` of a symbolic cosine is not
     known to be real, and which case applies is not decided.
@@ -206,8 +212,15 @@ def log(T: Any) -> tuple[Twist, Expr]:
         d = sqrt(p.dot(p))
         return Twist(zeros(3, 1), (p / d).applyfunc(_expand_number)), d
     half_turn = _half_turn(c)
-    theta = pi if half_turn else acos(c)
     omega, s = _rotation_axis(R, c)
+    floats = float_tau(*R) is not None
+    if half_turn:
+        theta = pi
+    elif floats:  # atan2 keeps every digit near 0 and pi; a float, as acos(c) gave
+        digits = min(f._prec for f in R.atoms(Float)) * 0.30103
+        theta = atan2(s, c).evalf(max(15, int(digits) + 1))
+    else:
+        theta = acos(c)
     if half_turn:
         # fix the sign: the first non-zero component positive
         for e in omega:
@@ -217,7 +230,9 @@ def log(T: Any) -> tuple[Twist, Expr]:
                 break
     along = omega.dot(p)
     p_perp = p - along * omega
-    r = p_perp / 2 + (s / (2 * (1 - c))) * omega.cross(p)
+    # cot(theta/2) = sin/(1 - cos) = (1 + cos)/sin; for floats the form without cancellation
+    cot_half = (1 + c) / s if floats and c > 0 else s / (1 - c)
+    r = p_perp / 2 + (cot_half / 2) * omega.cross(p)
     h = along / theta
     v = r.cross(omega) + h * omega
     return Twist(omega, v.applyfunc(_expand_number)), theta

@@ -177,3 +177,18 @@ def test_log_of_a_float_half_turn_with_rounding_on_a_zero_diagonal():
     R = [[-1.0, 0, 0], [0, -1.0 + 2e-16, 0], [0, 0, 1.0]]
     twist, theta = log(Transform(R, [1.0, 0, 0]))
     assert theta == pi and twist.v_O[0] == 0 and twist.v_O[1] == -0.5
+
+
+@pytest.mark.parametrize("angle", [1e-8, 1e-5, 0.3, 2.0, 3.14159])
+def test_log_of_a_float_turn_keeps_a_unit_axis_at_every_angle(angle):
+    # theta was acos(cos theta): near 0 it keeps half the digits (a turn by 1e-5 gave
+    # |omega| = 1 - 4e-8) and at 1e-8 cos theta rounds to 1 (a NaN and a TypeError)
+    T = Transform.rotation([0, 0, 1], angle, point=[1.0, 0, 0]) @ Transform.translation([0, 0, 0.5])
+    twist, theta = log(T)
+    assert abs(float(theta) - angle) <= 1e-15 * angle
+    assert abs(np.linalg.norm(np.array(twist.omega, dtype=float)) - 1) <= 1e-15
+    np.testing.assert_allclose(
+        np.array(exp(twist, theta).matrix.evalf(), dtype=float),
+        np.array(T.matrix, dtype=float),
+        atol=1e-15,
+    )
