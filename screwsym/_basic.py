@@ -40,6 +40,11 @@ class ScrewsymBasic(Basic):
 
     def subs(self, *args, **kwargs):
         check_no_strings((args, _values(kwargs)), "subs")
+        if kwargs.get("simultaneous"):
+            # SymPy's simultaneous substitution passes through placeholder symbols with no
+            # assumptions, which the constructors (real components) refuse: substitute in
+            # each part instead, where the placeholders never meet a constructor
+            return self.func(*(a.subs(*args, **kwargs) for a in self.args))
         return super().subs(*args, **kwargs)
 
     def xreplace(self, rule, *args, **kwargs):

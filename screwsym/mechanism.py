@@ -49,6 +49,7 @@ from ._basic import ScrewsymBasic
 from ._validation import check_count, check_exact, check_nonzero_vector, check_scalar, check_vector
 from .system import MAX_CASES, ScrewSystem, _analysis
 from .twist import Twist
+from .wrench import Wrench
 
 __all__ = [
     "Joint",
@@ -358,7 +359,7 @@ class ParallelMechanism(ScrewsymBasic):
 
     def constraint_system(self) -> ScrewSystem:
         """The union of the limbs' constraint systems: every wrench on the platform."""
-        return ScrewSystem(*(w for limb in self.args for w in limb.constraints()))
+        return ScrewSystem(*(w for limb in self.args for w in limb.constraints()), kind=Wrench)
 
     def twist_system(self) -> ScrewSystem:
         """The platform's instantaneous motions: the reciprocal of :meth:`constraint_system`."""
@@ -459,7 +460,7 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     n = 2 + sum(len(limb.args) - 1 for limb in limbs)
     limb_twists = [limb.twists() for limb in limbs]
     limb_ranks = [T.rank for T in limb_twists]
-    all_twists = ScrewSystem(*(t for T in limb_twists for t in T))
+    all_twists = ScrewSystem(*(t for T in limb_twists for t in T), kind=Twist)
     common = 6 - all_twists.rank
     constraint_counts = [6 - r for r in limb_ranks]
     W = mech.constraint_system()

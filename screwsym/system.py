@@ -51,6 +51,7 @@ from sympy import (
     true,
     zeros,
 )
+from sympy.core.symbol import Str
 from sympy.logic.boolalg import Boolean
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyutils import parallel_dict_from_expr
@@ -63,6 +64,16 @@ from .twist import Twist
 from .wrench import Wrench
 
 __all__ = ["ScrewSystem"]
+
+#: the kinds an empty system can remember, by the name its marker argument holds
+_KIND_NAMES = {"Twist": Twist, "Wrench": Wrench}
+
+
+def _kind_of(system) -> type | None:
+    """Twist or Wrench when the system is of one, else None (plain screws)."""
+    kind = system.kind
+    return kind if kind in (Twist, Wrench) else None
+
 
 #: the kind of the reciprocal system: twists and wrenches are each other's reciprocals
 _DUAL_KIND = {Twist: Wrench, Wrench: Twist, Screw: Screw}
@@ -149,12 +160,33 @@ class ScrewSystem(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, *screws: Any):
+    def __new__(cls, *screws: Any, kind: type | None = None):
+        # An empty system keeps its kind as a marker argument, so that ``func(*args)``
+        # rebuilds it and its reciprocal is of the dual kind.
+        if len(screws) == 1 and isinstance(screws[0], Str):
+            marker, screws = screws[0].name, ()
+            kind = _KIND_NAMES.get(marker)
+            if kind is None:
+                raise ValueError(f"screws: expected screws, got the unknown kind marker {marker!r}")
         members = check_screw_system_members(screws, "screws", _KINDS)
+        if kind is not None and kind not in _KIND_NAMES.values():
+            raise TypeError(f"kind: expected Twist or Wrench, got {kind!r}")
+        if members and kind is not None and not isinstance(members[0], kind):
+            raise TypeError(
+                f"screws: expected members of kind {kind.__name__}, got {type(members[0]).__name__}"
+            )
+        if not members and kind is not None:
+            return ScrewsymBasic.__new__(cls, Str(kind.__name__))
         return ScrewsymBasic.__new__(cls, *members)
 
     def _eval_diff_parts(self, *symbols, **kwargs):
-        return self.func(*(s.diff(*symbols, **kwargs) for s in self.args))
+        return self.func(*(s.diff(*symbols, **kwargs) for s in self.screws), kind=self._marked_kind)
+
+    def _sympystr(self, printer) -> str:
+        marked = self._marked_kind
+        if marked is not None:
+            return f"ScrewSystem(kind={marked.__name__})"
+        return "ScrewSystem(" + ", ".join(printer._print(s) for s in self.screws) + ")"
 
     def _latex(self, printer) -> str:
         r"""The span of the members, each in the book's notation.
@@ -164,20 +196,36 @@ class ScrewSystem(ScrewsymBasic):
         >>> print(latex(ScrewSystem(Twist.translation([0, 0, 1]))))
         \operatorname{span}\left\{\left(0 \quad 0 \quad 0;\; 0 \quad 0 \quad 1\right)\right\}
         """
-        if not self.args:
+        if not self.screws:
             return r"\left\{0\right\}"
-        inner = ",\\; ".join(printer._print(s) for s in self.args)
+        inner = ",\\; ".join(printer._print(s) for s in self.screws)
         return r"\operatorname{span}\left\{" + inner + r"\right\}"
 
     # --------------------------------------------------------------- parts
     @property
     def screws(self) -> tuple[Screw, ...]:
         """The member screws, in order."""
-        return self.args
+        return tuple(a for a in self.args if not isinstance(a, Str))
+
+    @property
+    def _marked_kind(self) -> type | None:
+        """The kind an empty system was built with (``kind=``), else None."""
+        if self.args and isinstance(self.args[0], Str):
+            return _KIND_NAMES[self.args[0].name]
+        return None
 
     @property
     def kind(self) -> type:
-        """``Twist`` or ``Wrench`` when the members are, else ``Screw`` (also for no members)."""
+        """``Twist`` or ``Wrench`` when the members are (or an empty system was built with
+        ``kind=``), else ``Screw``.
+
+        >>> from screwsym import ScrewSystem, Twist, Wrench
+        >>> ScrewSystem(kind=Twist).kind, ScrewSystem(kind=Twist).reciprocal().kind
+        (<class 'screwsym.twist.Twist'>, <class 'screwsym.wrench.Wrench'>)
+        """
+        marked = self._marked_kind
+        if marked is not None:
+            return marked
         for k in (Twist, Wrench):
             if self.args and isinstance(self.args[0], k):
                 return k
@@ -186,15 +234,15 @@ class ScrewSystem(ScrewsymBasic):
     @property
     def matrix(self) -> ImmutableMatrix:
         """The 6 x n matrix whose columns are the members ``(S; S0)``, in order."""
-        if not self.args:
+        if not self.screws:
             return ImmutableMatrix(zeros(6, 0))
-        return ImmutableMatrix.hstack(*(s.as_matrix() for s in self.args))
+        return ImmutableMatrix.hstack(*(s.as_matrix() for s in self.screws))
 
     def __len__(self) -> int:
-        return len(self.args)
+        return len(self.screws)
 
     def __iter__(self):
-        return iter(self.args)
+        return iter(self.screws)
 
     # ----------------------------------------------------------- generic
     @property
@@ -214,7 +262,7 @@ class ScrewSystem(ScrewsymBasic):
         ScrewSystem(Screw([1, 0, 0], [0, 0, 0]), Screw([0, 0, 0], [1, 0, 0]))
         """
         pivots = _analysis(self.matrix).pivots
-        return self.func(*(self.args[i] for i in pivots))
+        return ScrewSystem(*(self.screws[i] for i in pivots), kind=_kind_of(self))
 
     def contains(self, screw: Any) -> bool:
         """Whether ``screw`` lies in the span, generically (for generic values of the symbols).
@@ -228,7 +276,7 @@ class ScrewSystem(ScrewsymBasic):
         (True, False)
         """
         s = check_screw(screw, "screw", self.kind)
-        if not self.args:
+        if not self.screws:
             return _analysis(ImmutableMatrix(s.as_matrix())).rank == 0
         return _analysis(self.matrix.row_join(s.as_matrix())).rank == self.rank
 
@@ -240,7 +288,8 @@ class ScrewSystem(ScrewsymBasic):
         2
         """
         other = _check_system(other, "other")
-        return ScrewSystem(*self.args, *other.args)
+        kinds = {k for k in (_kind_of(self), _kind_of(other)) if k is not None}
+        return ScrewSystem(*self.screws, *other.screws, kind=kinds.pop() if len(kinds) == 1 else None)
 
     __or__ = union
 
@@ -254,7 +303,7 @@ class ScrewSystem(ScrewsymBasic):
         (1, True)
         """
         other = _check_system(other, "other")
-        both = ScrewSystem(*self.reciprocal().args, *other.reciprocal().args)
+        both = self.reciprocal() | other.reciprocal()
         return both.reciprocal()
 
     __and__ = intersection
@@ -796,6 +845,8 @@ def _basis_system(node: _Node, kind: type) -> ScrewSystem:
     if node.rank == 0:
         eye = ImmutableMatrix.eye(6)
         return ScrewSystem(*(kind.from_matrix(eye[:, k]) for k in range(6)))
+    if node.rank == 6:
+        return ScrewSystem(kind=kind if kind in _KIND_NAMES.values() else None)
     rg = _to_ring(node.matrix)
     R = rg.ring
     B = [_swap(c) for c in rg.cols]

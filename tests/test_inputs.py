@@ -270,3 +270,11 @@ def test_common_normal_is_a_sympy_object():
     assert str(cn) == "CommonNormal(a12=z, normal=[0, 0, 1], alpha12=pi/2, foot1=[0, 0, 0], foot2=[0, 0, z])"
     h = symbols("h", real=True)
     assert Screw.from_axis([0, 0, 0], [1, 0, 0], h).pitch == h
+
+
+def test_simultaneous_subs():
+    y = Symbol("y", real=True)
+    s = Screw([x, y, 0], [0, 0, x])
+    assert s.subs({x: y, y: x}, simultaneous=True) == Screw([y, x, 0], [0, 0, y])
+    L = LineVector([1, 0, 0], [0, x, y])
+    assert L.subs({x: y, y: x}, simultaneous=True) == LineVector([1, 0, 0], [0, y, x])

@@ -478,3 +478,17 @@ def test_assert_mobility_cases_exhaustive_rejects_a_wrong_dof():
 
     with pytest.raises(AssertionError):
         assert_mobility_cases_exhaustive(Lying(), [{bx: 1, by: 0}])
+
+
+def test_an_unconstrained_platform_has_twists():
+    # 6-DOF limbs leave no constraint: the empty constraint system is of wrenches, and the
+    # platform's twist system (its reciprocal) holds twists
+    from screwsym import Twist, Wrench
+    from screwsym.mechanism import Limb, ParallelMechanism, S, U
+    from screwsym.mechanism import P as Prismatic
+
+    legs = [Limb(U([k, 0, 0], [1, 0, 0], [0, 1, 0]), Prismatic([0, 0, 1]), S([k, 0, 1]))
+            for k in range(6)]
+    mech = ParallelMechanism(*legs)
+    assert mech.constraint_system().kind is Wrench and len(mech.constraint_system()) == 0
+    assert mech.twist_system().kind is Twist and mech.mobility().twists.kind is Twist

@@ -8,7 +8,7 @@ import random
 import pytest
 from sympy import Eq, Matrix, Ne, Rational, Symbol, cos, expand, sqrt, symbols, true
 
-from screwsym import ScrewSystem, Twist, Wrench, reciprocal_product, vector
+from screwsym import Screw, ScrewSystem, Twist, Wrench, reciprocal_product, vector
 from screwsym.system import _cases
 
 Z = [0, 0, 1]
@@ -357,3 +357,17 @@ def test_latex_is_the_span():
     text = latex(s)
     assert text.startswith(r"\operatorname{span}\left\{") and text.count(r"\;") >= 3
     assert latex(ScrewSystem()) == r"\left\{0\right\}"
+
+
+def test_an_empty_system_keeps_its_kind():
+    # the reciprocal of a full twist system is the empty wrench system, and back
+    full = ScrewSystem(*(Twist.from_matrix([int(i == k) for i in range(6)]) for k in range(6)))
+    empty = full.reciprocal()
+    assert empty.kind is Wrench and len(empty) == 0 and empty.rank == 0
+    assert empty.func(*empty.args) == empty and str(empty) == "ScrewSystem(kind=Wrench)"
+    assert empty.reciprocal().kind is Twist and empty.reciprocal().rank == 6
+    assert (full & full).kind is Twist
+    assert (empty | ScrewSystem(Wrench([1, 0, 0], [0, 0, 0]))).kind is Wrench
+    assert ScrewSystem().kind is Screw
+    with pytest.raises(TypeError, match=r"screws: expected members of kind Twist, got Wrench"):
+        ScrewSystem(Wrench([1, 0, 0], [0, 0, 0]), kind=Twist)
