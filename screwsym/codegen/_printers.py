@@ -87,6 +87,58 @@ class _Common:
     def _print_NaN(self, expr):
         return self._nan
 
+    # -- the constructs every target prints alike, up to its names (``_functions``) and
+    # -- its conditional expression (``_conditional``): written once here
+
+    #: the target's function for each of min, max, sign, abs and mod
+    _functions: dict[str, str] = {}
+    _true, _false = "True", "False"
+
+    def _conditional(self, condition: str, then: str, otherwise: str) -> str:
+        raise NotImplementedError
+
+    def _call(self, name: str, *args) -> str:
+        return f"{self._functions[name]}({', '.join(self._print(a) for a in args)})"
+
+    def _fold(self, args, name):
+        """``f(f(a, b), c)``: a left fold of the binary function ``name``."""
+        text = self._print(args[0])
+        for other in args[1:]:
+            text = f"{self._functions[name]}({text}, {self._print(other)})"
+        return text
+
+    def _print_Min(self, expr):
+        return self._fold(expr.args, "min")  # nan propagates in every target's helper
+
+    def _print_Max(self, expr):
+        return self._fold(expr.args, "max")
+
+    def _print_sign(self, expr):
+        return self._call("sign", expr.args[0])
+
+    def _print_Abs(self, expr):
+        return self._call("abs", expr.args[0])
+
+    def _print_Mod(self, expr):
+        return self._call("mod", *expr.args)
+
+    def _print_Piecewise(self, expr):
+        text = None
+        for e, c in reversed(expr.args):
+            if c == True:  # noqa: E712 - SymPy's true
+                text = self._print(e)
+            elif c == False:  # noqa: E712
+                continue
+            else:
+                text = self._conditional(self._print(c), self._print(e), text or self._nan)
+        return text or self._nan
+
+    def _print_BooleanTrue(self, expr):
+        return self._true
+
+    def _print_BooleanFalse(self, expr):
+        return self._false
+
 
 class ScalarPrinter(_Common, PythonCodePrinter):
     """Python floats, ``math``: the single-point path (and, via a subclass, numba)."""
@@ -112,51 +164,20 @@ class ScalarPrinter(_Common, PythonCodePrinter):
 
     _helper = "_"  # helpers are _min, _max, _sign, _mod (see PY_HELPERS)
 
-    def _print_Mod(self, expr):
-        a, b = expr.args
-        return f"{self._helper}mod({self._print(a)}, {self._print(b)})"
+    @property
+    def _functions(self):
+        h = self._helper
+        return {"min": f"{h}min", "max": f"{h}max", "sign": f"{h}sign", "mod": f"{h}mod",
+                "abs": "abs"}
 
-    def _fold(self, args, fn):
-        items = [self._print(a) for a in args]
-        text = items[0]
-        for other in items[1:]:
-            text = f"{fn}({text}, {other})"
-        return text
-
-    def _print_Min(self, expr):
-        return self._fold(expr.args, f"{self._helper}min")  # nan propagates
-
-    def _print_Max(self, expr):
-        return self._fold(expr.args, f"{self._helper}max")
-
-    def _print_sign(self, expr):
-        return f"{self._helper}sign({self._print(expr.args[0])})"
-
-    def _print_Abs(self, expr):
-        return f"abs({self._print(expr.args[0])})"
+    def _conditional(self, condition, then, otherwise):
+        return f"(({then}) if ({condition}) else ({otherwise}))"
 
     def _print_floor(self, expr):
         return f"float(_m.floor({self._print(expr.args[0])}))"
 
     def _print_ceiling(self, expr):
         return f"float(_m.ceil({self._print(expr.args[0])}))"
-
-    def _print_Piecewise(self, expr):
-        text = None
-        for e, c in reversed(expr.args):
-            if c == True:  # noqa: E712 - SymPy's true
-                text = self._print(e)
-            elif c == False:  # noqa: E712
-                continue
-            else:
-                text = f"(({self._print(e)}) if ({self._print(c)}) else ({text or self._nan}))"
-        return text or self._nan
-
-    def _print_BooleanTrue(self, expr):
-        return "True"
-
-    def _print_BooleanFalse(self, expr):
-        return "False"
 
 
 class NumbaPrinter(ScalarPrinter):
@@ -180,53 +201,20 @@ class BlockPrinter(_Common, NumPyPrinter):
     def __init__(self):
         super().__init__({"strict": True})
 
-    def _print_Piecewise(self, expr):
-        # nested where (numpy.select costs microseconds per call); nan where no branch holds
-        text = None
-        for e, c in reversed(expr.args):
-            if c == True:  # noqa: E712 - SymPy's true
-                text = self._print(e)
-            elif c == False:  # noqa: E712
-                continue
-            else:
-                text = f"_np.where({self._print(c)}, {self._print(e)}, {text or self._nan})"
-        return text or self._nan
+    _functions = {"min": "_np.minimum", "max": "_np.maximum", "sign": "_np.sign",
+                  "abs": "_np.abs", "mod": "_np.mod", "and": "_np.logical_and",
+                  "or": "_np.logical_or"}
 
-    def _fold(self, args, fn):
-        items = [self._print(a) for a in args]
-        text = items[0]
-        for other in items[1:]:
-            text = f"_np.{fn}({text}, {other})"
-        return text
+    def _conditional(self, condition, then, otherwise):
+        # nested where (numpy.select costs microseconds per call); nan where no branch holds
+        return f"_np.where({condition}, {then}, {otherwise})"
 
     def _print_And(self, expr):
         # logical_and.reduce (SymPy's) fails on operands of different batch shapes
-        return self._fold(expr.args, "logical_and")
+        return self._fold(expr.args, "and")
 
     def _print_Or(self, expr):
-        return self._fold(expr.args, "logical_or")
-
-    def _print_Min(self, expr):
-        return self._fold(expr.args, "minimum")  # propagates nan
-
-    def _print_Max(self, expr):
-        return self._fold(expr.args, "maximum")
-
-    def _print_sign(self, expr):
-        return f"_np.sign({self._print(expr.args[0])})"
-
-    def _print_Abs(self, expr):
-        return f"_np.abs({self._print(expr.args[0])})"
-
-    def _print_Mod(self, expr):
-        a, b = expr.args
-        return f"_np.mod({self._print(a)}, {self._print(b)})"
-
-    def _print_BooleanTrue(self, expr):
-        return "True"
-
-    def _print_BooleanFalse(self, expr):
-        return "False"
+        return self._fold(expr.args, "or")
 
 
 #: helpers of the single-point path and (compiled by numba) of the fused loop
@@ -287,51 +275,18 @@ class CPrinter(_Common, C99CodePrinter):
             return f"(1.0/({self._print(b)}))"
         return f"pow({self._print(b)}, {self._print(e)})"
 
-    def _print_Mod(self, expr):
-        a, b = expr.args
-        return f"ss_mod({self._print(a)}, {self._print(b)})"
+    _functions = {"min": "ss_min", "max": "ss_max", "sign": "ss_sign", "abs": "fabs",
+                  "mod": "ss_mod"}
+    _true, _false = "1", "0"
 
-    def _fold(self, args, fn):
-        items = [self._print(a) for a in args]
-        text = items[0]
-        for other in items[1:]:
-            text = f"{fn}({text}, {other})"
-        return text
-
-    def _print_Min(self, expr):
-        return self._fold(expr.args, "ss_min")
-
-    def _print_Max(self, expr):
-        return self._fold(expr.args, "ss_max")
-
-    def _print_sign(self, expr):
-        return f"ss_sign({self._print(expr.args[0])})"
-
-    def _print_Abs(self, expr):
-        return f"fabs({self._print(expr.args[0])})"
+    def _conditional(self, condition, then, otherwise):
+        return f"(({condition}) ? ({then}) : ({otherwise}))"
 
     def _print_floor(self, expr):
         return f"floor({self._print(expr.args[0])})"
 
     def _print_ceiling(self, expr):
         return f"ceil({self._print(expr.args[0])})"
-
-    def _print_Piecewise(self, expr):
-        text = None
-        for e, c in reversed(expr.args):
-            if c == True:  # noqa: E712 - SymPy's true
-                text = self._print(e)
-            elif c == False:  # noqa: E712
-                continue
-            else:
-                text = f"(({self._print(c)}) ? ({self._print(e)}) : ({text or self._nan}))"
-        return text or self._nan
-
-    def _print_BooleanTrue(self, expr):
-        return "1"
-
-    def _print_BooleanFalse(self, expr):
-        return "0"
 
     def doprint_line(self, e: Expr) -> str:
         return " ".join(self.doprint(e).split())
