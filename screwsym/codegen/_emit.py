@@ -42,6 +42,18 @@ def _outs(plan: Plan) -> str:
     return ", ".join(f"_o{j}" for j in range(len(plan.outs)))
 
 
+def _walk(plan: Plan, printer, unpack, assign, store) -> list[str]:
+    """The plan's three steps as lines of one target: each step's line format is given.
+
+    ``unpack(k, c, x)``, ``assign(sym, code)`` and ``store(j, c, code)`` format one
+    line each; ``unpack`` may be None when the target unpacks its own way.
+    """
+    lines = [unpack(k, c, x) for k, c, x in plan.unpack] if unpack else []
+    lines += [assign(sym, printer(e)) for sym, e in plan.assigns]
+    lines += [store(j, c, printer(e)) for j, c, e in plan.stores]
+    return lines
+
+
 def _unpack_scalar(plan: Plan, ind: str) -> list[str]:
     lines = []
     for i, spec in enumerate(plan.specs):
@@ -129,11 +141,16 @@ def numpy_source(plan: Plan) -> str:
         for k, c, x in plan.unpack:
             if k == i:
                 body.append(f"{ind}{x} = _b[:, {c}]")
-    for sym, e in plan.assigns:
-        body.append(f"{ind}{sym} = {printer.doprint(e)}")
-    for j, c, e in plan.stores:
-        target = f"_o{j}[_i:_j]" if not plan.outs[j].trailing else f"_o{j}[_i:_j, {c}]"
-        body.append(f"{ind}{target} = {printer.doprint(e)}")
+    body += _walk(
+        plan,
+        printer.doprint,
+        None,
+        lambda sym, code: f"{ind}{sym} = {code}",
+        lambda j, c, code: (
+            f"{ind}_o{j}[_i:_j] = {code}" if not plan.outs[j].trailing
+            else f"{ind}_o{j}[_i:_j, {c}] = {code}"
+        ),
+    )
     return "\n".join(_header(plan, "numpy") + _wrapper(plan, body, False)) + "\n"
 
 
@@ -146,13 +163,16 @@ def kernel_source(plan: Plan) -> list[str]:
         lines.append(f"    _d{i} = 0 if _a{i}.shape[0] == 1 else 1")
     lines.append("    for _i in range(_n):")
     ind = "        "
-    for k, c, x in plan.unpack:
-        lines.append(f"{ind}{x} = _a{k}[_i * _d{k}, {c}]")
-    for sym, e in plan.assigns:
-        lines.append(f"{ind}{sym} = {printer.doprint(e)}")
-    for j, c, e in plan.stores:
-        target = f"_o{j}[_i]" if not plan.outs[j].trailing else f"_o{j}[_i, {c}]"
-        lines.append(f"{ind}{target} = {printer.doprint(e)}")
+    lines += _walk(
+        plan,
+        printer.doprint,
+        lambda k, c, x: f"{ind}{x} = _a{k}[_i * _d{k}, {c}]",
+        lambda sym, code: f"{ind}{sym} = {code}",
+        lambda j, c, code: (
+            f"{ind}_o{j}[_i] = {code}" if not plan.outs[j].trailing
+            else f"{ind}_o{j}[_i, {c}] = {code}"
+        ),
+    )
     return lines
 
 
@@ -246,13 +266,16 @@ def c_source(plan: Plan, cname: str) -> str:
         f"void {cname}_point({', '.join(point_params)})",
         "{",
     ]
-    for k, c, x in plan.unpack:
-        src = f"_a{k}[{c}]" if plan.specs[k].trailing else f"_a{k}"
-        lines.append(f"    const double {x} = {src};")
-    for sym, e in plan.assigns:
-        lines.append(f"    const double {sym} = {printer.doprint_line(e)};")
-    for j, c, e in plan.stores:
-        lines.append(f"    _o{j}[{c}] = {printer.doprint_line(e)};")
+    lines += _walk(
+        plan,
+        printer.doprint_line,
+        lambda k, c, x: (
+            f"    const double {x} = _a{k}[{c}];" if plan.specs[k].trailing
+            else f"    const double {x} = _a{k};"
+        ),
+        lambda sym, code: f"    const double {sym} = {code};",
+        lambda j, c, code: f"    _o{j}[{c}] = {code};",
+    )
     lines += [
         "}",
         "",
