@@ -252,6 +252,23 @@ class Transform(ScrewsymBasic):
 
     __rmul__ = __mul__
 
+    def _lambdify_outputs(self) -> ImmutableMatrix:
+        """The 4x4 matrix, for :func:`screwsym.lambdify` (an array of shape ``(..., 4, 4)``).
+
+        >>> import numpy as np
+        >>> from sympy import symbols
+        >>> from screwsym import lambdify
+        >>> t = symbols("t", real=True)
+        >>> f = lambdify([t], Transform.rotation([0, 0, 1], t), backend="numpy")
+        >>> np.round(f(np.array([0.0, np.pi / 2]))[:, :2, :2], 12) + 0.0
+        array([[[ 1.,  0.],
+                [ 0.,  1.]],
+        <BLANKLINE>
+               [[ 0., -1.],
+                [ 1.,  0.]]])
+        """
+        return self.matrix
+
     def inverse(self) -> Transform:
         """``T^-1 = (R^T, -R^T p)``.
 

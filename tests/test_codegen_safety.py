@@ -253,7 +253,7 @@ def test_lambdify_outputs_must_be_a_tuple():
         def _lambdify_outputs(self):
             return [x]
 
-    with pytest.raises(TypeError, match=r"_lambdify_outputs\(\) must return a tuple, got list"):
+    with pytest.raises(TypeError, match=r"_lambdify_outputs\(\) must return a tuple or a matrix, got list"):
         lambdify([x], Bad())
 
 

@@ -287,3 +287,19 @@ def test_entries_beyond_the_size_limit_are_not_decided(monkeypatch):
         Transform(wrong, [0, 0, 0])
     monkeypatch.setattr(validation, "ROTATION_CHECK_OPS", 0)
     Transform(wrong, [0, 0, 0])  # ...but too large to look at under a limit of 0
+
+
+def test_lambdify_takes_a_transform():
+    import numpy as np
+    from sympy import symbols
+
+    from screwsym import lambdify
+
+    t, d = symbols("t d", real=True)
+    T = Transform.rotation([0, 0, 1], t, point=[1, 0, 0]) @ Transform.translation([0, 0, d])
+    f = lambdify([t, d], T, backend="numpy")
+    got = f(np.array([0.3, -1.2]), np.array([2.0, 0.5]))
+    assert got.shape == (2, 4, 4)
+    for k, (tv, dv) in enumerate([(0.3, 2.0), (-1.2, 0.5)]):
+        want = np.array(T.matrix.subs({t: tv, d: dv}).evalf(), dtype=float)
+        np.testing.assert_allclose(got[k], want, rtol=1e-13, atol=1e-15)

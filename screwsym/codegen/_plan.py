@@ -230,17 +230,19 @@ def normalise_args(args: Any, names: Any) -> tuple[list[Arg], list[tuple[Symbol,
 def normalise_expr(expr: Any) -> tuple[list[tuple[Out, tuple[Expr, ...]]], bool]:
     """Flatten ``expr`` to results; the flag says whether a tuple was given.
 
-    An object with a method ``_lambdify_outputs()`` (for instance the core's
-    common normal) stands for the tuple that method returns.
+    An object with a method ``_lambdify_outputs()`` stands for what that method
+    returns: a tuple of results (the core's common normal) or one matrix (a
+    rigid motion's 4x4 matrix).
     """
     from ..screw import Screw
 
     hook = getattr(type(expr), "_lambdify_outputs", None)
     if hook is not None and not isinstance(expr, type):
         expr = expr._lambdify_outputs()
-        if not isinstance(expr, tuple):
+        if not isinstance(expr, (tuple, MatrixBase)):
             raise TypeError(
-                f"expr: _lambdify_outputs() must return a tuple, got {type(expr).__name__}"
+                "expr: _lambdify_outputs() must return a tuple or a matrix, "
+                f"got {type(expr).__name__}"
             )
     is_tuple = isinstance(expr, (tuple, list))
     items = list(expr) if is_tuple else [expr]
