@@ -28,22 +28,10 @@ import importlib.util
 import time
 
 import numpy as np
-from sympy import ImmutableMatrix, Matrix, Rational, count_ops, simplify, symbols
+from sympy import ImmutableMatrix, Matrix, count_ops, simplify, symbols
 
-from screwsym import Chain, Transform, Twist, exp, lambdify
-
-W1, W2 = Rational(109, 1000), Rational(82, 1000)
-L1, L2 = Rational(425, 1000), Rational(392, 1000)
-H1, H2 = Rational(89, 1000), Rational(95, 1000)
-HOME = [[-1, 0, 0, L1 + L2], [0, 0, 1, W1 + W2], [0, 1, 0, H1 - H2], [0, 0, 0, 1]]
-SCREWS = [
-    (0, 0, 1, 0, 0, 0),
-    (0, 1, 0, -H1, 0, 0),
-    (0, 1, 0, -H1, 0, L1),
-    (0, 1, 0, -H1, 0, L1 + L2),
-    (0, 0, -1, -W1, L1 + L2, 0),
-    (0, 1, 0, H2 - W2, 0, L1 + L2),
-]
+from screwsym import Transform, exp, lambdify
+from screwsym.chain import ur5
 
 
 def timed(fn, *args):
@@ -99,7 +87,7 @@ def main(argv=None):
     parser.add_argument("--skip-simplify", action="store_true")
     args = parser.parse_args(argv)
 
-    chain = Chain([Twist.from_matrix(s) for s in SCREWS], Transform.from_matrix(HOME))
+    chain = ur5()  # Modern Robotics, Example 4.5, exact
     q = symbols("q1:7", real=True)
 
     print("== symbolic: UR5, six symbolic joint angles (first call) ==")
@@ -132,8 +120,8 @@ def main(argv=None):
         _, t_jit = timed(f_nb, Q[:2])
         print(f"generation (numba)      {t_gen:7.3f} s   + first-call JIT {t_jit:.2f} s")
         results["screwsym numba"] = best(f_nb, (Q,), args.repeat)
-    M = np.array(HOME, dtype=float)
-    S = np.array(SCREWS, dtype=float).T
+    M = np.array(chain.home.matrix, dtype=float)
+    S = np.array([np.array(t.as_matrix(), dtype=float).ravel() for t in chain.twists]).T
     results["hand-written NumPy"] = best(hand_numpy_fk, (Q, M, S), args.repeat)
     np.testing.assert_allclose(f_np(Q[:100]), hand_numpy_fk(Q[:100], M, S), atol=1e-12)
     per_pose = {k: v / args.n * 1e9 for k, v in results.items()}

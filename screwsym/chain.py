@@ -41,7 +41,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, Tuple, zeros
+from sympy import Expr, ImmutableMatrix, Rational, Tuple, zeros
 
 from ._basic import ScrewsymBasic
 from ._decide import is_zero_vector
@@ -58,7 +58,7 @@ from .tidy import tidy
 from .transform import Transform
 from .twist import Twist
 
-__all__ = ["Chain"]
+__all__ = ["Chain", "ur5"]
 
 
 def _tidy_matrix(m: ImmutableMatrix) -> ImmutableMatrix:
@@ -234,3 +234,31 @@ class Chain(ScrewsymBasic):
     def _sympystr(self, printer) -> str:
         twists = ", ".join(printer._print(t) for t in self.twists)
         return f"Chain([{twists}], {printer._print(self.home)})"
+
+
+def ur5() -> Chain:
+    r"""The UR5 arm of Lynch & Park, *Modern Robotics*, Example 4.5, exact.
+
+    Six revolute joints given by their twists in the space frame at the home
+    pose, in ray order ``(omega; v_O)``, with the example's dimensions in
+    metres as exact rationals (W1 = 109/1000, W2 = 82/1000, L1 = 425/1000,
+    L2 = 392/1000, H1 = 89/1000, H2 = 95/1000).
+
+    >>> from screwsym.chain import ur5
+    >>> arm = ur5()
+    >>> arm.dof, arm.home.matrix[:3, 3].T
+    (6, Matrix([[817/1000, 191/1000, -3/500]]))
+    >>> arm.twists[1]
+    Twist([0, 1, 0], [-89/1000, 0, 0])
+    """
+    w1, w2, l1, l2, h1, h2 = (Rational(x, 1000) for x in (109, 82, 425, 392, 89, 95))
+    home = [[-1, 0, 0, l1 + l2], [0, 0, 1, w1 + w2], [0, 1, 0, h1 - h2], [0, 0, 0, 1]]
+    screws = [
+        (0, 0, 1, 0, 0, 0),
+        (0, 1, 0, -h1, 0, 0),
+        (0, 1, 0, -h1, 0, l1),
+        (0, 1, 0, -h1, 0, l1 + l2),
+        (0, 0, -1, -w1, l1 + l2, 0),
+        (0, 1, 0, h2 - w2, 0, l1 + l2),
+    ]
+    return Chain([Twist.from_matrix(s) for s in screws], Transform.from_matrix(home))

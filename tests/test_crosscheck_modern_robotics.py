@@ -19,7 +19,8 @@ import pytest
 from _motions import random_transform, random_twist, rational_vector, to_float
 from sympy import Matrix, Rational, pi, symbols
 
-from screwsym import Chain, Transform, Twist, Wrench, convert, exp, lambdify, log, power
+from screwsym import Twist, Wrench, convert, exp, lambdify, log, power
+from screwsym.chain import ur5 as ur5_chain
 
 mr = pytest.importorskip("modern_robotics")
 
@@ -131,23 +132,14 @@ def test_pytransform3d_exp_adjoint_and_log_agree():
 # The UR5 of Modern Robotics, Example 4.5 (dimensions in metres, exact)
 # -------------------------------------------------------------------------
 
-W1, W2 = Rational(109, 1000), Rational(82, 1000)
-L1, L2 = Rational(425, 1000), Rational(392, 1000)
-H1, H2 = Rational(89, 1000), Rational(95, 1000)
-UR5_HOME = [[-1, 0, 0, L1 + L2], [0, 0, 1, W1 + W2], [0, 1, 0, H1 - H2], [0, 0, 0, 1]]
-UR5_S = [
-    (0, 0, 1, 0, 0, 0),
-    (0, 1, 0, -H1, 0, 0),
-    (0, 1, 0, -H1, 0, L1),
-    (0, 1, 0, -H1, 0, L1 + L2),
-    (0, 0, -1, -W1, L1 + L2, 0),
-    (0, 1, 0, H2 - W2, 0, L1 + L2),
-]
+UR5 = ur5_chain()
+UR5_HOME = np.array(UR5.home.matrix, dtype=float)
+UR5_S = [np.array(t.as_matrix(), dtype=float).ravel() for t in UR5.twists]
 
 
 @pytest.fixture(scope="module")
 def ur5():
-    chain = Chain([Twist.from_matrix(s) for s in UR5_S], Transform.from_matrix(UR5_HOME))
+    chain = UR5
     q = Matrix(symbols("q1:7", real=True))
     fk = chain.forward(list(q)).matrix
     js = chain.jacobian(list(q))
@@ -157,7 +149,7 @@ def ur5():
 
 
 def _mr_ur5():
-    M = np.array(UR5_HOME, dtype=float)
+    M = UR5_HOME
     Slist = np.array(UR5_S, dtype=float).T
     Blist = mr.Adjoint(mr.TransInv(M)) @ Slist
     return M, Slist, Blist
