@@ -144,11 +144,14 @@ def float_tau(*exprs: Expr) -> Expr | None:
     return Pow(2, 13 - precision)
 
 
-def is_zero_scaled(q: Expr, scale: Expr) -> bool | None:
+def is_zero_scaled(q: Expr, scale: Expr, tau: Expr | None = None) -> bool | None:
     """Decide ``q == 0`` under the float policy: relative to ``scale`` for floats, else exact.
 
     ``scale`` is the size ``q`` would have without cancellation; for exact
     and symbolic input it plays no part and the answer is :func:`is_zero`'s.
+    ``tau`` is found from the floats in ``q`` and ``scale``; a caller that has
+    made its floats exact (to compute without rounding) passes the tolerance of
+    the floats it started from.
 
     >>> from sympy import Float
     >>> is_zero_scaled(Float("1e-17"), Float(1)), is_zero_scaled(Float("1e-17"), Float("1e-17"))
@@ -156,15 +159,15 @@ def is_zero_scaled(q: Expr, scale: Expr) -> bool | None:
     >>> is_zero_scaled(Float("1e-300"), Float("1e-300") * 3)    # scale-invariant
     False
     """
-    tau = float_tau(q, scale)
+    tau = float_tau(q, scale) if tau is None else tau
     if tau is None or not (q.is_number and scale.is_number):
         return is_zero(q)
     return bool(Abs(q) <= tau * scale)
 
 
-def is_zero_vector_scaled(v: MatrixBase, scale: Expr) -> bool | None:
+def is_zero_vector_scaled(v: MatrixBase, scale: Expr, tau: Expr | None = None) -> bool | None:
     """:func:`is_zero_scaled` for a column: its length against ``scale``."""
-    tau = float_tau(*v, scale)
+    tau = float_tau(*v, scale) if tau is None else tau
     if tau is None or not (all(e.is_number for e in v) and scale.is_number):
         return is_zero_vector(v)
     return bool(norm(v) <= tau * scale)

@@ -14,7 +14,7 @@ from typing import Any
 from sympy import Abs, Eq, Expr, Float, ImmutableMatrix, Rational, atan2, nan, sign, sqrt
 
 from ._basic import ScrewsymBasic
-from ._decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
+from ._decide import float_tau, is_zero_scaled, is_zero_vector_scaled, norm
 from ._validation import check_choice, check_flag, check_line_parts, check_screw, check_vector
 from .screw import (
     Screw,
@@ -103,10 +103,7 @@ def _contains(s: Screw, r: ImmutableMatrix, name: str | None = None) -> bool | N
     _require_axis(s, "axis", name)  # a couple's axis is at infinity
     h = _pitch_formula(s)
     residual = r.cross(s.S) - (s.S0 - h * s.S)
-    scale = norm(r) * norm(s.S) + norm(s.S0)
-    if float_tau(*residual, scale) is None:
-        return is_zero_vector(residual)
-    return is_zero_scaled(norm(residual), scale)
+    return is_zero_vector_scaled(residual, norm(r) * norm(s.S) + norm(s.S0))
 
 
 def contains(s: ScrewLike, point: VectorLike) -> bool | None:
@@ -266,10 +263,6 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
     return cn.func(*(a.evalf(n=max(15, int(digits * 0.30103) + 1)) for a in cn.args))
 
 
-def _zero(q: Expr, scale: Expr, tau: Expr | None) -> bool | None:
-    return is_zero(q) if tau is None else bool(Abs(q) <= tau * scale)
-
-
 def _common_normal_parts(S1, S01, S2, S02, tau, names, conds="none") -> CommonNormal:
     nn1, nn2 = S1.dot(S1), S2.dot(S2)
     p1, p2 = S1.cross(S01) / nn1, S2.cross(S02) / nn2  # the feet (1.16)
@@ -278,10 +271,10 @@ def _common_normal_parts(S1, S01, S2, S02, tau, names, conds="none") -> CommonNo
     nn = n.dot(n)
     cos_part = S1.dot(S2)
     # parallel: |S1 x S2| against |S1||S2| (compared squared, so no root is taken)
-    parallel = _zero(nn, nn1 * nn2, None if tau is None else tau**2)
+    parallel = is_zero_scaled(nn, nn1 * nn2, None if tau is None else tau**2)
     if parallel is True:
         # both feet are perpendicular to the common direction, so d is the normal
-        if _zero(norm(d), norm(p1) + norm(p2), tau) is True:
+        if is_zero_scaled(norm(d), norm(p1) + norm(p2), tau) is True:
             raise ValueError(
                 f"{names[0]}, {names[1]}: coincident lines have no common normal, "
                 f"got {list(S1)}; {list(S01)} and {list(S2)}; {list(S02)}"
@@ -291,7 +284,7 @@ def _common_normal_parts(S1, S01, S2, S02, tau, names, conds="none") -> CommonNo
     n_len = sqrt(nn)
     m = -(S1.dot(S02) + S2.dot(S01))  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
     scale = sqrt(nn1) * norm(S02) + sqrt(nn2) * norm(S01)
-    met = _zero(m, scale, tau)
+    met = is_zero_scaled(m, scale, tau)
     intersecting = met is True
     if intersecting:
         m = 0
