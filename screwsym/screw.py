@@ -590,13 +590,11 @@ def _axis(s: Screw, name: str | None = None, tidy: bool = True):
     return Screw._line_class()(s.S, _axis_moment(s, False))
 
 
-def _axis_moment(s: Screw, tidy: bool) -> ImmutableMatrix:
-    """The axis moment ``S0 - h S`` (1.36), with the pitch tidied first when ``tidy``."""
-    if s._pitch_is_zero:
-        return _finish(s.S0, tidy)
-    if tidy:
-        return _moment_minus(s.S0, _pitch_formula(s, True), s.S)
-    return s.S0 - _pitch_formula(s) * s.S
+def _axis_moment(s: Screw, tidy: bool, h: Expr | None = None) -> ImmutableMatrix:
+    """The axis moment ``S0 - h S`` (1.36), for the pitch ``h`` (found, and tidied first
+    when ``tidy``, unless the caller has it already)."""
+    h = _pitch_formula(s, tidy) if h is None else h
+    return _moment_minus(s.S0, h, s.S) if tidy else s.S0 - h * s.S
 
 
 def axis(s: ScrewLike, *, tidy: bool = True):
@@ -658,8 +656,9 @@ def _distance_to_origin(s: Screw, name: str | None = None, tidy: bool = True,
         # Lagrange's identity |S x S0'|^2 = |S|^2 |S0'|^2 - (S . S0')^2 gives |S0'| / |S|:
         # short when the pitch cancels; else |S x S0| / S.S, the foot's length, is shorter.
         _require_axis(s, "foot point", name)
-        if s._pitch_is_zero or _is_polynomial(_pitch_formula(s, True)):
-            d = _finish(norm(_axis_moment(s, True)) / norm(s.S))
+        h = _pitch_formula(s, True)
+        if _is_polynomial(h):
+            d = _finish(norm(_axis_moment(s, True, h)) / norm(s.S))
         else:
             d = _finish(norm(_finish(s.S.cross(s.S0))) / s.S.dot(s.S))
     return _where_direction_vanishes(s, d) if conds == "piecewise" else d
@@ -743,10 +742,8 @@ def _decompose(s: Screw, name: str | None = None, tidy: bool = True):
     _require_axis(s, "axis, so no line-plus-couple decomposition", name)
     general = s._combination_class()
     h = _pitch_formula(s, tidy)
-    if tidy:
-        line = _known(general._line_class(), s.S, _moment_minus(s.S0, h, s.S))
-    else:
-        line = general._line_class()(s.S, s.S0 - h * s.S)
+    moment = _axis_moment(s, tidy, h)
+    line = _known(general._line_class(), s.S, moment) if tidy else general._line_class()(s.S, moment)
     return line, general(zeros(3, 1), h * s.S)
 
 
