@@ -61,14 +61,6 @@ from .twist import Twist
 __all__ = ["Chain", "ur5"]
 
 
-def _tidy_matrix(m: ImmutableMatrix) -> ImmutableMatrix:
-    return ImmutableMatrix(tidy(m))
-
-
-def _tidy_transform(T: Transform) -> Transform:
-    return Transform._new(_tidy_matrix(T.R), _tidy_matrix(T.p))
-
-
 def _carried_column(T: Transform, twist: Twist) -> ImmutableMatrix:
     """``Ad(T) $`` built from the carried axis: ``(R w; (R r + p) x R w + h R w)``, tidied.
 
@@ -77,11 +69,11 @@ def _carried_column(T: Transform, twist: Twist) -> ImmutableMatrix:
     a prismatic one ``(0; v)`` as the direction ``R v``.
     """
     if is_zero_vector(twist.omega) is True:
-        return ImmutableMatrix.vstack(zeros(3, 1), _tidy_matrix(T.R * twist.v_O))
-    w = _tidy_matrix(T.R * twist.omega)
-    r = _tidy_matrix(T.R * foot(twist) + T.p)
+        return ImmutableMatrix.vstack(zeros(3, 1), tidy(T.R * twist.v_O))
+    w = tidy(T.R * twist.omega)
+    r = tidy(T.R * foot(twist) + T.p)
     h = pitch(twist)
-    return ImmutableMatrix.vstack(w, _tidy_matrix(r.cross(w) + h * w))
+    return ImmutableMatrix.vstack(w, tidy(r.cross(w) + h * w))
 
 
 class Chain(ScrewsymBasic):
@@ -192,8 +184,8 @@ class Chain(ScrewsymBasic):
         q = self._check_q(q)
         T = Transform.identity()
         for twist, qi in zip(self.twists, q, strict=True):
-            T = _tidy_transform(T @ exp(twist, qi))
-        return _tidy_transform(T @ self.home)
+            T = tidy(T @ exp(twist, qi))
+        return tidy(T @ self.home)
 
     def jacobian(self, q: Any, frame: str = "space") -> ImmutableMatrix:
         r"""The 6 x n Jacobian in ray order, ``frame="space"`` or ``"body"``, tidied.
@@ -222,12 +214,12 @@ class Chain(ScrewsymBasic):
         if frame == "space":
             for twist, qi in zip(self.twists, q, strict=True):
                 columns.append(_carried_column(T, twist))
-                T = _tidy_transform(T @ exp(twist, qi))
+                T = tidy(T @ exp(twist, qi))
         else:
             # J_b column i = Ad(exp(-B_n q_n) ... exp(-B_{i+1} q_{i+1})) B_i
             for twist, qi in zip(reversed(self.body_twists()), reversed(q), strict=True):
                 columns.append(_carried_column(T, twist))
-                T = _tidy_transform(T @ exp(twist, -qi))
+                T = tidy(T @ exp(twist, -qi))
             columns.reverse()
         return ImmutableMatrix.hstack(*columns)
 
