@@ -30,7 +30,7 @@ from sympy.matrices import MatrixBase  # noqa: E402
 
 import screwsym as ss  # noqa: E402
 from screwsym import LineVector, Screw, Twist, Wrench, vector  # noqa: E402
-from screwsym._basic import ScrewsymBasic  # noqa: E402
+from screwsym.core.basic import ScrewsymBasic  # noqa: E402
 
 #: simplify is stopped after this many seconds (then its time is a lower bound)
 SIMPLIFY_LIMIT = 60

@@ -30,8 +30,8 @@ import time
 import numpy as np
 from sympy import ImmutableMatrix, Matrix, count_ops, simplify, symbols
 
-from screwsym import Transform, exp, lambdify
-from screwsym.chain import ur5
+from screwsym import Transform, exp6, lambdify
+from screwsym.motion.chain import ur5
 
 
 def timed(fn, *args):
@@ -55,8 +55,8 @@ def raw_space_jacobian(chain, q):
     T = Transform.identity()
     columns = []
     for twist, qi in zip(chain.twists, q, strict=True):
-        columns.append(T.adjoint() * twist.as_matrix())
-        T = T @ exp(twist, qi)
+        columns.append(T.adjoint() * twist.matrix)
+        T = T @ exp6(twist, qi)
     return ImmutableMatrix.hstack(*columns)
 
 
@@ -121,7 +121,7 @@ def main(argv=None):
         print(f"generation (numba)      {t_gen:7.3f} s   + first-call JIT {t_jit:.2f} s")
         results["screwsym numba"] = best(f_nb, (Q,), args.repeat)
     M = np.array(chain.home.matrix, dtype=float)
-    S = np.array([np.array(t.as_matrix(), dtype=float).ravel() for t in chain.twists]).T
+    S = np.array([np.array(t.matrix, dtype=float).ravel() for t in chain.twists]).T
     results["hand-written NumPy"] = best(hand_numpy_fk, (Q, M, S), args.repeat)
     np.testing.assert_allclose(f_np(Q[:100]), hand_numpy_fk(Q[:100], M, S), atol=1e-12)
     per_pose = {k: v / args.n * 1e9 for k, v in results.items()}

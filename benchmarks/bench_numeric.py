@@ -118,8 +118,8 @@ def symengine_functions():
     defs["pitch"] = ([s], screwsym.pitch(s), ["s"])
     out = {}
     for name, (args, expr, _names) in defs.items():
-        syms = [x for a in args for x in (a.as_matrix() if isinstance(a, screwsym.Screw) else a)]
-        m = expr.as_matrix() if isinstance(expr, screwsym.Screw) else expr
+        syms = [x for a in args for x in (a.matrix if isinstance(a, screwsym.Screw) else a)]
+        m = expr.matrix if isinstance(expr, screwsym.Screw) else expr
         exprs = list(m) if hasattr(m, "is_Matrix") and m.is_Matrix else [m]
         try:
             out[name] = se.Lambdify(syms, exprs, backend="llvm", cse=True)
@@ -164,7 +164,7 @@ def main() -> None:
     codegen.clear_cache()
     numeric._BUILT.clear()
     t0 = time.perf_counter()
-    np_funcs = numeric.functions("numpy")
+    np_funcs = numeric.functions_for("numpy")
     t_np = time.perf_counter() - t0
     print(f"  numpy: all {len(numeric.NAMES)} functions {t_np:.3f} "
           f"({t_np / len(numeric.NAMES):.3f} per function)")
@@ -174,7 +174,7 @@ def main() -> None:
         import numba  # noqa: F401  (import time is not generation time)
 
         t0 = time.perf_counter()
-        nb = numeric.functions("numba")
+        nb = numeric.functions_for("numba")
         t_gen = time.perf_counter() - t0
         t0 = time.perf_counter()
         for name in numeric.NAMES:
@@ -188,7 +188,7 @@ def main() -> None:
     print(f"  default of screwsym.numeric: {default!r} (the same function objects: {same})")
     if shutil.which("cc"):
         t0 = time.perf_counter()
-        backends["c"] = numeric.functions("c")
+        backends["c"] = numeric.functions_for("c")
         t_c = time.perf_counter() - t0
         print(f"  c: generate + cc -O3 {t_c:.3f} ({t_c / len(numeric.NAMES):.3f} per function)")
     se_funcs = symengine_functions()

@@ -32,8 +32,9 @@ from sympy import Rational, sqrt, symbols
 
 from screwsym import ScrewSystem, Twist, vector
 from screwsym import system as _system
-from screwsym.mechanism import Limb, P, ParallelMechanism, R, S
-from screwsym.mechanism_numeric import mobility_map
+from screwsym.numeric.mobility import mobility_map
+from screwsym.systems.joints import P, R, S
+from screwsym.systems.mechanism import Limb, ParallelMechanism
 
 E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
 
@@ -85,9 +86,9 @@ def main(argv=None) -> None:
     h = symbols("h1:4", positive=True)
     mech = three_rps(rho, h)
     t, m = best(mech.mobility, args.repeat)
-    print(f"3-RPS, 6 symbols: mobility() {t:.3f} s -> dof {m.dof}, {m.motion} (target < 5 s)")
+    print(f"3-RPS, 6 symbols: mobility() {t:.3f} s -> dof {m.mobility}, {m.motion} (target < 5 s)")
     t, cases = best(mech.mobility_cases, max(1, args.repeat // 2))
-    dofs = [mm.dof for _, mm in cases]
+    dofs = [mm.mobility for _, mm in cases]
     print(f"  mobility_cases(): {len(cases)} cases, dof {dofs}, in {t:.2f} s (target < 5 s)")
 
     rng = np.random.default_rng(0)
@@ -109,7 +110,7 @@ def main(argv=None) -> None:
         print(
             f"3-RPS map, {n} poses, {backend}: {min(times):.3f} s "
             f"({1e6 * min(times) / n:.2f} us/pose; generation {gen:.2f} s, first call "
-            f"{first:.2f} s); dof counts {np.bincount(out.dof).tolist()} (target < 1 s)"
+            f"{first:.2f} s); dof counts {np.bincount(out.mobility).tolist()} (target < 1 s)"
         )
 
 

@@ -14,43 +14,53 @@ Mechanisms* (Springer 2013); docstrings cite its equation numbers.
 
 import importlib
 
-from ._version import __version__
-from .chain import Chain
-from .conventions import convert, convert_from
-from .displacement import exp, log
-from .line import (
+from ._version import __version__ as __version__
+from .core import (
     CommonNormal,
     LineVector,
-    common_normal,
-    contains,
-    is_coplanar,
-    mutual_moment,
-)
-from .mechanism import Limb, Mobility, ParallelMechanism
-from .printing import init_printing
-from .screw import (
     Screw,
+    Twist,
+    Wrench,
     axis,
     classify,
-    decompose,
+    common_normal,
+    contains,
+    decompose_screw,
     direction_cosines,
     distance_to_origin,
     foot,
+    is_coplanar,
     is_reciprocal,
+    mutual_moment,
     pitch,
+    power,
     reciprocal_product,
     shift_origin,
+    tidy,
     unit,
+    vector,
 )
-from .system import ScrewSystem
-from .tidy import tidy
-from .transform import Transform
-from .twist import Twist
-from .vectors import vector
-from .wrench import Wrench, power
+from .core.printing import init_printing as init_printing
+from .motion import Chain, Transform, convert, convert_from, exp6, log6
+from .systems import (
+    Cylindrical,
+    Helical,
+    Limb,
+    Mobility,
+    ParallelMechanism,
+    Prismatic,
+    Revolute,
+    ScrewSystem,
+    Spherical,
+    Universal,
+)
 
+#: What ``from screwsym import *`` binds.  It names nothing that ``from sympy import *``
+#: binds too (tests/package/test_namespace.py checks it), so a notebook may star-import
+#: both: screwsym's ``lambdify``, ``init_printing``, ``plot`` and ``__version__`` are
+#: attributes of the package (``screwsym.lambdify``) but not star-imported.
 __all__ = [
-    "__version__",
+    # the objects of Chapter 1 (screwsym.core)
     "Screw",
     "LineVector",
     "Twist",
@@ -60,7 +70,7 @@ __all__ = [
     "pitch",
     "axis",
     "foot",
-    "decompose",
+    "decompose_screw",
     "classify",
     "shift_origin",
     "reciprocal_product",
@@ -74,33 +84,37 @@ __all__ = [
     "common_normal",
     "power",
     "tidy",
-    "init_printing",
-    "lambdify",
-    "book",
-    "codegen",
-    "mechanism_numeric",
-    "numeric",
-    "plot",
-    # rigid motions (issue 10)
+    # rigid motions (screwsym.motion)
     "Transform",
-    "exp",
-    "log",
+    "exp6",
+    "log6",
     "Chain",
     "convert",
     "convert_from",
+    # screw systems and mechanisms (screwsym.systems)
     "ScrewSystem",
+    "Revolute",
+    "Prismatic",
+    "Helical",
+    "Cylindrical",
+    "Universal",
+    "Spherical",
     "Limb",
     "ParallelMechanism",
     "Mobility",
+    # floors loaded on first use
+    "book",
+    "codegen",
+    "numeric",
 ]
 
 # Subpackages that pull in more (the book registry, code generation, plotting)
 # load on first use, so ``import screwsym`` stays light; ``dir`` lists them.
-_LAZY_MODULES = ("book", "cli", "codegen", "mechanism_numeric", "numeric", "plot")
+_LAZY_MODULES = ("book", "cli", "codegen", "numeric", "plot")
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__) | set(_LAZY_MODULES))
+    return sorted(set(globals()) | set(__all__) | set(_LAZY_MODULES) | {"lambdify"})
 
 
 def __getattr__(name: str):

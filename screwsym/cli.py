@@ -105,7 +105,7 @@ def _table(rows: list[list[str]], header: list[str]) -> str:
 
 
 def _check_line(c) -> str:
-    from .book._entry import as_text
+    from .book import as_text
 
     word = "holds" if c.ok else "FAILS"
     book = "  [the book's wording, shown failing]" if c.book else ""
@@ -138,7 +138,7 @@ def _details(r, e) -> list[str]:
 
 
 def _failure_lines(r) -> list[str]:
-    from .book._entry import as_text
+    from .book import as_text
 
     if r.error:
         return [f"  {r.id}: construction raised {r.error}"]
@@ -146,8 +146,7 @@ def _failure_lines(r) -> list[str]:
 
 
 def _json(results, total, complete) -> dict:
-    from .book import entry
-    from .book._entry import as_text
+    from .book import as_text, entry
 
     def one(r):
         e = entry(r.id)

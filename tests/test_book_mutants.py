@@ -39,7 +39,7 @@ from sympy.matrices import MatrixBase
 import screwsym as ss
 from screwsym import LineVector, Screw, Twist, Wrench
 from screwsym.book import entries, entry
-from screwsym.screw import foot as _foot
+from screwsym.core.screw import foot as _foot
 
 
 def _m(v) -> ImmutableMatrix:
@@ -50,7 +50,7 @@ def _m(v) -> ImmutableMatrix:
 #: name -> (owner, attribute, how): how is "function", "classmethod" or "method"
 OPS = {
     **{name: (ss, name, "function") for name in (
-        "pitch", "axis", "foot", "decompose", "classify", "shift_origin", "reciprocal_product",
+        "pitch", "axis", "foot", "decompose_screw", "classify", "shift_origin", "reciprocal_product",
         "is_reciprocal", "distance_to_origin", "direction_cosines", "unit", "contains",
         "mutual_moment", "is_coplanar", "common_normal", "power")},
     "from_axis": (Screw, "from_axis", "classmethod"),
@@ -127,8 +127,8 @@ MUTANTS = {
     "foot sign flipped": ("foot", lambda real: lambda s: -real(s)),
     "foot not divided by S.S": ("foot", lambda real: lambda s: real(s) * _m(s.S).dot(_m(s.S))),
     # decompose (1.37)
-    "decompose couple negated": ("decompose", lambda real: lambda s: (real(s)[0], -real(s)[1])),
-    "decompose parts swapped": ("decompose", lambda real: lambda s: tuple(reversed(real(s)))),
+    "decompose couple negated": ("decompose_screw", lambda real: lambda s: (real(s)[0], -real(s)[1])),
+    "decompose parts swapped": ("decompose_screw", lambda real: lambda s: tuple(reversed(real(s)))),
     # classify (table after 1.38)
     "classify always screw": ("classify", lambda real: lambda s: "screw"),
     "classify line and couple swapped": ("classify", _classify_map({"line": "couple",
@@ -525,7 +525,7 @@ def _same(a, b) -> bool:
     if isinstance(a, tuple) and isinstance(b, tuple):
         return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
     if isinstance(a, Screw) and isinstance(b, Screw):
-        return type(a) is type(b) and _same(a.as_matrix(), b.as_matrix())
+        return type(a) is type(b) and _same(a.matrix, b.matrix)
     if isinstance(a, ss.CommonNormal) and isinstance(b, ss.CommonNormal):
         return all(_same(x, y) for x, y in zip(a.args, b.args, strict=True))
     if a is None or b is None or isinstance(a, (bool, str)) or isinstance(b, (bool, str)):

@@ -18,8 +18,8 @@ from sympy import (
     trigsimp,
 )
 
-from screwsym import Chain, Transform, Twist, Wrench, exp, lambdify, tidy
-from screwsym.displacement import se3_matrix
+from screwsym import Chain, Transform, Twist, Wrench, exp6, lambdify, tidy
+from screwsym.motion.displacement import se3_matrix
 
 q1, q2, q3 = q = symbols("q1:4", real=True)
 
@@ -74,7 +74,7 @@ def test_space_and_body_jacobians_are_related_by_the_adjoint(rph):
 def test_forward_is_the_product_of_exponentials(rph):
     expected = Transform.identity()
     for twist, qi in zip(rph.twists, q, strict=True):
-        expected = expected @ exp(twist, qi)
+        expected = expected @ exp6(twist, qi)
     expected = expected @ rph.home
     assert is_exactly_zero(rph.forward(q).matrix - expected.matrix)
 
@@ -82,9 +82,9 @@ def test_forward_is_the_product_of_exponentials(rph):
 def test_at_home(rph):
     zero = [0, 0, 0]
     assert rph.forward(zero) == rph.home
-    assert rph.jacobian(zero) == ImmutableMatrix.hstack(*(t.as_matrix() for t in rph.twists))
+    assert rph.jacobian(zero) == ImmutableMatrix.hstack(*(t.matrix for t in rph.twists))
     assert rph.jacobian(zero, frame="body") == ImmutableMatrix.hstack(
-        *(t.as_matrix() for t in rph.body_twists())
+        *(t.matrix for t in rph.body_twists())
     )
 
 
@@ -107,8 +107,8 @@ def test_tidied_jacobian_is_no_larger_than_the_raw_product(rph):
     raw = Transform.identity()
     columns = []
     for twist, qi in zip(rph.twists, q, strict=True):
-        columns.append(raw.adjoint() * twist.as_matrix())
-        raw = raw @ exp(twist, qi)
+        columns.append(raw.adjoint() * twist.matrix)
+        raw = raw @ exp6(twist, qi)
     assert count_ops(rph.jacobian(q)) <= count_ops(ImmutableMatrix.hstack(*columns))
 
 
@@ -124,7 +124,7 @@ def test_lambdify_gives_batched_kinematics(rph):
 
 def test_args_rebuild_and_properties(rph):
     assert rph.func(*rph.args) == rph
-    assert rph.dof == 3 and len(rph.twists) == 3
+    assert rph.n_joints == 3 and len(rph.twists) == 3
     assert Chain([Twist([0, 0, 1], [0, 0, 0])]).home == Transform.identity()
     assert str(Chain([Twist([0, 0, 1], [0, 0, 0])])).startswith("Chain([Twist([0, 0, 1]")
 

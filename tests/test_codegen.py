@@ -42,12 +42,12 @@ def exact_value(args, expr, values):
     """Exact SymPy evaluation of each result of ``expr`` at one point, as float arrays."""
     subs = {}
     for a, v in zip(args, values, strict=True):
-        syms = list(a.as_matrix()) if isinstance(a, Screw) else (list(a) if a.is_Matrix else [a])
+        syms = list(a.matrix) if isinstance(a, Screw) else (list(a) if a.is_Matrix else [a])
         vals = v if isinstance(v, list) else [v]
         subs.update(dict(zip(syms, vals, strict=True)))
     out = []
     for e in expr:
-        m = e.as_matrix() if isinstance(e, Screw) else e
+        m = e.matrix if isinstance(e, Screw) else e
         exact = m.xreplace(subs).evalf(30) if hasattr(m, "is_Matrix") and m.is_Matrix else None
         if exact is None:
             out.append(np.float64(float(e.xreplace(subs).evalf(30))))

@@ -116,7 +116,7 @@ def test_a_six_vector_says_from_matrix():
 def test_through_for_every_kind():
     for cls in (LineVector, Screw, Twist, Wrench):
         s = cls.through([0, 0, 1], [1, 0, 1])
-        assert type(s) is cls and s.as_matrix().T.tolist() == [[1, 0, 0, 0, 1, 0]]
+        assert type(s) is cls and s.matrix.T.tolist() == [[1, 0, 0, 0, 1, 0]]
 
 
 @pytest.mark.parametrize(

@@ -26,8 +26,8 @@ from screwsym import (
     power,
     vector,
 )
-from screwsym.conventions import CONVENTIONS
-from screwsym.transform import skew
+from screwsym.motion.conventions import CONVENTIONS
+from screwsym.motion.transform import skew
 
 NAMES = tuple(CONVENTIONS)
 

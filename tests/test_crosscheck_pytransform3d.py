@@ -28,7 +28,7 @@ def test_pitch_axis_direction_and_point_agree(trial):
         S[0] = 1
     s = Screw(S, S0)
     norm = float(np.linalg.norm(np.array(S, dtype=float)))
-    unit = np.array([float(c) for c in s.as_matrix()]) / norm  # pytransform3d needs |omega| = 1
+    unit = np.array([float(c) for c in s.matrix]) / norm  # pytransform3d needs |omega| = 1
     q, s_axis, h = pt.screw_parameters_from_screw_axis(unit)
     np.testing.assert_allclose(float(pitch(s)), h, rtol=1e-12, atol=1e-12)
     np.testing.assert_allclose(np.array(s.S, dtype=float).ravel() / norm, s_axis, rtol=1e-12)
@@ -48,7 +48,7 @@ def test_screw_motion_twist_agrees(trial):
     expected = float(omega) * pt.screw_axis_from_screw_parameters(
         np.array(r, dtype=float), S, float(h)
     )
-    np.testing.assert_allclose(np.array(T.as_matrix(), dtype=float).ravel(), expected, atol=1e-10)
+    np.testing.assert_allclose(np.array(T.matrix, dtype=float).ravel(), expected, atol=1e-10)
 
 
 def test_pure_translation_agrees():

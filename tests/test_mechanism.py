@@ -14,19 +14,9 @@ import pytest
 from sympy import Matrix, Rational, expand, sqrt, symbols, true
 
 from screwsym import ScrewSystem, reciprocal_product
-from screwsym.mechanism import (
-    C,
-    H,
-    Limb,
-    Mobility,
-    P,
-    ParallelMechanism,
-    R,
-    S,
-    U,
-    motion_type,
-)
-from screwsym.mechanism_numeric import mobility_map
+from screwsym.numeric.mobility import mobility_map
+from screwsym.systems.joints import C, H, P, R, S, U
+from screwsym.systems.mechanism import Limb, Mobility, ParallelMechanism, motion_type
 
 Z = [0, 0, 1]
 O = [0, 0, 0]
@@ -44,11 +34,11 @@ def cross(a, b):
 
 def check_consistent(m: Mobility, mech: ParallelMechanism):
     """The criterion agrees with the platform's twist system; twists reciprocal to constraints."""
-    assert m.dof == m.twists.rank == 6 - mech.constraint_system().rank
+    assert m.mobility == m.twists.rank == 6 - mech.constraints.rank
     assert m.order == 6 - m.common
     assert m.rotations + m.translations == m.twists.rank
     for t in m.twists:
-        for w in mech.constraint_system():
+        for w in mech.constraints:
             assert expand(reciprocal_product(t, w)) == 0
 
 
@@ -104,7 +94,7 @@ def test_four_bar():
     # the planar four-bar has lambda = 3 common constraints, d = 3, M = 3(-1)+4 = 1)
     mech = four_bar()
     m = mech.mobility()
-    assert (m.dof, m.classical, m.common, m.order, m.redundant, m.passive) == (1, -2, 3, 3, 0, 0)
+    assert (m.mobility, m.classical, m.common, m.order, m.redundant, m.passive) == (1, -2, 3, 3, 0, 0)
     assert (m.links, m.joints, m.freedoms) == (4, 4, 4)
     assert m.motion == "1R"  # an instantaneous rotation about the instant centre
     check_consistent(m, mech)
@@ -117,11 +107,11 @@ def test_four_bar_collinear_singularity():
     bx, by = symbols("b_x b_y", real=True)
     mech = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
     cases = mech.mobility_cases()
-    by_dof = {m.dof: c for c, m in cases}
-    assert cases[0][1].dof == 1 and by_dof[2].free_symbols == {by} | {bx}
-    two = [c for c, m in cases if m.dof == 2]
+    by_dof = {m.mobility: c for c, m in cases}
+    assert cases[0][1].mobility == 1 and by_dof[2].free_symbols == {by} | {bx}
+    two = [c for c, m in cases if m.mobility == 2]
     assert two and all(c.xreplace({by: 0, bx: 1}) is true for c in two[:1])
-    assert mech.xreplace({by: 0, bx: 1}).mobility().dof == 2
+    assert mech.xreplace({by: 0, bx: 1}).mobility().mobility == 2
     assert mech.xreplace({by: 0, bx: 1}).mobility().motion == "1R1T"
 
 
@@ -129,9 +119,9 @@ def test_stewart_gough_6ups():
     # 6 DOF, 3R3T (Gough 1956; Stewart 1965; Merlet, Parallel Robots, 2006, Ch. 1)
     mech = stewart()
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical, m.common, m.redundant, m.passive) == (
+    assert (m.mobility, m.motion, m.classical, m.common, m.redundant, m.passive) == (
         6, "3R3T", 6, 0, 0, 0)
-    assert mech.constraint_system().rank == 0
+    assert mech.constraints.rank == 0
     check_consistent(m, mech)
 
 
@@ -140,7 +130,7 @@ def test_stewart_gough_6sps_has_six_passive_freedoms():
     # 6(14-18-1)+42 = 12, the platform has 6 (Tsai, Robot Analysis, 1999, §1.4:
     # mobility 12 minus 6 idle/passive leg rotations)
     m = stewart(first=S).mobility()
-    assert (m.dof, m.classical, m.passive, m.motion) == (6, 12, 6, "3R3T")
+    assert (m.mobility, m.classical, m.passive, m.motion) == (6, 12, 6, "3R3T")
 
 
 def test_three_rps():
@@ -148,12 +138,12 @@ def test_three_rps():
     # 105; Lee & Shah 1988, J. Mech. Trans. Autom. Des. 110)
     mech = three_rps()
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical, m.common, m.redundant, m.passive) == (
+    assert (m.mobility, m.motion, m.classical, m.common, m.redundant, m.passive) == (
         3, "2R1T", 3, 0, 0, 0)
     # each leg transmits one force, through its sphere centre along its R axis (Huang,
     # Li & Ding, Ch. 5: constraint analysis of 3-RPS)
     for limb in mech.limbs:
-        (w,) = limb.constraints()
+        (w,) = limb.constraints
         rj, _, sj = limb.joints
         assert Matrix(w.f).cross(rj.args[1]) == Matrix([0, 0, 0])
         assert expand(Matrix(w.C_O) - Matrix(sj.args[0]).cross(w.f)) == Matrix([0, 0, 0])
@@ -170,18 +160,18 @@ def test_three_rps_symbolic_and_its_constraint_singularity():
     h = symbols("h1:4", positive=True)
     mech = three_rps(rho, h)
     cases = mech.mobility_cases()
-    assert cases[0][1].dof == 3 and cases[0][1].motion == "2R1T"
-    singular = [(c, m) for c, m in cases if m.dof != 3]
+    assert cases[0][1].mobility == 3 and cases[0][1].motion == "2R1T"
+    singular = [(c, m) for c, m in cases if m.mobility != 3]
     assert len(singular) == 1
     cond, m = singular[0]
-    assert (m.dof, m.motion) == (4, "3R1T")
+    assert (m.mobility, m.motion) == (4, "3R1T")
     at = {rho[0]: 1, rho[1]: -3, rho[2]: -4, h[0]: 2, h[1]: 2, h[2]: 2}
     assert cond.xreplace(at) is true
-    assert all(c.xreplace(at) is not true for c, mm in cases if mm.dof == 3)
+    assert all(c.xreplace(at) is not true for c, mm in cases if mm.mobility == 3)
     # independently, in floating point
     f = mobility_map(mech, [*rho, *h])
     vals = [np.array([at[s], 0.5]) for s in (*rho, *h)]
-    assert list(f(*vals).dof) == [4, 3]
+    assert list(f(*vals).mobility) == [4, 3]
 
 
 def test_three_rrr_spherical():
@@ -193,7 +183,7 @@ def test_three_rrr_spherical():
         Limb(R(O, [0, 0, 1]), R(O, [1, 1, 0]), R(O, [1, 2, 1])),
     )
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical, m.common, m.order, m.redundant) == (
+    assert (m.mobility, m.motion, m.classical, m.common, m.order, m.redundant) == (
         3, "3R", -3, 3, 3, 0)
     check_consistent(m, mech)
 
@@ -204,9 +194,9 @@ def test_three_upu_translational():
     legs = zip(UPU_BASE[:3], UPU_AXIS[:3], UPU_TOP[:3], strict=True)
     mech = ParallelMechanism(*(upu_leg(*x) for x in legs))
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical, m.redundant) == (3, "3T", 3, 0)
+    assert (m.mobility, m.motion, m.classical, m.redundant) == (3, "3T", 3, 0)
     for limb in mech.limbs:
-        (w,) = limb.constraints()
+        (w,) = limb.constraints
         assert w.f == Matrix([0, 0, 0])  # a couple
     check_consistent(m, mech)
 
@@ -219,7 +209,7 @@ def test_four_upu_is_overconstrained():
     legs = zip(UPU_BASE, UPU_AXIS, UPU_TOP, strict=True)
     mech = ParallelMechanism(*(upu_leg(*x) for x in legs))
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical, m.redundant, m.common) == (3, "3T", 2, 1, 0)
+    assert (m.mobility, m.motion, m.classical, m.redundant, m.common) == (3, "3T", 2, 1, 0)
     check_consistent(m, mech)
 
 
@@ -232,7 +222,7 @@ def test_three_rrr_planar():
         Limb(R([2, 4, 0], Z), R([1, 3, 0], Z), R([2, 2, 0], Z)),
     )
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical, m.common, m.redundant) == (3, "1R2T", -3, 3, 0)
+    assert (m.mobility, m.motion, m.classical, m.common, m.redundant) == (3, "1R2T", -3, 3, 0)
     check_consistent(m, mech)
 
 
@@ -249,7 +239,7 @@ def test_three_prs():
 
     mech = ParallelMechanism(*(leg(i) for i in range(3)))
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical) == (3, "2R1T", 3)
+    assert (m.mobility, m.motion, m.classical) == (3, "2R1T", 3)
     check_consistent(m, mech)
 
 
@@ -257,12 +247,12 @@ def test_three_prs():
 
 
 def test_joint_twists():
-    assert R([1, 0, 0], Z).twists().matrix.T.tolist() == [[0, 0, 1, 0, -1, 0]]
-    assert P([1, 2, 3]).twists().matrix.T.tolist() == [[0, 0, 0, 1, 2, 3]]
-    assert H(O, Z, 2).twists().matrix.T.tolist() == [[0, 0, 1, 0, 0, 2]]
-    assert C(O, Z).twists().rank == 2 and C(O, Z).freedom == 2
-    assert U(O, [1, 0, 0], [0, 1, 0]).twists().rank == 2
-    assert S([1, 2, 3]).twists().rank == 3 and S(O).freedom == 3
+    assert R([1, 0, 0], Z).twists.matrix.T.tolist() == [[0, 0, 1, 0, -1, 0]]
+    assert P([1, 2, 3]).twists.matrix.T.tolist() == [[0, 0, 0, 1, 2, 3]]
+    assert H(O, Z, 2).twists.matrix.T.tolist() == [[0, 0, 1, 0, 0, 2]]
+    assert C(O, Z).twists.rank == 2 and C(O, Z).freedom == 2
+    assert U(O, [1, 0, 0], [0, 1, 0]).twists.rank == 2
+    assert S([1, 2, 3]).twists.rank == 3 and S(O).freedom == 3
     leg = Limb(R(O, Z), P([1, 0, 0]), S([1, 0, 1]))
     assert leg.freedom == 5 and leg.passive == 0
     assert Limb(S(O), S([0, 0, 1])).passive == 1  # the S-S link spins about its axis
@@ -281,7 +271,7 @@ def test_objects_are_basic():
     assert leg.subs(a, 1) == Limb(R([1, 0, 0], Z), P(Z))
     with pytest.raises(TypeError, match="strings are never evaluated"):
         leg.subs(a, "1")
-    assert isinstance(leg.twists(), ScrewSystem)
+    assert isinstance(leg.twists, ScrewSystem)
 
 
 def test_bad_input():
@@ -294,7 +284,7 @@ def test_bad_input():
         S([1, 2])
     with pytest.raises(ValueError, match="joints: expected at least one joint, got none"):
         Limb()
-    with pytest.raises(TypeError, match=r"joints\[1\]: expected a joint \(R, P, H, C, U or S\)"):
+    with pytest.raises(TypeError, match=r"joints\[1\]: expected a joint \(Revolute, Prismatic, Helical, Cylindrical, Universal or Spherical\)"):
         Limb(R(O, Z), [1, 0, 0])
     with pytest.raises(ValueError, match="limbs: expected at least one limb, got none"):
         ParallelMechanism()
@@ -318,7 +308,7 @@ def test_joints_refuse_floats_naming_the_argument():
         U(O, [0.5, 1, 0], Z)
     with pytest.raises(ValueError, match=rf"^point: {exact}"):
         S([0, 0, 0.5])
-    assert R([Rational(1, 2), 0, 0], Z).twists().rank == 1
+    assert R([Rational(1, 2), 0, 0], Z).twists.rank == 1
 
 
 # ---------------------------------------------------------------- numeric
@@ -336,15 +326,15 @@ def test_mobility_map_agrees_with_the_exact_analysis():
     vals[5][:5] = vals[3][:5]
     vals[2][:5] = -6 - vals[0][:5] - vals[1][:5]
     out = f(*vals)
-    assert out.dof.shape == (50,) and out.limb_constraints.shape == (50, 3)
-    assert list(out.dof[:5]) == [4] * 5 and (out.dof[5:] == 3).all()
+    assert out.mobility.shape == (50,) and out.limb_constraints.shape == (50, 3)
+    assert list(out.mobility[:5]) == [4] * 5 and (out.mobility[5:] == 3).all()
     assert (out.limb_constraints == 1).all()
     for j in (0, 7):  # exact check of two configurations
         at = {s: Rational(float(v[j])) for s, v in zip((*rho, *h), vals, strict=True)}
         if j == 0:  # on the singular set exactly, not only to rounding
             at[rho[2]] = -6 - at[rho[0]] - at[rho[1]]
-        exact = mech.xreplace(at).mobility().dof
-        assert exact == out.dof[j]
+        exact = mech.xreplace(at).mobility().mobility
+        assert exact == out.mobility[j]
     # sigma: the third |R_jj| of the union vanishes only at the singular configurations
     assert (out.sigma[:5, 2] < 1e-12).all() and (out.sigma[5:, 2] > 1e-6).all()
 
@@ -356,12 +346,12 @@ def test_mobility_map_backends_agree():
     grid = np.meshgrid(np.linspace(-2, 2, 9), np.linspace(-1, 1, 5))
     a = mobility_map(mech, [bx, by])(*grid)
     b = mobility_map(mech, [bx, by], backend="numba")(*grid)
-    assert a.dof.shape == (5, 9)
-    assert (a.dof == b.dof).all() and np.allclose(a.sigma, b.sigma)
+    assert a.mobility.shape == (5, 9)
+    assert (a.mobility == b.mobility).all() and np.allclose(a.sigma, b.sigma)
     # b_y = 0: collinear, 2 DOF, except b = (0, 0) where B sits on A (exact analysis: 1 DOF)
-    assert a.dof[2].tolist() == [2, 2, 2, 2, 1, 2, 2, 2, 2]
-    assert (a.dof[[0, 1, 3, 4]] == 1).all()
-    assert mech.xreplace({bx: 0, by: 0}).mobility().dof == 1
+    assert a.mobility[2].tolist() == [2, 2, 2, 2, 1, 2, 2, 2, 2]
+    assert (a.mobility[[0, 1, 3, 4]] == 1).all()
+    assert mech.xreplace({bx: 0, by: 0}).mobility().mobility == 1
 
 
 def test_mobility_map_bad_input():
@@ -398,9 +388,9 @@ def test_joint_twists_match_modern_robotics():
     mr = pytest.importorskip("modern_robotics")
     q, s_, h = [1.0, 2.0, 3.0], [0.0, 0.6, 0.8], 0.5
     ours = np.array(H([1, 2, 3], [0, Rational(3, 5), Rational(4, 5)], Rational(1, 2))
-                    .twists().matrix, dtype=float).ravel()
+                    .twists.matrix, dtype=float).ravel()
     assert np.allclose(ours, mr.ScrewToAxis(np.array(q), np.array(s_), h))
-    ours_r = np.array(R([1, 2, 3], [0, Rational(3, 5), Rational(4, 5)]).twists().matrix,
+    ours_r = np.array(R([1, 2, 3], [0, Rational(3, 5), Rational(4, 5)]).twists.matrix,
                       dtype=float).ravel()
     assert np.allclose(ours_r, mr.ScrewToAxis(np.array(q), np.array(s_), 0))
 
@@ -415,16 +405,16 @@ def test_three_upu_constraint_singularity():
     legs = zip(UPU_BASE[:3], UPU_AXIS[:3], tops, strict=True)
     mech = ParallelMechanism(*(upu_leg(*leg) for leg in legs))
     cases = mech.mobility_cases()
-    assert [(m.dof, m.motion) for _, m in cases] == [(3, "3T"), (4, "1R3T")]
+    assert [(m.mobility, m.motion) for _, m in cases] == [(3, "3T"), (4, "1R3T")]
     singular = cases[1][0]
     assert singular.xreplace({x: Rational(-48, 11), z: 3}) is true
     # the three couples are dependent there, independent elsewhere (exactly and in floats)
-    couples = lambda at: Matrix.hstack(*(limb.constraints().matrix[3:, :]  # noqa: E731
+    couples = lambda at: Matrix.hstack(*(limb.constraints.matrix[3:, :]  # noqa: E731
                                          for limb in mech.xreplace(at).limbs))
     assert couples({x: Rational(-48, 11), z: 3}).rank() == 2
     assert couples({x: 0, z: 3}).rank() == 3
     f = mobility_map(mech, [x, z])
-    assert list(f(np.array([-48 / 11, 0.0]), 3.0).dof) == [4, 3]
+    assert list(f(np.array([-48 / 11, 0.0]), 3.0).mobility) == [4, 3]
 
 
 def test_sarrus_linkage():
@@ -438,7 +428,7 @@ def test_sarrus_linkage():
         Limb(R([0, 0, 0], Y), R([1, 0, 1], Y), R([0, 0, 2], Y)),
     )
     m = mech.mobility()
-    assert (m.dof, m.motion, m.classical, m.common, m.order, m.redundant) == (1, "1T", 0, 1, 5, 0)
+    assert (m.mobility, m.motion, m.classical, m.common, m.order, m.redundant) == (1, "1T", 0, 1, 5, 0)
     assert Matrix(m.translation_directions).cross(Matrix(Z)) == Matrix([0, 0, 0])  # along z
     check_consistent(m, mech)
 
@@ -447,10 +437,10 @@ def assert_mobility_cases_exhaustive(mech, points):
     """At each point: some case holds, and every case that holds gives the exact DOF there."""
     cases = mech.mobility_cases()
     for point in points:
-        exact = mech.xreplace(point).mobility().dof
+        exact = mech.xreplace(point).mobility().mobility
         holding = [m for c, m in cases if c.xreplace(point) is true]
         assert holding, f"no case holds at {point}"
-        assert all(m is None or m.dof == exact for m in holding), (point, exact)
+        assert all(m is None or m.mobility == exact for m in holding), (point, exact)
 
 
 def test_mobility_cases_are_exhaustive_at_special_and_random_points():
@@ -471,7 +461,7 @@ def test_assert_mobility_cases_exhaustive_rejects_a_wrong_dof():
 
     class Lying:
         def mobility_cases(self):
-            return [(c, m._replace(dof=1)) for c, m in fourbar.mobility_cases()]
+            return [(c, m._replace(mobility=1)) for c, m in fourbar.mobility_cases()]
 
         def xreplace(self, point):
             return fourbar.xreplace(point)
@@ -484,11 +474,11 @@ def test_an_unconstrained_platform_has_twists():
     # 6-DOF limbs leave no constraint: the empty constraint system is of wrenches, and the
     # platform's twist system (its reciprocal) holds twists
     from screwsym import Twist, Wrench
-    from screwsym.mechanism import Limb, ParallelMechanism, S, U
-    from screwsym.mechanism import P as Prismatic
+    from screwsym.systems.joints import Prismatic, S, U
+    from screwsym.systems.mechanism import Limb, ParallelMechanism
 
     legs = [Limb(U([k, 0, 0], [1, 0, 0], [0, 1, 0]), Prismatic([0, 0, 1]), S([k, 0, 1]))
             for k in range(6)]
     mech = ParallelMechanism(*legs)
-    assert mech.constraint_system().kind is Wrench and len(mech.constraint_system()) == 0
-    assert mech.twist_system().kind is Twist and mech.mobility().twists.kind is Twist
+    assert mech.constraints.kind is Wrench and len(mech.constraints) == 0
+    assert mech.twists.kind is Twist and mech.mobility().twists.kind is Twist

@@ -4,7 +4,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from sympy import ImmutableMatrix, Rational
 
-from screwsym import Screw, axis, decompose, foot, pitch, reciprocal_product, shift_origin
+from screwsym import Screw, axis, decompose_screw, foot, pitch, reciprocal_product, shift_origin
 
 rationals = st.fractions(min_value=-20, max_value=20, max_denominator=50).map(Rational)
 vectors = st.tuples(rationals, rationals, rationals).map(lambda v: ImmutableMatrix(v))
@@ -49,7 +49,7 @@ def test_axis_has_pitch_zero_and_lies_along_S(s):
 @SETTINGS
 @given(screws)
 def test_decompose_sums_back(s):
-    line, couple = decompose(s)
+    line, couple = decompose_screw(s)
     assert line + couple == s
     assert couple.S == ImmutableMatrix([0, 0, 0])
     assert couple.S0 == pitch(s) * s.S

@@ -9,7 +9,7 @@ import pytest
 from sympy import Eq, Matrix, Ne, Rational, Symbol, cos, expand, sqrt, symbols, true
 
 from screwsym import Screw, ScrewSystem, Twist, Wrench, reciprocal_product, vector
-from screwsym.system import _cases
+from screwsym.systems.screw_system import _cases
 
 Z = [0, 0, 1]
 

@@ -33,7 +33,7 @@ def test_screw_motion_1_52_1_53_pins_the_sign_of_v_O():
     T = Twist.from_axis(r, S, h, magnitude=w)
     assert vanishes(T.v_O - (h * w * S + (w * S).cross(-r)))  # transcription 0.5
     assert vanishes(
-        T.as_matrix() - (Twist.from_axis(r, S, magnitude=w) + Twist.translation(h * w * S)).as_matrix()
+        T.matrix - (Twist.from_axis(r, S, magnitude=w) + Twist.translation(h * w * S)).matrix
     )
 
 

@@ -6,7 +6,7 @@ from sympy import I, ImmutableMatrix, Matrix, Rational, symbols
 
 import screwsym
 from screwsym import LineVector, Screw, Twist, Wrench, vector
-from screwsym._validation import check_scalar, check_vector
+from screwsym.core.checks import check_scalar, check_vector
 
 x = symbols("x", real=True)
 

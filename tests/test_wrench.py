@@ -44,7 +44,7 @@ def test_wrench_as_force_plus_parallel_couple():
     S, r = vector("S"), vector("r")
     lhs = Wrench.from_axis(r, S, C / f, magnitude=f)
     rhs = Wrench.force(f * S, point=r) + Wrench.couple(C * S)
-    assert all(cancel(e) == 0 for e in (lhs - rhs).as_matrix())
+    assert all(cancel(e) == 0 for e in (lhs - rhs).matrix)
 
 
 def test_power_is_the_reciprocal_product_and_physical_power():

@@ -14,7 +14,7 @@ real symbols and verified by an exact decision procedure.
 (True, 0)
 """
 
-from ._entry import KINDS, Check, CheckResult, Construction, Entry, Result
+from ._entry import KINDS, Check, CheckResult, Construction, Entry, Result, as_text
 from ._registry import entries, entry, ids
 from ._verify import Decision, decide_nonzero, decide_zero
 
@@ -26,6 +26,7 @@ __all__ = [
     "Decision",
     "Entry",
     "Result",
+    "as_text",
     "decide_nonzero",
     "decide_zero",
     "entries",

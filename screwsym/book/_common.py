@@ -42,7 +42,7 @@ def book_dot(a, b):
 
 def six(s) -> ImmutableMatrix:
     """The 6x1 column of a screw, through the library."""
-    return s.as_matrix()
+    return s.matrix
 
 
 def stack(S, S0) -> ImmutableMatrix:

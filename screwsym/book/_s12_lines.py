@@ -420,7 +420,7 @@ def _e_szero(c):
     s = ss.Screw(Z3, S0)
     c.holds("classify(s) == 'couple'", ss.classify(s) == "couple")
     c.holds("pitch(s) == oo", ss.pitch(s) == oo)
-    c.zero("shift_origin(s, a) - s", ss.shift_origin(s, vec("a")).as_matrix() - s.as_matrix())
+    c.zero("shift_origin(s, a) - s", ss.shift_origin(s, vec("a")).matrix - s.matrix)
     try:
         ss.foot(s)
         raised = False

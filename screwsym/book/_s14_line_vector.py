@@ -32,7 +32,7 @@ def _e1_28(c):
     c.zero("S . S0", book_dot(L.S, L.S0))
     c.nonzero("counter-example: (r + S x w) x S - S0", book_cross(r + book_cross(S, w), S) - L.S0)
     c.zero("-L has the same points: (r + t S) x (-S) - (-S0)", book_cross(r + t * S, (-L).S) - (-L).S0)
-    c.nonzero("but -L != L as line vectors", (-L).as_matrix() - L.as_matrix())
+    c.nonzero("but -L != L as line vectors", (-L).matrix - L.matrix)
 
 
 def _pab():
@@ -107,7 +107,7 @@ def _fig_1_5(c):
     }
     for label, (point, direction, zeros_at) in rows.items():
         L = ss.LineVector.from_axis(point, direction)
-        m = L.as_matrix()
+        m = L.matrix
         for k in zeros_at or ():
             c.zero(f"{label}: component {k + 1} is 0", m[k])
         c.zero(f"{label}: S . S0", book_dot(L.S, L.S0))
@@ -116,8 +116,8 @@ def _fig_1_5(c):
            ss.LineVector.from_axis([X0, Y0, Z0], [a, b, 0]).S0 - Matrix([-b * Z0, a * Z0, b * X0 - a * Y0]))
     c.zero("(a b 0; d e 0): S0 = Z0 (-b, a, 0)",
            ss.LineVector.from_axis([0, 0, Z0], [a, b, 0]).S0 - Z0 * Matrix([-b, a, 0]))
-    c.zero("(1 0 0; 0 a b) exactly", ss.LineVector.from_axis([0, -b, a], [1, 0, 0]).as_matrix()
+    c.zero("(1 0 0; 0 a b) exactly", ss.LineVector.from_axis([0, -b, a], [1, 0, 0]).matrix
            - Matrix([1, 0, 0, 0, a, b]))
-    c.zero("(1 0 0; 0 1 0) exactly", ss.LineVector.from_axis([0, 0, 1], [1, 0, 0]).as_matrix()
+    c.zero("(1 0 0; 0 1 0) exactly", ss.LineVector.from_axis([0, 0, 1], [1, 0, 0]).matrix
            - Matrix([1, 0, 0, 0, 1, 0]))
     c.nonzero("a general line has S0_z != 0", ss.LineVector.from_axis(p, S).S0[2])

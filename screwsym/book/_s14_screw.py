@@ -62,8 +62,8 @@ def _e1_32(c):
     h = real("h")
     c.zero("shift_origin(s, a).S0 - (S0 + (-a) x S)", ss.shift_origin(s, a).S0 - (S0 + book_cross(-a, S)))
     c.zero("shift_origin(from_axis(p, S, h), a) - from_axis(p - a, S, h)",
-           ss.shift_origin(ss.Screw.from_axis(p, S, h), a).as_matrix()
-           - ss.Screw.from_axis(p - a, S, h).as_matrix())
+           ss.shift_origin(ss.Screw.from_axis(p, S, h), a).matrix
+           - ss.Screw.from_axis(p - a, S, h).matrix)
     c.zero("moment of a force through a about a", ss.shift_origin(ss.Wrench.force(f, point=a), a).S0)
     c.nonzero("counter-example: the wrong direction S0 + a x S",
               ss.shift_origin(s, a).S0 - (S0 + book_cross(a, S)))
@@ -116,7 +116,7 @@ def _e1_34(c):
     r"(\mathbf S;\ \mathbf S^0)=(\mathbf S;\ \mathbf S^0-h\mathbf S+h\mathbf S),\qquad "
     r"\mathbf S^0-h\mathbf S\perp\mathbf S,\quad \mathbf S^0-h\mathbf S=\mathbf S_0",
     "identity",
-    """Generic screw: axis(s).S0 = S0 - h S with h the book's ratio, axis(s).S = S, S . (S0 - h S) = 0, decompose(s)'s line part is (S; S0 - h S), and its parts
+    """Generic screw: axis(s).S0 = S0 - h S with h the book's ratio, axis(s).S = S, S . (S0 - h S) = 0, decompose_screw(s)'s line part is (S; S0 - h S), and its parts
     add back to s.""",
     errata=("S^0 and S_0 are both printed \"S0\": \"S0 - hS = S0\" reads "
             "S^0 - h S = S_0 = r x S, the moment of the axis.",),
@@ -128,9 +128,9 @@ def _e1_35(c):
     c.zero("axis(s).S0 - (S0 - h S)", ax.S0 - (S0 - h * S))
     c.zero("axis(s).S - S", ax.S - S)
     c.zero("S . (S0 - h S)", book_dot(S, ax.S0))
-    line, couple = ss.decompose(s)
-    c.zero("decompose: line part - (S; S0 - h S)", line.as_matrix() - stack(S, S0 - h * S))
-    c.zero("line + couple - s", (line + couple).as_matrix() - stack(S, S0))
+    line, couple = ss.decompose_screw(s)
+    c.zero("decompose: line part - (S; S0 - h S)", line.matrix - stack(S, S0 - h * S))
+    c.zero("line + couple - s", (line + couple).matrix - stack(S, S0))
 
 
 @statement(
@@ -159,18 +159,18 @@ def _e1_36(c):
     "1.37", _SEC, "Screw = axis line vector + parallel couple",
     r"\$=(\mathbf S;\ \mathbf S^0)=(\mathbf S;\ \mathbf S^0-h\mathbf S)+(\mathbf 0;\ h\mathbf S)",
     "identity",
-    """decompose(s) of a generic screw: the line part is (S; S0 - h S) with pitch 0, the
+    """decompose_screw(s) of a generic screw: the line part is (S; S0 - h S) with pitch 0, the
     couple part is (0; h S), and their sum is s.""",
     errata=("\"From Eq. (1.25), a screw can be expressed as\" should read Eq. (1.35).",),
 )
 def _e1_37(c):
     S, S0, a, s = _screw()
     h = _book_pitch(S, S0)
-    line, couple = ss.decompose(s)
-    c.zero("line - (S; S0 - h S)", line.as_matrix() - stack(S, S0 - h * S))
-    c.zero("couple - (0; h S)", couple.as_matrix() - stack(Z3, h * S))
+    line, couple = ss.decompose_screw(s)
+    c.zero("line - (S; S0 - h S)", line.matrix - stack(S, S0 - h * S))
+    c.zero("couple - (0; h S)", couple.matrix - stack(Z3, h * S))
     c.zero("pitch(line)", ss.pitch(line))
-    c.zero("line + couple - s", (line + couple).as_matrix() - stack(S, S0))
+    c.zero("line + couple - s", (line + couple).matrix - stack(S, S0))
 
 
 @statement(
@@ -190,7 +190,7 @@ def _e1_38(c):
     r, S = vec("r"), vec("S")
     h = real("h")
     s = ss.Screw.from_axis(r, S, h)
-    c.zero("from_axis(r, S, h) - (S; r x S + h S)", s.as_matrix() - stack(S, book_cross(r, S) + h * S))
+    c.zero("from_axis(r, S, h) - (S; r x S + h S)", s.matrix - stack(S, book_cross(r, S) + h * S))
     c.zero("pitch - h", ss.pitch(s) - h)
     c.zero("axis(s).S0 - r x S", ss.axis(s).S0 - book_cross(r, S))
     c.zero("axis(s).S - S", ss.axis(s).S - S)
@@ -198,7 +198,7 @@ def _e1_38(c):
     c.holds("contains(from_axis((1, 2, 3), (0, 1, 1), 2), (1, 2, 4)) is False",
             ss.contains(ss.Screw.from_axis([1, 2, 3], [0, 1, 1], 2), [1, 2, 4]) is False)
     parts = ss.LineVector.from_axis(r, S) + ss.Screw.couple(h * S)
-    c.zero("(S; S0) + (0; h S) - s", parts.as_matrix() - s.as_matrix())
+    c.zero("(S; S0) + (0; h S) - s", parts.matrix - s.matrix)
 
 
 @statement(
@@ -286,9 +286,9 @@ def _ex1_3(c):
     u = Matrix([1, 1, 1]) / sqrt(3)
     s = ss.Screw(u, u)
     c.zero("S . S - 1", book_dot(s.S, s.S) - 1)
-    c.zero("unit((1 1 1; 1 1 1)) - s", ss.unit(ss.Screw([1, 1, 1], [1, 1, 1])).as_matrix() - s.as_matrix())
+    c.zero("unit((1 1 1; 1 1 1)) - s", ss.unit(ss.Screw([1, 1, 1], [1, 1, 1])).matrix - s.matrix)
     c.zero("unit of the couple (0; 0 0 -2) is (0; 0 0 -1)",
-           ss.unit(ss.Screw.couple([0, 0, -2])).as_matrix() - Matrix([0, 0, 0, 0, 0, -1]))
+           ss.unit(ss.Screw.couple([0, 0, -2])).matrix - Matrix([0, 0, 0, 0, 0, -1]))
     c.zero("pitch - 1", ss.pitch(s) - 1)
     c.zero("axis moment", ss.axis(s).S0)
     c.zero("axis direction - S", ss.axis(s).S - u)

@@ -28,7 +28,7 @@ def _through_c():
 )
 def _e1_39(c):
     S1, D1, S2, D2, s1, s2 = _two_screws()
-    c.zero("(s1 + s2) - (S1 + S2; S1^0 + S2^0)", (s1 + s2).as_matrix() - stack(S1 + S2, D1 + D2))
+    c.zero("(s1 + s2) - (S1 + S2; S1^0 + S2^0)", (s1 + s2).matrix - stack(S1 + S2, D1 + D2))
 
 
 @statement(
@@ -209,7 +209,7 @@ def _lv_plus_couple(c):
 def _th1_3(c):
     C1, C2 = vec("C1"), vec("C2")
     s = ss.Screw.couple(C1) + ss.Screw.couple(C2)
-    c.zero("sum - (0; C1 + C2)", s.as_matrix() - stack(Z3, C1 + C2))
+    c.zero("sum - (0; C1 + C2)", s.matrix - stack(Z3, C1 + C2))
     a, b = symbols("a b", positive=True)
     c.holds("classify == 'couple'", ss.classify(ss.Screw.couple([a, 0, 0]) + ss.Screw.couple([b, 0, 0])) == "couple")
     z = ss.Screw.couple([1, 2, 3]) + ss.Screw.couple([-1, -2, -3])
@@ -226,7 +226,7 @@ def _th1_3(c):
 def _e1_44(c):
     S1, D1, S2, D2, s1, s2 = _two_screws()
     lam = real("lambda")
-    c.zero("lam s - (lam S; lam S0)", (lam * s1).as_matrix() - stack(lam * S1, lam * D1))
+    c.zero("lam s - (lam S; lam S0)", (lam * s1).matrix - stack(lam * S1, lam * D1))
     nz = symbols("mu", real=True, nonzero=True)
     c.zero("pitch(mu s) - pitch(s)", ss.pitch(nz * s1) - ss.pitch(s1))
     c.zero("foot(mu s) - foot(s)", ss.foot(nz * s1) - ss.foot(s1))
@@ -274,11 +274,11 @@ def _e1_46(c):
     a, p = vec("a"), vec("p")
     h = real("h")
     AO = -a
-    c.zero("$1^A - (S1; S1^0 + AO x S1)", ss.shift_origin(s1, a).as_matrix() - stack(S1, D1 + book_cross(AO, S1)))
-    c.zero("$2^A - (S2; S2^0 + AO x S2)", ss.shift_origin(s2, a).as_matrix() - stack(S2, D2 + book_cross(AO, S2)))
+    c.zero("$1^A - (S1; S1^0 + AO x S1)", ss.shift_origin(s1, a).matrix - stack(S1, D1 + book_cross(AO, S1)))
+    c.zero("$2^A - (S2; S2^0 + AO x S2)", ss.shift_origin(s2, a).matrix - stack(S2, D2 + book_cross(AO, S2)))
     c.zero("pin: shift_origin(from_axis(p, S1, h), a) - from_axis(p - a, S1, h)",
-           ss.shift_origin(ss.Screw.from_axis(p, S1, h), a).as_matrix()
-           - ss.Screw.from_axis(p - a, S1, h).as_matrix())
+           ss.shift_origin(ss.Screw.from_axis(p, S1, h), a).matrix
+           - ss.Screw.from_axis(p - a, S1, h).matrix)
 
 
 @statement(

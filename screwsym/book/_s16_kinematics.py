@@ -25,9 +25,9 @@ def _rot():
 )
 def _e1_48(c):
     S, r, w, T = _rot()
-    c.zero("from_axis - (omega S; omega r x S)", T.as_matrix() - stack(w * S, w * book_cross(r, S)))
+    c.zero("from_axis - (omega S; omega r x S)", T.matrix - stack(w * S, w * book_cross(r, S)))
     c.zero("Twist.rotation(omega S, point=r) - (omega S; omega r x S)",
-           ss.Twist.rotation(w * S, point=r).as_matrix() - stack(w * S, w * book_cross(r, S)))
+           ss.Twist.rotation(w * S, point=r).matrix - stack(w * S, w * book_cross(r, S)))
 
 
 @statement(
@@ -92,8 +92,8 @@ def _e_translation(c):
     S, a, p = vec("S"), vec("a"), vec("p")
     v = real("v")
     T = ss.Twist.translation(v * S)
-    c.zero("translation - (0; v S)", T.as_matrix() - stack(Z3, v * S))
-    c.zero("shift_origin(T, a) - T", ss.shift_origin(T, a).as_matrix() - T.as_matrix())
+    c.zero("translation - (0; v S)", T.matrix - stack(Z3, v * S))
+    c.zero("shift_origin(T, a) - T", ss.shift_origin(T, a).matrix - T.matrix)
     c.zero("velocity_at(p) - v S", T.velocity_at(p) - v * S)
 
 
@@ -120,10 +120,10 @@ def _screw_motion():
 def _e1_52(c):
     S, r, w, h, T = _screw_motion()
     parts = ss.Twist.from_axis(r, S, magnitude=w) + ss.Twist.translation(h * w * S)
-    c.zero("rotation + translation - screw_motion", parts.as_matrix() - T.as_matrix())
-    c.zero("from_axis - omega (S; r x S + h S)", T.as_matrix() - stack(w * S, w * (book_cross(r, S) + h * S)))
+    c.zero("rotation + translation - screw_motion", parts.matrix - T.matrix)
+    c.zero("from_axis - omega (S; r x S + h S)", T.matrix - stack(w * S, w * (book_cross(r, S) + h * S)))
     c.zero("Twist.screw_motion(omega S, point=r, pitch=h) - omega (S; r x S + h S)",
-           ss.Twist.screw_motion(w * S, point=r, pitch=h).as_matrix()
+           ss.Twist.screw_motion(w * S, point=r, pitch=h).matrix
            - stack(w * S, w * (book_cross(r, S) + h * S)))
 
 

@@ -57,7 +57,7 @@ def _e1_56(c):
     r"f_1(\mathbf S_1;\ \mathbf S_1^0)=f_1(\mathbf S_1;\ \mathbf S_{01})+C(\mathbf 0;\ \mathbf S_1),"
     r"\qquad \mathbf S_1^0=\mathbf S_{01}+h\mathbf S_1,\ \ h=C/f_1",
     "identity",
-    """Wrench.from_axis(r, S, 0, magnitude=f) + Wrench.couple(C S) equals Wrench.from_axis(r, S, C/f, magnitude=f); decompose() of the latter returns a force on the axis and a couple parallel to
+    """Wrench.from_axis(r, S, 0, magnitude=f) + Wrench.couple(C S) equals Wrench.from_axis(r, S, C/f, magnitude=f); decompose_screw() of the latter returns a force on the axis and a couple parallel to
     S.""",
     errata=("Section heading \"A Twist Acting on a Body\" should read \"A Wrench Acting on a "
             "Body\"; the index i in f1(S_i; S0i) should be 1.",),
@@ -71,11 +71,11 @@ def _e_wrench_dec(c):
     C = real("C")
     W = ss.Wrench.from_axis(r, S, C / f, magnitude=f)
     parts = ss.Wrench.from_axis(r, S, 0, magnitude=f) + ss.Wrench.couple(C * S)
-    c.zero("force + couple - wrench", parts.as_matrix() - W.as_matrix())
-    force, couple = ss.decompose(W)
+    c.zero("force + couple - wrench", parts.matrix - W.matrix)
+    force, couple = ss.decompose_screw(W)
     c.zero("couple part parallel to S", book_cross(couple.S0, S))
     c.zero("couple part - C S", couple.S0 - C * S)
-    c.zero("force part - f (S; r x S)", force.as_matrix() - stack(f * S, f * book_cross(r, S)))
+    c.zero("force part - f (S; r x S)", force.matrix - stack(f * S, f * book_cross(r, S)))
 
 
 @statement(

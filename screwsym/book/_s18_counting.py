@@ -60,7 +60,7 @@ _HOW = """Directions S on the unit sphere by the rational stereographic map of (
 def _count_lines(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
     line = ss.LineVector.from_axis(foot, S)
-    L = line.as_matrix()
+    L = line.matrix
     c.zero("the map: L - (S; foot x S)", L - stack(S, book_cross(foot, S)))
     c.zero("foot(L) - foot at the rational point", _at_point(foot, S) - foot.xreplace(_values()))
     c.zero("rank - 4", _rank(L, (a, b, u, v)) - 4)
@@ -84,12 +84,12 @@ def _count_lines(c):
 def _count_unit_lines(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
     L = ss.LineVector.from_axis(foot, S)
-    c.zero("the map: L - (S; foot x S)", L.as_matrix() - stack(S, book_cross(foot, S)))
+    c.zero("the map: L - (S; foot x S)", L.matrix - stack(S, book_cross(foot, S)))
     c.zero("foot(L) - foot at the rational point", _at_point(foot, S) - foot.xreplace(_values()))
-    c.zero("rank - 4", _rank(L.as_matrix(), (a, b, u, v)) - 4)
+    c.zero("rank - 4", _rank(L.matrix, (a, b, u, v)) - 4)
     c.zero("|S|^2 - 1", book_dot(L.S, L.S) - 1)
     c.zero("foot(-L) - foot(L)", ss.foot(-L) - ss.foot(L))
-    c.nonzero("-L != L", (-L).as_matrix() - L.as_matrix())
+    c.nonzero("-L != L", (-L).matrix - L.matrix)
 
 
 @statement(
@@ -100,7 +100,7 @@ def _count_unit_lines(c):
 )
 def _count_unit_screws(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
-    s = ss.Screw.from_axis(foot, S, h).as_matrix()
+    s = ss.Screw.from_axis(foot, S, h).matrix
     c.zero("the map: s - (S; foot x S + h S)", s - stack(S, book_cross(foot, S) + h * S))
     c.zero("rank - 5", _rank(s, (a, b, u, v, h)) - 5)
 
@@ -114,6 +114,6 @@ def _count_unit_screws(c):
 )
 def _count_screws(c):
     (a, b, u, v, h, rho), S, foot = _parametrised()
-    s = (rho * ss.Screw.from_axis(foot, S, h)).as_matrix()
+    s = (rho * ss.Screw.from_axis(foot, S, h)).matrix
     c.zero("the map: s - rho (S; foot x S + h S)", s - rho * stack(S, book_cross(foot, S) + h * S))
     c.zero("rank - 6", _rank(s, (a, b, u, v, h, rho)) - 6)

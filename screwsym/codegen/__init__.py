@@ -116,12 +116,23 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from . import _build
-from ._build import BLOCK, cache_dir, clear_cache
+from ._build import BLOCK, cache_dir, clear_cache, load_index, save_index
 from ._emit import c_source as _c_source_from_plan
 from ._plan import build_plan
 from ._runtime import describe_trailing
 
-__all__ = ["lambdify", "c_source", "cache_dir", "clear_cache", "BACKENDS", "BLOCK"]
+__all__ = [
+    "lambdify",
+    "c_source",
+    "cache_dir",
+    "clear_cache",
+    "BACKENDS",
+    "BLOCK",
+    "default_backend",
+    "resolve_backend",
+    "load_index",
+    "save_index",
+]
 
 #: the back ends :func:`lambdify` knows
 BACKENDS: tuple[str, ...] = ("numpy", "numba", "c")
@@ -137,7 +148,12 @@ def default_backend() -> str:
     return "numba" if _HAS_NUMBA else "numpy"
 
 
-def _check_backend(backend: Any) -> str:
+def resolve_backend(backend: Any) -> str:
+    """The back end ``backend`` names, checked; None is :func:`default_backend`.
+
+    >>> resolve_backend("numpy")
+    'numpy'
+    """
     if backend is None:
         return default_backend()
     if not isinstance(backend, str) or backend not in BACKENDS:
@@ -219,7 +235,7 @@ def lambdify(
 
     c_source, screwsym.numeric
     """
-    backend = _check_backend(backend)
+    backend = resolve_backend(backend)
     if not isinstance(cse, bool):
         raise TypeError(f"cse: expected True or False, got {type(cse).__name__} {cse!r}")
     if doc is not None and not isinstance(doc, str):

@@ -154,8 +154,12 @@ def _matrix_symbols(m: MatrixBase, where: str) -> tuple[Symbol, ...]:
 
 
 def normalise_args(args: Any, names: Any) -> tuple[list[Arg], list[tuple[Symbol, ...]]]:
-    from ..screw import Screw
+    """Check ``args`` and describe each one's array.
 
+    An object with a method ``_lambdify_argument()`` (every screw) stands for
+    the matrix of symbols that method returns, described by the string it
+    returns beside it; code generation knows no screwsym class.
+    """
     if isinstance(args, (Basic, MatrixBase)):
         args = [args]
     if not isinstance(args, (list, tuple)):
@@ -176,10 +180,11 @@ def normalise_args(args: Any, names: Any) -> tuple[list[Arg], list[tuple[Symbol,
     used: set[str] = set()
     for i, a in enumerate(args):
         where = f"args[{i}]"
-        if isinstance(a, Screw):
-            syms = _matrix_symbols(a.as_matrix(), where)
-            trailing: tuple[int, ...] = (6,)
-            what = f"a {type(a).__name__.lower()} (S; S0)"
+        hook = getattr(type(a), "_lambdify_argument", None)
+        if hook is not None and not isinstance(a, type):
+            matrix, what = a._lambdify_argument()
+            syms = _matrix_symbols(matrix, where)
+            trailing: tuple[int, ...] = (len(syms),)
             stems = (_stem(syms[:3]), _stem(syms[3:]))
             default = "s" if None in stems else (stems[0] or "s").lower()
         elif isinstance(a, MatrixBase):
@@ -232,18 +237,9 @@ def normalise_expr(expr: Any) -> tuple[list[tuple[Out, tuple[Expr, ...]]], bool]
 
     An object with a method ``_lambdify_outputs()`` stands for what that method
     returns: a tuple of results (the core's common normal) or one matrix (a
-    rigid motion's 4x4 matrix).
+    screw's 6 components, a rigid motion's 4x4 matrix).
     """
-    from ..screw import Screw
-
-    hook = getattr(type(expr), "_lambdify_outputs", None)
-    if hook is not None and not isinstance(expr, type):
-        expr = expr._lambdify_outputs()
-        if not isinstance(expr, (tuple, MatrixBase)):
-            raise TypeError(
-                "expr: _lambdify_outputs() must return a tuple or a matrix, "
-                f"got {type(expr).__name__}"
-            )
+    expr = _outputs_of(expr, "expr", (tuple, MatrixBase), "a tuple or a matrix")
     is_tuple = isinstance(expr, (tuple, list))
     items = list(expr) if is_tuple else [expr]
     if not items:
@@ -251,9 +247,8 @@ def normalise_expr(expr: Any) -> tuple[list[tuple[Out, tuple[Expr, ...]]], bool]
     outs = []
     for i, e in enumerate(items):
         where = f"expr[{i}]" if is_tuple else "expr"
-        if isinstance(e, Screw):
-            outs.append((Out((6,)), tuple(e.as_matrix())))
-        elif isinstance(e, MatrixBase):
+        e = _outputs_of(e, where, (MatrixBase,), "a matrix")
+        if isinstance(e, MatrixBase):
             if len(e) == 0:
                 raise ValueError(f"{where}: expected a non-empty matrix, got {e!r}")
             trailing = (len(e),) if 1 in e.shape else tuple(e.shape)
@@ -264,6 +259,18 @@ def normalise_expr(expr: Any) -> tuple[list[tuple[Out, tuple[Expr, ...]]], bool]
         else:
             outs.append((Out(()), (_scalar(e, where),)))
     return outs, is_tuple
+
+
+def _outputs_of(e: Any, where: str, allowed: tuple[type, ...], expected: str) -> Any:
+    hook = getattr(type(e), "_lambdify_outputs", None)
+    if hook is None or isinstance(e, type):
+        return e
+    out = e._lambdify_outputs()
+    if not isinstance(out, allowed):
+        raise TypeError(
+            f"{where}: _lambdify_outputs() must return {expected}, got {type(out).__name__}"
+        )
+    return out
 
 
 def _scalar(e: Any, where: str) -> Expr:

@@ -1,4 +1,4 @@
-r"""Finite screw displacements: :func:`exp` of a twist and :func:`log` of a motion.
+r"""Finite screw displacements: :func:`exp6` of a twist and :func:`log6` of a motion.
 
 Explanation
 ===========
@@ -9,10 +9,10 @@ along it.  With the unit twist ``$ = (omega; r x omega + h omega)`` of that
 screw (1.52, 1.53), the motion is the matrix exponential of the twist's 4x4
 matrix ``[$] = [[[omega]x, v_O], [0, 0]]`` times ``theta``:
 
-    exp($, theta) = (R, (I - R) r + h theta omega),   R = Rodrigues(omega, theta),
+    exp6($, theta) = (R, (I - R) r + h theta omega),   R = Rodrigues(omega, theta),
 
 and a twist of infinite pitch ``(0; v)`` gives the translation by
-``theta v``.  :func:`log` inverts it: the axis, pitch and angle of a given
+``theta v``.  :func:`log6` inverts it: the axis, pitch and angle of a given
 motion, with the identity, the pure translations and the half-turns handled
 exactly.
 
@@ -29,22 +29,29 @@ from typing import Any
 
 from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, cos, pi, sin, sqrt, zeros
 
-from ._decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
-from ._validation import check_instance, check_scalar, check_screw
-from .tidy import tidy
+from ..core.checks import check_instance, check_scalar, check_screw
+from ..core.decide import (
+    float_tau,
+    is_zero,
+    is_zero_scaled,
+    is_zero_vector,
+    is_zero_vector_scaled,
+    norm,
+)
+from ..core.tidy import tidy
+from ..core.twist import Twist
 from .transform import Transform, skew
-from .twist import Twist
 
-__all__ = ["exp", "log", "se3_matrix"]
+__all__ = ["exp6", "log6", "se3_matrix"]
 
 
 def se3_matrix(twist: Any) -> ImmutableMatrix:
     r"""The 4x4 matrix ``[[[omega]x, v_O], [0, 0]]`` of a twist (an element of se(3)).
 
-    ``d/dt exp($, t) = [$] exp($, t)``.
+    ``d/dt exp6($, t) = [$] exp6($, t)``.
 
     >>> from screwsym import Twist
-    >>> from screwsym.displacement import se3_matrix
+    >>> from screwsym.motion.displacement import se3_matrix
     >>> se3_matrix(Twist([0, 0, 1], [1, 0, 0]))
     Matrix([
     [0, -1, 0, 1],
@@ -57,7 +64,7 @@ def se3_matrix(twist: Any) -> ImmutableMatrix:
     return ImmutableMatrix(top.col_join(zeros(1, 4)))
 
 
-def exp(twist: Any, theta: Any) -> Transform:
+def exp6(twist: Any, theta: Any) -> Transform:
     r"""The finite screw displacement ``exp([$] theta)`` of a twist: a :class:`Transform`.
 
     Explanation
@@ -82,14 +89,14 @@ def exp(twist: Any, theta: Any) -> Transform:
     ========
 
     >>> from sympy import pi, symbols
-    >>> from screwsym import Twist, exp
+    >>> from screwsym import Twist, exp6
     >>> t = symbols("theta", real=True)
     >>> hinge = Twist.rotation([0, 0, 1], point=[1, 0, 0])    # unit twist of a hinge on x = 1
-    >>> exp(hinge, pi/2)
+    >>> exp6(hinge, pi/2)
     Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[1, -1, 0])
-    >>> exp(Twist.screw_motion([0, 0, 1], point=[0, 0, 0], pitch=2), t)   # pitch 2: a helix
+    >>> exp6(Twist.screw_motion([0, 0, 1], point=[0, 0, 0], pitch=2), t)   # pitch 2: a helix
     Transform(R=[[cos(theta), -sin(theta), 0], [sin(theta), cos(theta), 0], [0, 0, 1]], p=[0, 0, 2*theta])
-    >>> exp(Twist.translation([1, 0, 0]), t).p.T
+    >>> exp6(Twist.translation([1, 0, 0]), t).p.T
     Matrix([[theta, 0, 0]])
 
     Parameters
@@ -101,7 +108,7 @@ def exp(twist: Any, theta: Any) -> Transform:
     See Also
     ========
 
-    log, se3_matrix, screwsym.transform.Transform
+    log, se3_matrix, screwsym.motion.transform.Transform
     """
     t = check_screw(twist, "twist", Twist)
     theta = check_scalar(theta, "theta")
@@ -149,13 +156,13 @@ def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
     return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s
 
 
-def log(T: Any) -> tuple[Twist, Expr]:
+def log6(T: Any) -> tuple[Twist, Expr]:
     r"""The screw of a rigid motion (Mozzi-Chasles): a unit twist and an angle.
 
     Explanation
     ===========
 
-    Returns ``(twist, theta)`` with ``exp(twist, theta) == T``:
+    Returns ``(twist, theta)`` with ``exp6(twist, theta) == T``:
 
     * a rotation by ``theta`` in ``(0, pi]`` (``cos theta = (tr R - 1)/2``):
       the unit twist ``(omega; r x omega + h omega)`` of the screw axis, ``|omega| = 1``.
@@ -180,16 +187,16 @@ def log(T: Any) -> tuple[Twist, Expr]:
     ========
 
     >>> from sympy import pi
-    >>> from screwsym import Transform, Twist, exp, log
+    >>> from screwsym import Transform, Twist, exp6, log6
     >>> T = Transform.rotation([0, 0, 1], pi/2, point=[1, 0, 0]) @ Transform.translation([0, 0, 3])
-    >>> log(T)                             # the axis x = 1, y = 0, pitch 3/(pi/2)
+    >>> log6(T)                             # the axis x = 1, y = 0, pitch 3/(pi/2)
     (Twist([0, 0, 1], [0, -1, 6/pi]), pi/2)
-    >>> twist, theta = log(T)
-    >>> exp(twist, theta).equals(T)
+    >>> twist, theta = log6(T)
+    >>> exp6(twist, theta).equals(T)
     True
-    >>> log(Transform.rotation([1, 0, 0], pi))
+    >>> log6(Transform.rotation([1, 0, 0], pi))
     (Twist([1, 0, 0], [0, 0, 0]), pi)
-    >>> log(Transform.translation([3, 4, 0]))
+    >>> log6(Transform.translation([3, 4, 0]))
     (Twist([0, 0, 0], [3/5, 4/5, 0]), 5)
 
     See Also

@@ -13,9 +13,9 @@ from typing import Any
 
 from sympy import Abs, Eq, Expr, Float, ImmutableMatrix, Rational, atan2, nan, sign, sqrt
 
-from ._basic import ScrewsymBasic
-from ._decide import float_tau, is_zero_scaled, is_zero_vector_scaled, norm
-from ._validation import check_choice, check_flag, check_line_parts, check_screw, check_vector
+from .basic import ScrewsymBasic
+from .checks import check_choice, check_flag, check_line_parts, check_screw, check_vector
+from .decide import float_tau, is_zero_scaled, is_zero_vector_scaled, norm
 from .screw import (
     Screw,
     ScrewLike,
@@ -49,9 +49,9 @@ class LineVector(Screw, line_of=Screw):
     decided are accepted, and floats follow the float policy.  ``(S; S0)``
     and ``(lambda S; lambda S0)``, ``lambda != 0``, are the same line
     (homogeneity).  Its pitch is 0 by this invariant.  It builds with the
-    constructors every kind has: :meth:`~screwsym.screw.Screw.from_axis`
-    (point, direction), :meth:`~screwsym.screw.Screw.through` (two points),
-    :meth:`~screwsym.screw.Screw.from_matrix`.
+    constructors every kind has: :meth:`~screwsym.core.screw.Screw.from_axis`
+    (point, direction), :meth:`~screwsym.core.screw.Screw.through` (two points),
+    :meth:`~screwsym.core.screw.Screw.from_matrix`.
 
     Examples
     ========
@@ -246,7 +246,7 @@ def _exact(v: ImmutableMatrix) -> ImmutableMatrix:
 
 def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = True,
                    conds: str = "none") -> CommonNormal:
-    tau = float_tau(*l1.as_matrix(), *l2.as_matrix())
+    tau = float_tau(*l1.matrix, *l2.matrix)
     if tau is None or l1.free_symbols or l2.free_symbols:
         return _finish(_common_normal_parts(l1.S, l1.S0, l2.S, l2.S0, None, names, conds), tidy)
     # Float lines: decide by the float policy, compute exactly from the numbers given, round
@@ -254,7 +254,7 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
     # The moments are made exactly perpendicular to the directions first: a float line's
     # S.S0 is zero only up to rounding, and that residue divided by a small |S1 x S2| would
     # move the distance of nearly parallel lines far more than the rounding moved the lines.
-    digits = min(f._prec for m in (l1.as_matrix(), l2.as_matrix()) for f in m.atoms(Float))
+    digits = min(f._prec for m in (l1.matrix, l2.matrix) for f in m.atoms(Float))
     S1, S2 = _exact(l1.S), _exact(l2.S)
     S01, S02 = _exact(l1.S0), _exact(l2.S0)
     S01 = S01 - S1.dot(S01) / S1.dot(S1) * S1

@@ -73,8 +73,8 @@ from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialEr
 from sympy.polys.rings import ring
 from sympy.simplify.fu import TR10i
 
-from ._basic import ScrewsymBasic
-from ._validation import check_count, check_tidy_input
+from .basic import ScrewsymBasic
+from .checks import check_count, check_tidy_input
 
 __all__ = ["tidy"]
 

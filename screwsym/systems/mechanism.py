@@ -30,7 +30,7 @@ of the platform's twist system, which the tests check.  The classical count
 ``6 (n - g - 1) + sum f_i`` is reported beside it; it fails for
 over-constrained mechanisms (the planar four-bar gives -2).
 
-All ranks are generic in the symbols (see :mod:`screwsym.system`);
+All ranks are generic in the symbols (see :mod:`screwsym.systems.screw_system`);
 :meth:`ParallelMechanism.mobility_cases` splits the analysis where the rank of
 the constraint system changes.  The analysis is of the free mechanism (no
 joint is actuated), so the singularities it finds are *constraint*
@@ -45,215 +45,34 @@ from typing import Any, NamedTuple
 
 from sympy import And, ImmutableMatrix, cancel, false, true
 
-from ._basic import ScrewsymBasic
-from ._validation import check_count, check_exact, check_nonzero_vector, check_scalar, check_vector
-from .system import MAX_CASES, ScrewSystem, _analysis
-from .twist import Twist
-from .wrench import Wrench
+from ..core.basic import ScrewsymBasic
+from ..core.checks import check_count
+from ..core.twist import Twist
+from ..core.wrench import Wrench
+from .joints import Joint, check_joints
+from .screw_system import MAX_CASES, ScrewSystem, _analysis
 
-__all__ = [
-    "Joint",
-    "R",
-    "P",
-    "H",
-    "C",
-    "U",
-    "S",
-    "Limb",
-    "ParallelMechanism",
-    "Mobility",
-    "motion_type",
-]
+__all__ = ["Limb", "ParallelMechanism", "Mobility", "motion_type"]
 
 _E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
-
-
-def _axis(value: Any, name: str) -> ImmutableMatrix:
-    return check_exact(
-        check_nonzero_vector(value, name, "a joint axis needs a non-zero direction"), name
-    )
-
-
-def _point(value: Any, name: str) -> ImmutableMatrix:
-    return check_exact(check_vector(value, name), name)
-
-
-def _rotation(point: ImmutableMatrix, direction: ImmutableMatrix) -> Twist:
-    """The unit-rate rotation about the line through ``point`` along ``direction`` (1.48)."""
-    return Twist.rotation(direction, point=point)
-
-
-class Joint(ScrewsymBasic):
-    """A kinematic pair: the screw system of the unit twists it allows.
-
-    Subclasses: :class:`R`, :class:`P`, :class:`H`, :class:`C`, :class:`U`,
-    :class:`S`.  ``freedom`` is the number of joint variables (f_i).
-    """
-
-    __slots__ = ()
-    freedom: int = 0
-
-    def twists(self) -> ScrewSystem:
-        """The joint's twists, one per freedom, as a :class:`~screwsym.system.ScrewSystem`."""
-        return ScrewSystem(*self._twists())
-
-    def _twists(self) -> list[Twist]:  # pragma: no cover - every subclass defines it
-        raise NotImplementedError
-
-
-class R(Joint):
-    """Revolute joint: rotation about the line through ``point`` along ``direction``.
-
-    >>> from screwsym.mechanism import R
-    >>> R([1, 0, 0], [0, 0, 1]).twists()
-    ScrewSystem(Twist([0, 0, 1], [0, -1, 0]))
-    """
-
-    __slots__ = ()
-    freedom = 1
-
-    def __new__(cls, point: Any, direction: Any):
-        return ScrewsymBasic.__new__(
-            cls, _point(point, "point"), _axis(direction, "direction")
-        )
-
-    def _twists(self):
-        return [_rotation(*self.args)]
-
-
-class P(Joint):
-    """Prismatic joint: translation along ``direction``, the twist ``(0; direction)``.
-
-    >>> from screwsym.mechanism import P
-    >>> P([0, 0, 1]).twists()
-    ScrewSystem(Twist([0, 0, 0], [0, 0, 1]))
-    """
-
-    __slots__ = ()
-    freedom = 1
-
-    def __new__(cls, direction: Any):
-        return ScrewsymBasic.__new__(cls, _axis(direction, "direction"))
-
-    def _twists(self):
-        return [Twist.translation(self.args[0])]
-
-
-class H(Joint):
-    """Helical joint: the screw motion of ``pitch`` about the line (point, direction) (1.52).
-
-    >>> from screwsym.mechanism import H
-    >>> H([0, 0, 0], [0, 0, 1], 2).twists()
-    ScrewSystem(Twist([0, 0, 1], [0, 0, 2]))
-    """
-
-    __slots__ = ()
-    freedom = 1
-
-    def __new__(cls, point: Any, direction: Any, pitch: Any):
-        return ScrewsymBasic.__new__(
-            cls,
-            _point(point, "point"),
-            _axis(direction, "direction"),
-            check_exact(check_scalar(pitch, "pitch"), "pitch"),
-        )
-
-    def _twists(self):
-        r, u, h = self.args
-        return [Twist.screw_motion(u, point=r, pitch=h)]
-
-
-class C(Joint):
-    """Cylindrical joint: rotation about and translation along one line (2 freedoms).
-
-    >>> from screwsym.mechanism import C
-    >>> C([1, 0, 0], [0, 0, 1]).twists()
-    ScrewSystem(Twist([0, 0, 1], [0, -1, 0]), Twist([0, 0, 0], [0, 0, 1]))
-    """
-
-    __slots__ = ()
-    freedom = 2
-
-    def __new__(cls, point: Any, direction: Any):
-        return ScrewsymBasic.__new__(
-            cls, _point(point, "point"), _axis(direction, "direction")
-        )
-
-    def _twists(self):
-        r, u = self.args
-        return [_rotation(r, u), Twist.translation(u)]
-
-
-class U(Joint):
-    """Universal (Hooke) joint: rotations about two axes through ``point`` (2 freedoms).
-
-    ``dir1`` is the axis fixed in the link nearer the base, ``dir2`` the other.
-
-    >>> from screwsym.mechanism import U
-    >>> U([0, 0, 1], [1, 0, 0], [0, 1, 0]).twists()
-    ScrewSystem(Twist([1, 0, 0], [0, 1, 0]), Twist([0, 1, 0], [-1, 0, 0]))
-    """
-
-    __slots__ = ()
-    freedom = 2
-
-    def __new__(cls, point: Any, dir1: Any, dir2: Any):
-        return ScrewsymBasic.__new__(
-            cls,
-            _point(point, "point"),
-            _axis(dir1, "dir1"),
-            _axis(dir2, "dir2"),
-        )
-
-    def _twists(self):
-        r, u1, u2 = self.args
-        return [_rotation(r, u1), _rotation(r, u2)]
-
-
-class S(Joint):
-    """Spherical joint: the three rotations about the axes x, y, z through ``point``.
-
-    >>> from screwsym.mechanism import S
-    >>> S([0, 0, 1]).twists().rank
-    3
-    """
-
-    __slots__ = ()
-    freedom = 3
-
-    def __new__(cls, point: Any):
-        return ScrewsymBasic.__new__(cls, _point(point, "point"))
-
-    def _twists(self):
-        return [_rotation(self.args[0], ImmutableMatrix(e)) for e in _E]
-
-
-def _check_joints(joints: tuple, name: str) -> tuple:
-    if not joints:
-        raise ValueError(f"{name}: expected at least one joint, got none")
-    for i, j in enumerate(joints):
-        if not isinstance(j, Joint):
-            raise TypeError(
-                f"{name}[{i}]: expected a joint (R, P, H, C, U or S), got {type(j).__name__}"
-            )
-    return joints
 
 
 class Limb(ScrewsymBasic):
     """A serial chain of joints from the base to the platform.
 
-    >>> from screwsym.mechanism import Limb, R, P, S
+    >>> from screwsym.systems.mechanism import Limb
+    >>> from screwsym.systems.joints import R, P, S
     >>> leg = Limb(R([1, 0, 0], [0, 1, 0]), P([0, 0, 1]), S([1, 0, 1]))   # R-P-S
-    >>> leg.freedom, leg.twists().rank
+    >>> leg.freedom, leg.twists.rank
     (5, 5)
-    >>> leg.constraints()          # one force through the sphere, along the R axis
+    >>> leg.constraints          # one force through the sphere, along the R axis
     ScrewSystem(Wrench([0, 1, 0], [-1, 0, 1]))
     """
 
     __slots__ = ()
 
     def __new__(cls, *joints: Joint):
-        return ScrewsymBasic.__new__(cls, *_check_joints(joints, "joints"))
+        return ScrewsymBasic.__new__(cls, *check_joints(joints, "joints"))
 
     @property
     def joints(self) -> tuple[Joint, ...]:
@@ -264,24 +83,26 @@ class Limb(ScrewsymBasic):
         """The number of joint variables, the sum of the joints' freedoms."""
         return sum(j.freedom for j in self.args)
 
+    @property
     def twists(self) -> ScrewSystem:
         """The limb's twist system: every joint's twists, base to platform."""
         return ScrewSystem(*(t for j in self.args for t in j._twists()))
 
+    @property
     def constraints(self) -> ScrewSystem:
         """The limb's constraint (wrench) system, the reciprocal of :meth:`twists`."""
-        return self.twists().reciprocal()
+        return self.twists.reciprocal()
 
     @property
     def passive(self) -> int:
         """Passive freedoms: ``freedom - rank`` of the twist system (generic)."""
-        return self.freedom - self.twists().rank
+        return self.freedom - self.twists.rank
 
 
 class Mobility(NamedTuple):
     """The result of :meth:`ParallelMechanism.mobility` (see the module docstring)."""
 
-    dof: int  #: M, by the modified Grübler–Kutzbach criterion
+    mobility: int  #: M, by the modified Grübler–Kutzbach criterion
     order: int  #: d = 6 - lambda
     common: int  #: lambda, common constraints
     redundant: int  #: nu, redundant constraints
@@ -318,7 +139,8 @@ class ParallelMechanism(ScrewsymBasic):
     the base circle, every leg in the plane normal to its R axis.
 
     >>> from sympy import sqrt, Rational
-    >>> from screwsym.mechanism import ParallelMechanism, Limb, R, P, S
+    >>> from screwsym.systems.mechanism import ParallelMechanism, Limb
+    >>> from screwsym.systems.joints import R, P, S
     >>> def leg(b, u, top):
     ...     d = [t - s for t, s in zip(top, b)]
     ...     return Limb(R(b, u), P(d), S(top))
@@ -327,7 +149,7 @@ class ParallelMechanism(ScrewsymBasic):
     ...     leg([-1, sqrt(3), 0], [-sqrt(3), -1, 0], [-Rational(1, 2), sqrt(3)/2, 2]),
     ...     leg([-1, -sqrt(3), 0], [sqrt(3), -1, 0], [-Rational(1, 2), -sqrt(3)/2, 2]),
     ... ).mobility()
-    >>> m.dof, m.motion, m.classical, (m.common, m.redundant, m.passive)
+    >>> m.mobility, m.motion, m.classical, (m.common, m.redundant, m.passive)
     (3, '2R1T', 3, (0, 0, 0))
     >>> m.rotation_directions.shape, m.translation_directions.shape
     ((3, 2), (3, 1))
@@ -357,13 +179,15 @@ class ParallelMechanism(ScrewsymBasic):
     def limbs(self) -> tuple[Limb, ...]:
         return self.args
 
-    def constraint_system(self) -> ScrewSystem:
+    @property
+    def constraints(self) -> ScrewSystem:
         """The union of the limbs' constraint systems: every wrench on the platform."""
-        return ScrewSystem(*(w for limb in self.args for w in limb.constraints()), kind=Wrench)
+        return ScrewSystem(*(w for limb in self.args for w in limb.constraints), kind=Wrench)
 
-    def twist_system(self) -> ScrewSystem:
-        """The platform's instantaneous motions: the reciprocal of :meth:`constraint_system`."""
-        return self.constraint_system().reciprocal()
+    @property
+    def twists(self) -> ScrewSystem:
+        """The platform's instantaneous motions: the reciprocal of :meth:`constraints`."""
+        return self.constraints.reciprocal()
 
     def mobility(self) -> Mobility:
         """The mobility by the modified Grübler–Kutzbach criterion, generic in the symbols.
@@ -395,12 +219,13 @@ class ParallelMechanism(ScrewsymBasic):
         ========
 
         >>> from sympy import symbols
-        >>> from screwsym.mechanism import Limb, ParallelMechanism, R
+        >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+        >>> from screwsym.systems.joints import R
         >>> b = symbols("b", real=True)
         >>> z = [0, 0, 1]
         >>> fourbar = ParallelMechanism(Limb(R([0, 0, 0], z), R([1, b, 0], z)),
         ...                             Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
-        >>> [(case, m.dof, m.motion) for case, m in fourbar.mobility_cases()]
+        >>> [(case, m.mobility, m.motion) for case, m in fourbar.mobility_cases()]
         [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1R1T')]
         """
         max_cases = check_count(max_cases, "max_cases")
@@ -409,13 +234,13 @@ class ParallelMechanism(ScrewsymBasic):
             grown = []
             for conds, subs in leaves:
                 limb = self.args[i].xreplace(subs) if subs else self.args[i]
-                grown.extend(_refine(conds, subs, limb.twists(), max_cases))
+                grown.extend(_refine(conds, subs, limb.twists, max_cases))
             leaves = grown
             _check_cases(len(leaves), max_cases)
         out = []
         for conds, subs in leaves:
             mech = self.xreplace(subs) if subs else self
-            for conds2, subs2 in _refine(conds, subs, mech.constraint_system(), max_cases):
+            for conds2, subs2 in _refine(conds, subs, mech.constraints, max_cases):
                 condition = And(*conds2) if conds2 else true
                 if condition is false:  # contradicts the limb's case: no point
                     continue
@@ -458,12 +283,12 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     freedoms = sum(limb.freedom for limb in limbs)
     g = sum(len(limb.args) for limb in limbs)
     n = 2 + sum(len(limb.args) - 1 for limb in limbs)
-    limb_twists = [limb.twists() for limb in limbs]
+    limb_twists = [limb.twists for limb in limbs]
     limb_ranks = [T.rank for T in limb_twists]
     all_twists = ScrewSystem(*(t for T in limb_twists for t in T), kind=Twist)
     common = 6 - all_twists.rank
     constraint_counts = [6 - r for r in limb_ranks]
-    W = mech.constraint_system()
+    W = mech.constraints
     union = W.rank
     redundant = sum(c - common for c in constraint_counts) - (union - common)
     passive = freedoms - sum(limb_ranks)
@@ -478,7 +303,7 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     pure = twists & ScrewSystem(*(Twist.translation(e) for e in _E)) if translations else None
     moves = pure.basis().matrix[3:, :] if pure is not None else ImmutableMatrix.zeros(3, 0)
     return Mobility(
-        dof=dof,
+        mobility=dof,
         order=order,
         common=common,
         redundant=redundant,

@@ -24,8 +24,8 @@ featherstone      ``(omega; v_O)``            ``(n_O; f)``, moment first    coor
 order differs.  A screwsym twist and the neighbours' motion vectors agree up
 to the order of the halves; a screwsym wrench ``(f; C_O)`` is *force first*,
 which modern_robotics, pytransform3d and Featherstone write moment first.  A
-general :class:`~screwsym.screw.Screw` or a
-:class:`~screwsym.line.LineVector` is converted as a motion (a screw axis).
+general :class:`~screwsym.core.screw.Screw` or a
+:class:`~screwsym.core.line.LineVector` is converted as a motion (a screw axis).
 Featherstone's 4x4 matrix (``pluho`` in his spatial_v2) is the coordinate
 transform from the base frame A to the moved frame B, the inverse of the
 pose ``T`` of B in A that the others use.
@@ -56,12 +56,12 @@ from typing import Any, NamedTuple
 
 from sympy import ImmutableMatrix
 
-from ._validation import check_choice, check_six
-from .line import LineVector
-from .screw import Screw
+from ..core.checks import check_choice, check_six
+from ..core.line import LineVector
+from ..core.screw import Screw
+from ..core.twist import Twist
+from ..core.wrench import Wrench
 from .transform import Transform
-from .twist import Twist
-from .wrench import Wrench
 
 __all__ = ["convert", "convert_from", "CONVENTIONS", "Convention"]
 
@@ -102,7 +102,7 @@ def convert(obj: Any, to: str) -> ImmutableMatrix:
     ``"spatialmath"``, ``"pinocchio"``, ``"featherstone"``; the layouts are
     in the module docstring's table.  A twist, line vector or screw is
     converted as a motion vector, a wrench as a force vector, a
-    :class:`~screwsym.transform.Transform` to the library's 4x4 matrix.
+    :class:`~screwsym.motion.transform.Transform` to the library's 4x4 matrix.
     Exact: entries are only reordered (and, for Featherstone's transform,
     inverted exactly).  :func:`convert_from` is the inverse.
 

@@ -6,14 +6,14 @@ Convention (used everywhere in screwsym): a screw is written in the book's
     $ = (S; S0)        line vector (S; S_0), twist (omega; v_O), wrench (f; C_O)
 
 ``S`` is the primary (direction) 3-vector and ``S0`` the dual (moment)
-3-vector about the origin O.  ``as_matrix()`` stacks them into the 6x1
+3-vector about the origin O.  ``matrix`` stacks them into the 6x1
 column ``[S; S0]`` in that order.
 
 A :class:`Screw` is a SymPy ``Basic`` whose ``args`` are ``(S, S0)``, each a
 3x1 ``ImmutableMatrix``; everything it is lives in ``args``, so ``subs``,
 ``xreplace``, ``free_symbols``, hashing, pickling and ``func(*args)`` work as
-for any SymPy object.  :class:`~screwsym.line.LineVector`,
-:class:`~screwsym.twist.Twist` and :class:`~screwsym.wrench.Wrench` are
+for any SymPy object.  :class:`~screwsym.core.line.LineVector`,
+:class:`~screwsym.core.twist.Twist` and :class:`~screwsym.core.wrench.Wrench` are
 subclasses; the meaning of a screw comes from its type.
 
 Each kind declares its own algebra in class attributes, which the base reads
@@ -35,9 +35,8 @@ from typing import Any
 import numpy as np
 from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 
-from ._basic import ScrewsymBasic
-from ._decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
-from ._validation import (
+from .basic import ScrewsymBasic
+from .checks import (
     check_choice,
     check_flag,
     check_nonzero_vector,
@@ -47,6 +46,7 @@ from ._validation import (
     check_six,
     check_vector,
 )
+from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
 from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
 __all__ = [
@@ -54,7 +54,7 @@ __all__ = [
     "pitch",
     "axis",
     "foot",
-    "decompose",
+    "decompose_screw",
     "classify",
     "shift_origin",
     "reciprocal_product",
@@ -102,7 +102,7 @@ class Screw(ScrewsymBasic):
     LineVector([1, 1, 0], [1/2, -1/2, 0])
     >>> s.foot.T
     Matrix([[0, 0, -1/2]])
-    >>> s.as_matrix().T
+    >>> s.matrix.T
     Matrix([[1, 1, 0, 1, 0, 0]])
     >>> Screw([1, 1, 0, 1, 0, 0])
     Traceback (most recent call last):
@@ -120,7 +120,7 @@ class Screw(ScrewsymBasic):
     See Also
     ========
 
-    screwsym.line.LineVector, screwsym.twist.Twist, screwsym.wrench.Wrench
+    screwsym.core.line.LineVector, screwsym.core.twist.Twist, screwsym.core.wrench.Wrench
     """
 
     __slots__ = ()
@@ -192,7 +192,16 @@ class Screw(ScrewsymBasic):
         """The dual (moment) part about the origin, a 3x1 ``ImmutableMatrix``."""
         return self.args[1]
 
-    def as_matrix(self) -> ImmutableMatrix:
+    def _lambdify_argument(self) -> tuple[ImmutableMatrix, str]:
+        # code generation's protocol (screwsym.codegen knows no screwsym class)
+        return self.matrix, f"a {type(self).__name__.lower()} (S; S0)"
+
+    def _lambdify_outputs(self) -> ImmutableMatrix:
+        # a screw result is returned as its 6 components, (..., 6)
+        return self.matrix
+
+    @property
+    def matrix(self) -> ImmutableMatrix:
         """The 6x1 column ``[S; S0]`` in the book's ray order."""
         return ImmutableMatrix.vstack(self.S, self.S0)
 
@@ -206,7 +215,7 @@ class Screw(ScrewsymBasic):
         >>> np.asarray(Screw([1, 1, 0], [1, 0, 0]), dtype=float)
         array([1., 1., 0., 1., 0., 0.])
         """
-        entries = list(self.as_matrix())
+        entries = list(self.matrix)
         free = self.free_symbols
         if free:
             if dtype is not None and np.dtype(dtype) != np.dtype(object):
@@ -318,7 +327,7 @@ class Screw(ScrewsymBasic):
         return _classify(self)
 
     def decompose(self, *, tidy: bool = True):
-        """Axis line vector plus parallel couple (1.37); see :func:`decompose`."""
+        """Axis line vector plus parallel couple (1.37); see :func:`decompose_screw`."""
         return _decompose(self, tidy=check_flag(tidy, "tidy"))
 
     def unit(self, *, tidy: bool = True):
@@ -353,7 +362,7 @@ class Screw(ScrewsymBasic):
         (False, True)
         """
         other = check_screw(other, "other", Screw)
-        return is_zero_vector(self.as_matrix() - other.as_matrix())
+        return is_zero_vector(self.matrix - other.matrix)
 
     # ------------------------------------------------------------ algebra
     def __add__(self, other):
@@ -573,7 +582,7 @@ def pitch(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> Expr:
     See Also
     ========
 
-    axis, classify, screwsym.tidy.tidy
+    axis, classify, screwsym.core.tidy.tidy
     """
     return _pitch(
         check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"),
@@ -649,7 +658,7 @@ def foot(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> ImmutableMa
 
 def _distance_to_origin(s: Screw, name: str | None = None, tidy: bool = True,
                         conds: str = "none") -> Expr:
-    if not tidy or float_tau(*s.as_matrix()) is not None:
+    if not tidy or float_tau(*s.matrix) is not None:
         d = norm(_foot(s, name, tidy=False))
     else:
         # The foot is S x S0' / S.S for the axis moment S0' = S0 - h S, and S . S0' = 0, so
@@ -747,17 +756,17 @@ def _decompose(s: Screw, name: str | None = None, tidy: bool = True):
     return line, general(zeros(3, 1), h * s.S)
 
 
-def decompose(s: ScrewLike, *, tidy: bool = True):
+def decompose_screw(s: ScrewLike, *, tidy: bool = True):
     r"""Split a screw into its axis line vector and a parallel couple (1.37).
 
     ``(S; S0) = (S; S0 - h S) + (0; h S)``.  Returns the pair
     ``(line, couple)``; for a twist these are a rotation and a translation
-    (both :class:`~screwsym.twist.Twist`), for a wrench a force and a couple
-    (both :class:`~screwsym.wrench.Wrench`).  With symbols it holds where
+    (both :class:`~screwsym.core.twist.Twist`), for a wrench a force and a couple
+    (both :class:`~screwsym.core.wrench.Wrench`).  With symbols it holds where
     ``S != 0``; the pitch is cancelled first (``tidy=False``: as built).
 
-    >>> from screwsym import Screw, decompose
-    >>> line, couple = decompose(Screw([1, 1, 0], [1, 0, 0]))
+    >>> from screwsym import Screw, decompose_screw
+    >>> line, couple = decompose_screw(Screw([1, 1, 0], [1, 0, 0]))
     >>> line, couple
     (LineVector([1, 1, 0], [1/2, -1/2, 0]), Screw([0, 0, 0], [1/2, 1/2, 0]))
     >>> line + couple
@@ -841,7 +850,7 @@ def reciprocal_product(s1: ScrewLike, s2: ScrewLike, *, tidy: bool = True) -> Ex
     r"""The reciprocal product ``$1 o $2 = S1 . S2^0 + S2 . S1^0`` (1.45).
 
     For two line vectors it is their mutual moment (1.23); for a twist and a
-    wrench it is the power (see :func:`screwsym.wrench.power`).  It does not
+    wrench it is the power (see :func:`screwsym.core.wrench.power`).  It does not
     depend on the origin (1.47).  It holds for every value of the symbols and
     comes in lowest terms (``tidy=False``: as built).
 

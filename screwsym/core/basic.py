@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from sympy import Basic
 
-from ._validation import check_no_strings
+from .checks import check_no_strings
 
 __all__ = ["ScrewsymBasic"]
 

@@ -36,9 +36,8 @@ from typing import Any
 
 from sympy import Expr, ImmutableMatrix, cos, sin, sqrt, trigsimp, zeros
 
-from ._basic import ScrewsymBasic
-from ._decide import is_zero_vector
-from ._validation import (
+from ..core.basic import ScrewsymBasic
+from ..core.checks import (
     check_instance,
     check_matrix,
     check_point_or_direction,
@@ -46,10 +45,11 @@ from ._validation import (
     check_scalar,
     check_vector,
 )
-from .screw import Screw
-from .tidy import tidy
+from ..core.decide import is_zero_vector
+from ..core.screw import Screw
+from ..core.tidy import tidy
 
-__all__ = ["Transform", "skew", "adjoint"]
+__all__ = ["Transform", "skew", "adjoint_matrix"]
 
 VectorLike = Any
 
@@ -57,7 +57,7 @@ VectorLike = Any
 def skew(v: VectorLike) -> ImmutableMatrix:
     r"""The 3x3 matrix ``[v]x`` with ``[v]x w = v x w``.
 
-    >>> from screwsym.transform import skew
+    >>> from screwsym.motion.transform import skew
     >>> skew([1, 2, 3])
     Matrix([
     [ 0, -3,  2],
@@ -82,7 +82,7 @@ class Transform(ScrewsymBasic):
     ``args == (R, p)``: ``R`` a 3x3 rotation, ``p`` a 3x1 translation, both
     ``ImmutableMatrix``.  A rotation part that is provably not orthonormal
     with determinant 1 is refused (see
-    :func:`screwsym._validation.check_rotation`: exact for numbers, exact for
+    :func:`screwsym.core.checks.check_rotation`: exact for numbers, exact for
     small symbolic entries, undecided large symbolic entries are accepted).
     Composition is ``T1 @ T2`` (first ``T2``, then ``T1``), as for the 4x4
     matrices.
@@ -122,7 +122,7 @@ class Transform(ScrewsymBasic):
     See Also
     ========
 
-    screwsym.displacement.exp, screwsym.displacement.log, screwsym.chain.Chain
+    screwsym.motion.displacement.exp6, screwsym.motion.displacement.log6, screwsym.motion.chain.Chain
     """
 
     __slots__ = ()
@@ -159,16 +159,16 @@ class Transform(ScrewsymBasic):
         return cls._new(ImmutableMatrix.eye(3), check_vector(d, "d"))
 
     @classmethod
-    def rotation(cls, axis: VectorLike, angle: Any, *, point: VectorLike = None) -> Transform:
-        r"""The rotation by ``angle`` about the line through ``point`` along ``axis``.
+    def rotation(cls, direction: VectorLike, angle: Any, *, point: VectorLike = None) -> Transform:
+        r"""The rotation by ``angle`` about the line through ``point`` along ``direction``.
 
         Rodrigues' formula ``R = I + sin(angle) K + (1 - cos(angle)) K^2`` with
-        ``K = [u]x`` for the unit axis ``u = axis/|axis|``, and ``p = (I - R) point``
-        so that the points of the line stay put.  Right-handed about ``axis``.
-        Exact for symbolic angles and axes; a non-unit axis brings its length
-        ``|axis|`` (a root) into the formula.  A zero axis is refused; a
-        symbolic axis that is not provably zero gives the formula, which holds
-        where ``axis != 0``.
+        ``K = [u]x`` for the unit axis ``u = direction/|direction|``, and ``p = (I - R) point``
+        so that the points of the line stay put.  Right-handed about ``direction``.
+        Exact for symbolic angles and axes; a non-unit direction brings its length
+        ``|direction|`` (a root) into the formula.  A zero direction is refused; a
+        symbolic direction that is not provably zero gives the formula, which holds
+        where ``direction != 0``.
 
         >>> from sympy import pi
         >>> Transform.rotation([1, 1, 0], pi).R         # a half-turn about x = y
@@ -177,12 +177,12 @@ class Transform(ScrewsymBasic):
         [1, 0,  0],
         [0, 0, -1]])
         """
-        axis = check_vector(axis, "axis")
+        direction = check_vector(direction, "direction")
         angle = check_scalar(angle, "angle")
-        if is_zero_vector(axis) is True:
-            raise ValueError(f"axis: expected a non-zero direction, got {list(axis)}")
-        n = sqrt(axis.dot(axis))
-        K = skew(axis / n)
+        if is_zero_vector(direction) is True:
+            raise ValueError(f"direction: expected a non-zero direction, got {list(direction)}")
+        n = sqrt(direction.dot(direction))
+        K = skew(direction / n)
         R = ImmutableMatrix.eye(3) + sin(angle) * K + (1 - cos(angle)) * (K * K)
         R = R.applyfunc(lambda e: e.expand() if e.is_number else e)
         if point is None:
@@ -195,7 +195,7 @@ class Transform(ScrewsymBasic):
         """The transform of the 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
 
         Errors name the argument ``name`` (as :meth:`Screw.from_matrix
-        <screwsym.screw.Screw.from_matrix>`'s do).
+        <screwsym.core.screw.Screw.from_matrix>`'s do).
 
         >>> Transform.from_matrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
         Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[5, 0, 0])
@@ -296,14 +296,14 @@ class Transform(ScrewsymBasic):
         [1,  0, 0, 0, 1, 0],
         [0,  0, 0, 0, 0, 1]])
         """
-        return adjoint(self)
+        return adjoint_matrix(self)
 
     def apply(self, obj: Any, *, direction: bool = False):
         r"""Carry ``obj`` by the motion: a point, a direction, or any screw.
 
         * a 3-vector is a point, ``R x + p`` (a 3x1 matrix back), or with
           ``direction=True`` a free vector, ``R x``;
-        * a :class:`~screwsym.screw.Screw` (a line vector, twist or wrench, or
+        * a :class:`~screwsym.core.screw.Screw` (a line vector, twist or wrench, or
           a general screw) comes back as the same kind, ``Ad(T) [S; S0]``:
           ``(R S; R S0 + p x R S)``;
         * a :class:`Transform` ``X`` is composed, ``T @ X``.
@@ -401,12 +401,12 @@ class Transform(ScrewsymBasic):
         return printer._print(self.matrix)
 
 
-def adjoint(T: Transform) -> ImmutableMatrix:
+def adjoint_matrix(T: Transform) -> ImmutableMatrix:
     r"""The 6x6 adjoint ``[[R, 0], [[p]x R, R]]`` of ``T`` in ray order; see :meth:`Transform.adjoint`.
 
-    >>> from screwsym.transform import adjoint
+    >>> from screwsym.motion.transform import adjoint_matrix
     >>> from screwsym import Transform
-    >>> adjoint(Transform.identity()) == ImmutableMatrix.eye(6)
+    >>> adjoint_matrix(Transform.identity()) == ImmutableMatrix.eye(6)
     True
     """
     check_instance(T, "T", Transform)

@@ -56,12 +56,12 @@ from sympy.logic.boolalg import Boolean
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyutils import parallel_dict_from_expr
 
-from ._basic import ScrewsymBasic
-from ._decide import is_zero
-from ._validation import check_count, check_screw, check_screw_system_members
-from .screw import Screw
-from .twist import Twist
-from .wrench import Wrench
+from ..core.basic import ScrewsymBasic
+from ..core.checks import check_count, check_screw, check_screw_system_members
+from ..core.decide import is_zero
+from ..core.screw import Screw
+from ..core.twist import Twist
+from ..core.wrench import Wrench
 
 __all__ = ["ScrewSystem"]
 
@@ -150,7 +150,7 @@ class ScrewSystem(ScrewsymBasic):
     See Also
     ========
 
-    screwsym.screw.reciprocal_product, screwsym.mechanism.Limb
+    screwsym.core.screw.reciprocal_product, screwsym.systems.mechanism.Limb
 
     References
     ==========
@@ -221,7 +221,7 @@ class ScrewSystem(ScrewsymBasic):
 
         >>> from screwsym import ScrewSystem, Twist, Wrench
         >>> ScrewSystem(kind=Twist).kind, ScrewSystem(kind=Twist).reciprocal().kind
-        (<class 'screwsym.twist.Twist'>, <class 'screwsym.wrench.Wrench'>)
+        (<class 'screwsym.core.twist.Twist'>, <class 'screwsym.core.wrench.Wrench'>)
         """
         marked = self._marked_kind
         if marked is not None:
@@ -236,7 +236,7 @@ class ScrewSystem(ScrewsymBasic):
         """The 6 x n matrix whose columns are the members ``(S; S0)``, in order."""
         if not self.screws:
             return ImmutableMatrix(zeros(6, 0))
-        return ImmutableMatrix.hstack(*(s.as_matrix() for s in self.screws))
+        return ImmutableMatrix.hstack(*(s.matrix for s in self.screws))
 
     def __len__(self) -> int:
         return len(self.screws)
@@ -277,8 +277,8 @@ class ScrewSystem(ScrewsymBasic):
         """
         s = check_screw(screw, "screw", self.kind)
         if not self.screws:
-            return _analysis(ImmutableMatrix(s.as_matrix())).rank == 0
-        return _analysis(self.matrix.row_join(s.as_matrix())).rank == self.rank
+            return _analysis(ImmutableMatrix(s.matrix)).rank == 0
+        return _analysis(self.matrix.row_join(s.matrix)).rank == self.rank
 
     def union(self, other: ScrewSystem) -> ScrewSystem:
         """The system spanned by the members of both (the sum of the spans).

@@ -7,7 +7,7 @@ Each function here is *generated* by :func:`screwsym.lambdify` from the
 symbolic operation of the core applied to generic symbols, for instance
 ``pitch(Screw(vector('S'), vector('S0')))``, when this module is imported.
 The numeric and the symbolic results therefore cannot drift apart: change
-the formula in :mod:`screwsym.screw` and the numbers follow.
+the formula in :mod:`screwsym.core.screw` and the numbers follow.
 
 Array convention: a screw is an array of shape ``(..., 6)`` in the book's
 order ``(S; S0)`` (a twist ``(omega; v_O)``, a wrench ``(f; C_O)``), a point
@@ -26,8 +26,8 @@ infinity, is ``nan`` (the symbolic one raises).
 The functions here use the compiled (numba) back end when numba is installed
 (``pip install 'screwsym[fast]'``) and NumPy otherwise; each is generated on
 first use, and numba's on-disk cache (see :func:`screwsym.codegen.cache_dir`)
-spares a new process the compilation.  :func:`functions` gives the same set
-for a chosen back end, e.g. ``functions("numpy")`` or ``functions("c")``.
+spares a new process the compilation.  :func:`functions_for` gives the same set
+for a chosen back end, e.g. ``functions_for("numpy")`` or ``functions_for("c")``.
 
 Examples
 ========
@@ -60,14 +60,13 @@ from pathlib import Path
 import sympy
 from sympy import Eq, Ne, Piecewise, nan
 
-from . import codegen as _codegen
-from . import screw as _core
-from .codegen import _build, lambdify
-from .line import LineVector
-from .screw import Screw
-from .twist import Twist
-from .vectors import vector
-from .wrench import Wrench
+from ..codegen import lambdify, load_index, resolve_backend, save_index
+from ..core import screw as _core
+from ..core.line import LineVector
+from ..core.screw import Screw
+from ..core.twist import Twist
+from ..core.vectors import vector
+from ..core.wrench import Wrench
 
 #: the names of the generated functions, in a fixed order
 NAMES: tuple[str, ...] = (
@@ -81,7 +80,7 @@ NAMES: tuple[str, ...] = (
 )
 
 # the generated functions are module attributes made on first use (__getattr__ below)
-__all__ = [*NAMES, "functions", "NAMES"]
+__all__ = [*NAMES, "functions_for", "NAMES"]
 
 _DOCS = {
     "pitch": r"""The pitch ``h = S . S0 / S . S`` (1.34) of screws ``(..., 6)``; returns ``(...)``.
@@ -231,19 +230,21 @@ def _source_digest() -> str:
     """A digest of screwsym's own source and SymPy's version: the tag of a numba index.
 
     A new process finds its compiled functions by this tag without building
-    the symbolic expressions again; any change to a formula changes it.
+    the symbolic expressions again; any change to a formula changes it.  Every
+    ``.py`` file of the package counts, in every subpackage, by its path
+    relative to the package (so moving a definition changes the tag too).
     """
     if not _DIGEST:
-        root = Path(__file__).resolve().parent
+        root = Path(__file__).resolve().parents[1]
         h = hashlib.sha256(sympy.__version__.encode())
-        for path in sorted([*root.glob("*.py"), *root.glob("codegen/*.py")]):
-            h.update(path.name.encode() + b"\0" + path.read_bytes())
+        for path in sorted(root.rglob("*.py")):
+            h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
         _DIGEST.append(h.hexdigest()[:24])
     return _DIGEST[0]
 
 
 def _function(name: str, backend: str | None = None) -> Callable:
-    backend = _codegen._check_backend(backend)
+    backend = resolve_backend(backend)
     key = (name, backend)
     fn = _BUILT.get(key)
     if fn is None:
@@ -251,30 +252,30 @@ def _function(name: str, backend: str | None = None) -> Callable:
             fn = _BUILT.get(key)
             if fn is None and backend == "numba":
                 tag = f"{name}-{_source_digest()}"
-                fn = _build.load_index(tag, _DOCS[name])
+                fn = load_index(tag, _DOCS[name])
             if fn is None:
                 args, expr, names = _definition(name)
                 fn = lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
                 if backend == "numba":
-                    _build.save_index(tag, fn)
+                    save_index(tag, fn)
             _BUILT[key] = fn
     return fn
 
 
-def functions(backend: str | None = None) -> types.SimpleNamespace:
+def functions_for(backend: str | None = None) -> types.SimpleNamespace:
     """The generated functions for ``backend``, as attributes named as in :data:`NAMES`.
 
     ``backend=None`` (default) is numba when installed, else NumPy, as for
     the module's own functions.  Built on first use and cached;
-    ``functions().pitch is pitch``.
+    ``functions_for().pitch is pitch``.
 
     Examples
     ========
 
     >>> from screwsym import numeric
-    >>> numeric.functions().pitch is numeric.pitch
+    >>> numeric.functions_for().pitch is numeric.pitch
     True
-    >>> sorted(vars(numeric.functions("numpy")))[:3]
+    >>> sorted(vars(numeric.functions_for("numpy")))[:3]
     ['foot', 'line_through', 'moment_about']
     """
     return types.SimpleNamespace(**{name: _function(name, backend) for name in NAMES})

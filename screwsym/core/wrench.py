@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from sympy import Expr, ImmutableMatrix
 
-from ._validation import check_flag, check_nonzero_vector, check_screw, check_vector
+from .checks import check_flag, check_nonzero_vector, check_screw, check_vector
 from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
 from .twist import Twist
 
@@ -20,8 +20,8 @@ class Wrench(Screw):
     r"""A wrench ``(f; C_O)``: resultant force, then the moment about the origin O.
 
     It builds with the constructors every kind has (``Wrench(f, C_O)``,
-    :meth:`~screwsym.screw.Screw.from_axis` with the force's size as
-    ``magnitude=`` (1.57, 1.58), :meth:`~screwsym.screw.Screw.couple`, ...)
+    :meth:`~screwsym.core.screw.Screw.from_axis` with the force's size as
+    ``magnitude=`` (1.57, 1.58), :meth:`~screwsym.core.screw.Screw.couple`, ...)
     and with the book's sugar :meth:`force`, whose point is a keyword.
 
     Examples

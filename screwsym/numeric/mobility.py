@@ -1,12 +1,12 @@
 r"""The mobility analysis at many configurations at once, in floating point.
 
-:func:`mobility_map` turns a :class:`~screwsym.mechanism.ParallelMechanism`
+:func:`mobility_map` turns a :class:`~screwsym.systems.mechanism.ParallelMechanism`
 whose joints depend on symbols into a vectorised function of arrays of those
 symbols' values: the joint twists of every limb are generated once with
 :func:`screwsym.lambdify`, and at each configuration the ranks come from a
 rank-revealing decomposition.  Use it to map where a mechanism meets a
 constraint singularity over a workspace grid; use the exact
-:meth:`~screwsym.mechanism.ParallelMechanism.mobility_cases` to find the
+:meth:`~screwsym.systems.mechanism.ParallelMechanism.mobility_cases` to find the
 conditions themselves.
 
 Rank, numerically
@@ -30,7 +30,7 @@ where it matters, check a configuration with ``numpy.linalg.svd``.
 The NumPy back end (the default here) runs each step of the decomposition as
 a few array operations over all configurations; ``backend="numba"`` compiles
 the same algorithm as one parallel loop (``pip install "screwsym[fast]"``,
-module ``screwsym._mobility_numba``), cached on disk by numba: the first call
+module ``screwsym.numeric._mobility_numba``), cached on disk by numba: the first call
 on a machine compiles for seconds, later processes load it in under one.
 The default stays NumPy (unlike :func:`screwsym.lambdify`'s) because under
 load the two were within 1.3-2.5x of each other on the 3-RPS map, not worth
@@ -44,9 +44,9 @@ from typing import Any, NamedTuple
 import numpy as np
 from sympy import ImmutableMatrix
 
-from ._validation import check_positive_float
-from .codegen import lambdify
-from .mechanism import ParallelMechanism
+from ..codegen import lambdify
+from ..core.checks import check_positive_float
+from ..systems.mechanism import ParallelMechanism
 
 __all__ = ["MobilityMap", "mobility_map"]
 
@@ -54,7 +54,7 @@ __all__ = ["MobilityMap", "mobility_map"]
 class MobilityMap(NamedTuple):
     """Arrays over the configurations (batch shape ``...``) from :func:`mobility_map`."""
 
-    dof: np.ndarray  #: ``(...)`` int: 6 - rank of the union of the limbs' constraints
+    mobility: np.ndarray  #: ``(...)`` int: 6 - rank of the union of the limbs' constraints
     constraint_rank: np.ndarray  #: ``(...)`` int: rank of that union
     limb_constraints: np.ndarray  #: ``(..., k)`` int: 6 - rank of each limb's twists
     sigma: np.ndarray  #: ``(..., 6)``: ``|R_jj|`` of the union's pivoted QR, largest first
@@ -82,14 +82,15 @@ def mobility_map(
 
     >>> import numpy as np
     >>> from sympy import symbols
-    >>> from screwsym.mechanism import ParallelMechanism, Limb, R
-    >>> from screwsym.mechanism_numeric import mobility_map
+    >>> from screwsym.systems.mechanism import ParallelMechanism, Limb
+    >>> from screwsym.systems.joints import R
+    >>> from screwsym.numeric.mobility import mobility_map
     >>> bx, by = symbols("b_x b_y", real=True)
     >>> z = [0, 0, 1]
     >>> fourbar = ParallelMechanism(Limb(R([0, 0, 0], z), R([bx, by, 0], z)),
     ...                             Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
     >>> f = mobility_map(fourbar, [bx, by])
-    >>> f(np.array([1.0, 1.0, 2.0]), np.array([1.0, 0.0, 0.5])).dof
+    >>> f(np.array([1.0, 1.0, 2.0]), np.array([1.0, 0.0, 0.5])).mobility
     array([1, 2, 1])
 
     Parameters
@@ -109,7 +110,7 @@ def mobility_map(
         )
     rtol = check_positive_float(rtol, "rtol")
     limbs = mechanism.limbs
-    matrices = tuple(ImmutableMatrix(limb.twists().matrix) for limb in limbs)
+    matrices = tuple(ImmutableMatrix(limb.twists.matrix) for limb in limbs)
     listed = args if isinstance(args, (list, tuple)) else [args]
     given = set()
     for a in listed:
@@ -125,7 +126,7 @@ def mobility_map(
     analyse = _analyse_numba if backend == "numba" else _analyse_numpy
 
     def mobility(*values):
-        """The mobility at each configuration (see screwsym.mechanism_numeric.mobility_map)."""
+        """The mobility at each configuration (see screwsym.numeric.mobility.mobility_map)."""
         Ts = twists_of(*values)
         if not isinstance(Ts, tuple):  # pragma: no cover - a one-limb mechanism
             Ts = (Ts,)
@@ -136,7 +137,7 @@ def mobility_map(
         ranks, counts, sigma = analyse(T, offsets, rtol)
         k = len(sizes)
         return MobilityMap(
-            dof=(6 - ranks).reshape(batch),
+            mobility=(6 - ranks).reshape(batch),
             constraint_rank=ranks.reshape(batch),
             limb_constraints=counts.reshape(batch + (k,)),
             sigma=sigma.reshape(batch + (6,)),
@@ -216,7 +217,7 @@ def _analyse_numpy(T: np.ndarray, offsets: tuple, rtol: float):
 
 
 def _analyse_numba(T: np.ndarray, offsets: tuple, rtol: float):
-    """:func:`_analyse_numpy` as one compiled parallel loop (``screwsym._mobility_numba``)."""
+    """:func:`_analyse_numpy` as one compiled parallel loop (``screwsym.numeric._mobility_numba``)."""
     from ._mobility_numba import analyse_loop
 
     N = T.shape[0]

@@ -1,4 +1,7 @@
-"""The package's import graph: no module of screwsym imports another in a circle.
+"""The package's import graph: the floors and the rules between them.
+
+No module of screwsym imports another in a circle; a floor imports only the
+floors the rules allow (``LAYERS``); no private name crosses a floor.
 
 Every ``import`` statement is read from the source, also those inside
 functions (a lazy import still makes a circle of dependencies), and resolved
@@ -91,12 +94,90 @@ def test_no_import_cycles():
     assert cycle is None, "import cycle: " + " -> ".join(cycle)
 
 
-def test_the_core_depends_one_way():
-    graph = import_graph()
-    # the base never names a kind of screw
-    assert not graph["screwsym.screw"] & {"screwsym.line", "screwsym.twist", "screwsym.wrench"}
-    assert not graph["screwsym._validation"] & {"screwsym.screw", "screwsym.line"}
-    assert "screwsym.screw" in graph["screwsym.line"]
+#: The floors (subpackages) and what each may import ("A -> B": A may import B).  ``top`` is
+#: the package's own modules (``__init__``, ``cli``, ``__main__``, ``_version``): the public face.
+LAYERS: dict[str, set[str]] = {
+    "core": set(),
+    "motion": {"core"},
+    "systems": {"core"},
+    "codegen": set(),
+    "numeric": {"codegen", "core", "systems"},
+    "plot": {"core", "numeric"},
+    "book": {"top"},
+    "top": {"core", "motion", "systems", "codegen", "numeric", "plot", "book"},
+}
+
+
+def floor(module: str) -> str:
+    parts = module.split(".")
+    if len(parts) > 1 and parts[1] in LAYERS:
+        return parts[1]
+    return "top"
+
+
+def import_statements() -> list[tuple[str, str, list[str]]]:
+    """``(module, target module, imported names)`` for every import of a screwsym module."""
+    modules = _modules()
+    out = []
+    for module, path in modules.items():
+        is_package = path.name == "__init__.py"
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            if isinstance(node, ast.ImportFrom):
+                base = _resolve(module, is_package, node)
+                if base == "screwsym" or base.startswith("screwsym."):
+                    out.append((module, base, [a.name for a in node.names]))
+            elif isinstance(node, ast.Import):
+                for a in node.names:
+                    if a.name == "screwsym" or a.name.startswith("screwsym."):
+                        out.append((module, a.name, []))
+    return out
+
+
+def layer_violations(statements) -> list[str]:
+    """Every import that breaks a rule: a floor not allowed, or a private name across floors."""
+    bad = []
+    for module, target, names in statements:
+        src, dst = floor(module), floor(target)
+        if src == dst:
+            continue
+        if dst not in LAYERS[src]:
+            bad.append(f"{module} imports {target}: {src} may not import {dst}")
+            continue
+        parts = target.split(".")[1:] + [n for n in names if n != "*"]
+        if any(p.startswith("_") and not p.startswith("__") for p in parts):
+            bad.append(f"{module} imports {target} {names}: a private name crosses a floor")
+    return bad
+
+
+def test_the_floors_keep_their_rules():
+    assert layer_violations(import_statements()) == []
+
+
+def test_the_rules_are_the_documented_ones():
+    # core imports nothing above it; codegen imports no screwsym object; motion and systems are
+    # siblings; book and the command line go through the public face only
+    assert LAYERS["core"] == set() and LAYERS["codegen"] == set()
+    assert "systems" not in LAYERS["motion"] and "motion" not in LAYERS["systems"]
+    assert LAYERS["book"] == {"top"}
+
+
+@pytest.mark.parametrize(
+    "statement, broken",
+    [
+        (("screwsym.core.screw", "screwsym.motion.transform", ["Transform"]), True),  # up a floor
+        (("screwsym.codegen._plan", "screwsym.core.screw", ["Screw"]), True),  # codegen -> object
+        (("screwsym.motion.chain", "screwsym.systems", ["ScrewSystem"]), True),  # sibling
+        (("screwsym.numeric.screws", "screwsym.codegen", ["_build"]), True),  # private name
+        (("screwsym.numeric.screws", "screwsym.codegen._build", ["x"]), True),  # private module
+        (("screwsym.cli", "screwsym.book._entry", ["as_text"]), True),  # private, from the top
+        (("screwsym.book._s12_lines", "screwsym.core", ["Screw"]), True),  # book past the face
+        (("screwsym.motion.chain", "screwsym.core.screw", ["foot"]), False),
+        (("screwsym.core.line", "screwsym.core.tidy", ["_finish"]), False),  # inside a floor
+        (("screwsym.book._common", "screwsym", []), False),
+    ],
+)
+def test_the_rule_checker_rejects_what_it_should(statement, broken):
+    assert bool(layer_violations([statement])) is broken
 
 
 @pytest.mark.parametrize(

@@ -52,11 +52,11 @@ import numpy as np
 from sympy import Basic, ImmutableMatrix
 from sympy.matrices import MatrixBase
 
-from ._validation import check_no_strings, check_screw, check_vector
-from .line import LineVector, common_normal
-from .screw import Screw
-from .twist import Twist
-from .wrench import Wrench
+from ..core.checks import check_no_strings, check_screw, check_vector
+from ..core.line import LineVector, common_normal
+from ..core.screw import Screw
+from ..core.twist import Twist
+from ..core.wrench import Wrench
 
 __all__ = [
     "plot",
@@ -762,10 +762,10 @@ def plot_frame(ax: Any = None, *, length: float = 1.0, origin: Any = (0, 0, 0)):
 def plot(obj: Any, ax: Any = None, **kw: Any):
     r"""Draw any screwsym object with its own glyph; a list or tuple draws each item.
 
-    Dispatch: :class:`~screwsym.twist.Twist` to :func:`plot_twist`,
-    :class:`~screwsym.wrench.Wrench` to :func:`plot_wrench`,
-    :class:`~screwsym.line.LineVector` to :func:`plot_line`, a couple to
-    :func:`plot_couple`, any other :class:`~screwsym.screw.Screw` to
+    Dispatch: :class:`~screwsym.core.twist.Twist` to :func:`plot_twist`,
+    :class:`~screwsym.core.wrench.Wrench` to :func:`plot_wrench`,
+    :class:`~screwsym.core.line.LineVector` to :func:`plot_line`, a couple to
+    :func:`plot_couple`, any other :class:`~screwsym.core.screw.Screw` to
     :func:`plot_screw`.  Keyword arguments go to that function.
 
     Examples

@@ -11,7 +11,7 @@ from typing import Any
 
 from sympy import ImmutableMatrix, zeros
 
-from ._validation import check_flag, check_nonzero_vector, check_vector
+from .checks import check_flag, check_nonzero_vector, check_vector
 from .screw import Screw, VectorLike, _shift_origin
 
 __all__ = ["Twist"]
@@ -21,8 +21,8 @@ class Twist(Screw):
     r"""A twist ``(omega; v_O)``: angular velocity, then the velocity of the point at O.
 
     It builds with the constructors every kind has (``Twist(omega, v_O)``,
-    :meth:`~screwsym.screw.Screw.from_axis` with the angular speed as
-    ``magnitude=``, :meth:`~screwsym.screw.Screw.from_matrix`, ...) and with
+    :meth:`~screwsym.core.screw.Screw.from_axis` with the angular speed as
+    ``magnitude=``, :meth:`~screwsym.core.screw.Screw.from_matrix`, ...) and with
     the book's sugar, whose first argument is the motion's vector and every
     later vector a keyword: :meth:`rotation`, :meth:`translation`,
     :meth:`screw_motion`.  A twist and a wrench never add.

@@ -1,4 +1,4 @@
-"""The compiled loop of :func:`screwsym.mechanism_numeric.mobility_map` (``backend="numba"``).
+"""The compiled loop of :func:`screwsym.numeric.mobility.mobility_map` (``backend="numba"``).
 
 Householder QR with column pivoting of each limb's (unit, halves-swapped)
 twists, the orthonormal null vectors past the rank as its constraints, and the

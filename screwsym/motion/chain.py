@@ -11,10 +11,10 @@ is ``(0; v)`` with a unit ``v``, a helical joint's has pitch ``h``
 ``(omega; r x omega + h omega)``.  With joint variables ``q`` (angles, or
 lengths for prismatic joints), Brockett's product of exponentials gives
 
-    T(q) = exp($_1, q_1) ... exp($_n, q_n) M,
+    T(q) = exp6($_1, q_1) ... exp6($_n, q_n) M,
 
 and the space Jacobian's column ``i`` is joint ``i``'s twist carried to the
-current configuration, ``Ad(exp($_1, q_1) ... exp($_{i-1}, q_{i-1})) $_i``:
+current configuration, ``Ad(exp6($_1, q_1) ... exp6($_{i-1}, q_{i-1})) $_i``:
 the twist of the current joint axis in ray order ``(omega; v_O)``, so that the
 end body's twist is ``J_s(q) dq/dt``.  The body Jacobian has the same
 columns expressed in the end frame, ``J_b = Ad(T(q)^-1) J_s``.
@@ -43,20 +43,20 @@ from typing import Any
 
 from sympy import Expr, ImmutableMatrix, Rational, Tuple, zeros
 
-from ._basic import ScrewsymBasic
-from ._decide import is_zero_vector
-from ._validation import (
+from ..core.basic import ScrewsymBasic
+from ..core.checks import (
     check_choice,
     check_instance,
     check_scalar,
     check_screw,
     check_sequence,
 )
-from .displacement import exp
-from .screw import foot, pitch
-from .tidy import tidy
+from ..core.decide import is_zero_vector
+from ..core.screw import foot, pitch
+from ..core.tidy import tidy
+from ..core.twist import Twist
+from .displacement import exp6
 from .transform import Transform
-from .twist import Twist
 
 __all__ = ["Chain", "ur5"]
 
@@ -64,7 +64,7 @@ __all__ = ["Chain", "ur5"]
 def _carried_column(T: Transform, twist: Twist) -> ImmutableMatrix:
     """``Ad(T) $`` built from the carried axis: ``(R w; (R r + p) x R w + h R w)``, tidied.
 
-    Equal to ``T.adjoint() * $.as_matrix()``; a revolute or helical twist is
+    Equal to ``T.adjoint() * $.matrix``; a revolute or helical twist is
     carried through a point of its axis and its pitch (which the motion keeps),
     a prismatic one ``(0; v)`` as the direction ``R v``.
     """
@@ -82,9 +82,9 @@ class Chain(ScrewsymBasic):
     Explanation
     ===========
 
-    ``args == (twists, home)``: a SymPy ``Tuple`` of :class:`~screwsym.twist.Twist`
+    ``args == (twists, home)``: a SymPy ``Tuple`` of :class:`~screwsym.core.twist.Twist`
     (revolute, prismatic or helical joints, base to tip) and the home
-    :class:`~screwsym.transform.Transform` ``M`` of the end frame.  See the
+    :class:`~screwsym.motion.transform.Transform` ``M`` of the end frame.  See the
     module docstring for the formulas.  The joint twists need not be unit
     twists; a unit twist makes ``q`` an angle (revolute, helical) or a length
     (prismatic).
@@ -127,7 +127,7 @@ class Chain(ScrewsymBasic):
     See Also
     ========
 
-    screwsym.displacement.exp, screwsym.transform.Transform.adjoint
+    screwsym.motion.displacement.exp6, screwsym.motion.transform.Transform.adjoint
     """
 
     __slots__ = ()
@@ -138,7 +138,7 @@ class Chain(ScrewsymBasic):
             raise ValueError("twists: expected at least one joint twist, got none")
         joints = Tuple(*(check_screw(t, f"twists[{i}]", Twist) for i, t in enumerate(twists)))
         for i, t in enumerate(joints):
-            if is_zero_vector(t.as_matrix()) is True:
+            if is_zero_vector(t.matrix) is True:
                 raise ValueError(f"twists[{i}]: a joint twist cannot be zero, got {t}")
         home = Transform.identity() if home is None else check_instance(home, "home", Transform)
         return ScrewsymBasic.__new__(cls, joints, home)
@@ -154,7 +154,7 @@ class Chain(ScrewsymBasic):
         return self.args[1]
 
     @property
-    def dof(self) -> int:
+    def n_joints(self) -> int:
         """The number of joints."""
         return len(self.args[0])
 
@@ -169,11 +169,11 @@ class Chain(ScrewsymBasic):
         return tuple(Minv.apply(t) for t in self.twists)
 
     def _check_q(self, q: Any) -> tuple[Expr, ...]:
-        values = check_sequence(q, "q", "joint values", self.dof)
+        values = check_sequence(q, "q", "joint values", self.n_joints)
         return tuple(check_scalar(v, f"q[{i}]") for i, v in enumerate(values))
 
     def forward(self, q: Any) -> Transform:
-        r"""The forward kinematics ``T(q) = exp($_1, q_1) ... exp($_n, q_n) M``, tidied.
+        r"""The forward kinematics ``T(q) = exp6($_1, q_1) ... exp6($_n, q_n) M``, tidied.
 
         >>> from sympy import pi
         >>> from screwsym import Chain, Transform, Twist
@@ -184,7 +184,7 @@ class Chain(ScrewsymBasic):
         q = self._check_q(q)
         T = Transform.identity()
         for twist, qi in zip(self.twists, q, strict=True):
-            T = tidy(T @ exp(twist, qi))
+            T = tidy(T @ exp6(twist, qi))
         return tidy(T @ self.home)
 
     def jacobian(self, q: Any, frame: str = "space") -> ImmutableMatrix:
@@ -214,12 +214,12 @@ class Chain(ScrewsymBasic):
         if frame == "space":
             for twist, qi in zip(self.twists, q, strict=True):
                 columns.append(_carried_column(T, twist))
-                T = tidy(T @ exp(twist, qi))
+                T = tidy(T @ exp6(twist, qi))
         else:
             # J_b column i = Ad(exp(-B_n q_n) ... exp(-B_{i+1} q_{i+1})) B_i
             for twist, qi in zip(reversed(self.body_twists()), reversed(q), strict=True):
                 columns.append(_carried_column(T, twist))
-                T = tidy(T @ exp(twist, -qi))
+                T = tidy(T @ exp6(twist, -qi))
             columns.reverse()
         return ImmutableMatrix.hstack(*columns)
 
@@ -236,9 +236,9 @@ def ur5() -> Chain:
     metres as exact rationals (W1 = 109/1000, W2 = 82/1000, L1 = 425/1000,
     L2 = 392/1000, H1 = 89/1000, H2 = 95/1000).
 
-    >>> from screwsym.chain import ur5
+    >>> from screwsym.motion.chain import ur5
     >>> arm = ur5()
-    >>> arm.dof, arm.home.matrix[:3, 3].T
+    >>> arm.n_joints, arm.home.matrix[:3, 3].T
     (6, Matrix([[817/1000, 191/1000, -3/500]]))
     >>> arm.twists[1]
     Twist([0, 1, 0], [-89/1000, 0, 0])

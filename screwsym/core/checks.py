@@ -19,7 +19,7 @@ from sympy import Basic, Expr, Float, ImmutableMatrix, S
 from sympy.core.sympify import SympifyError, sympify
 from sympy.matrices import MatrixBase
 
-from ._decide import is_real_where_defined, is_zero, is_zero_scaled, is_zero_vector, norm
+from .decide import is_real_where_defined, is_zero, is_zero_scaled, is_zero_vector, norm
 
 __all__ = [
     "check_no_strings",
@@ -269,7 +269,7 @@ def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple
 
     A line vector has ``S != 0`` and ``S . S0 = 0`` (1.10).  Only a provable
     violation raises: undecidable symbolic cases are accepted, and floats are
-    judged by the float policy of :func:`screwsym._decide.is_zero_scaled`.
+    judged by the float policy of :func:`screwsym.core.decide.is_zero_scaled`.
     ``label`` starts the message: the argument's name, or the names of the
     two parts (a tuple) when the parts were given.
     """
@@ -282,8 +282,8 @@ def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple
 
 
 # --------------------------------------------------------------------------
-# Rigid motions (screwsym.transform, screwsym.displacement, screwsym.chain,
-# screwsym.conventions)
+# Rigid motions (screwsym.motion.transform, screwsym.motion.displacement, screwsym.motion.chain,
+# screwsym.motion.conventions)
 # --------------------------------------------------------------------------
 
 #: symbolic entries larger than this (``count_ops``) are not put through the
@@ -339,7 +339,7 @@ def check_matrix(value: Any, name: str, shape: tuple[int, int]) -> ImmutableMatr
 def _decide_small(expr: Expr) -> bool | None:
     """Zero-decision for an entry of ``R^T R - I`` (of size 1 for a rotation).
 
-    Numbers follow the float policy (:func:`screwsym._decide.is_zero_scaled`
+    Numbers follow the float policy (:func:`screwsym.core.decide.is_zero_scaled`
     with scale 1: exact for exact numbers); symbolic entries up to
     ``ROTATION_CHECK_OPS`` operations are decided exactly, larger ones not at all.
     """
@@ -355,9 +355,9 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
 
     A rotation satisfies ``R^T R = I`` and ``det R = 1``.  Only a provable
     violation raises: entries that are numbers are decided exactly (floats by
-    the float policy of :func:`screwsym._decide.is_zero_scaled`), symbolic
+    the float policy of :func:`screwsym.core.decide.is_zero_scaled`), symbolic
     entries with the exact decision of
-    :func:`screwsym._decide.is_zero` when they are no larger than
+    :func:`screwsym.core.decide.is_zero` when they are no larger than
     ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
 
     >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
@@ -466,8 +466,8 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
 
 
 # --------------------------------------------------------------------------
-# Screw systems and mechanisms (screwsym.system, screwsym.mechanism,
-# screwsym.mechanism_numeric)
+# Screw systems and mechanisms (screwsym.systems.screw_system, screwsym.systems.mechanism,
+# screwsym.numeric.mobility)
 # --------------------------------------------------------------------------
 
 
@@ -521,14 +521,14 @@ def check_exact(value: Any, name: str) -> Any:
     >>> check_exact(ImmutableMatrix([0.5, 0, 0]), "point")
     Traceback (most recent call last):
     ...
-    ValueError: point: expected exact entries (integers, rationals, algebraic numbers, symbols), got the float 0.500000000000000; screw systems decide ranks exactly (use Rational, or screwsym.mechanism_numeric for floating point)
+    ValueError: point: expected exact entries (integers, rationals, algebraic numbers, symbols), got the float 0.500000000000000; screw systems decide ranks exactly (use Rational, or screwsym.numeric.mobility for floating point)
     """
     floats = value.atoms(Float)
     if floats:
         raise ValueError(
             f"{name}: expected exact entries (integers, rationals, algebraic numbers, "
             f"symbols), got the float {min(floats)}; screw systems decide ranks exactly "
-            "(use Rational, or screwsym.mechanism_numeric for floating point)"
+            "(use Rational, or screwsym.numeric.mobility for floating point)"
         )
     return value
 
@@ -564,7 +564,7 @@ def check_positive_float(value: Any, name: str) -> float:
 
 
 def check_tidy_input(value: Any, name: str) -> None:
-    """Raise ``TypeError`` unless ``value`` is something :func:`screwsym.tidy` works on.
+    """Raise ``TypeError`` unless ``value`` is something :func:`screwsym.core.tidy` works on.
 
     That is a SymPy object or matrix, a number, or a tuple or list of these
     (nested); strings are refused anywhere in it.

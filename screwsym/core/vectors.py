@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from sympy import ImmutableMatrix, symbols
 
-from ._validation import check_name
+from .checks import check_name
 
 __all__ = ["vector"]
 

@@ -1,0 +1,25 @@
+r"""Rigid motions, SE(3): transforms, exp6/log6 of twists, serial chains, conventions.
+
+Built on :mod:`screwsym.core` alone (Lynch & Park, *Modern Robotics*; Murray,
+Li & Sastry).  A sibling of :mod:`screwsym.systems`: neither imports the other.
+"""
+
+from .chain import Chain, ur5
+from .conventions import CONVENTIONS, Convention, convert, convert_from
+from .displacement import exp6, log6, se3_matrix
+from .transform import Transform, adjoint_matrix, skew
+
+__all__ = [
+    "Transform",
+    "skew",
+    "adjoint_matrix",
+    "exp6",
+    "log6",
+    "se3_matrix",
+    "Chain",
+    "ur5",
+    "convert",
+    "convert_from",
+    "CONVENTIONS",
+    "Convention",
+]

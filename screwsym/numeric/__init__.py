@@ -1,0 +1,28 @@
+r"""Floats: the chapter's operations generated as vectorised functions, and numeric kernels.
+
+- :mod:`~screwsym.numeric.screws`: ``pitch``, ``foot``, ``reciprocal_product``, ...
+  generated from the symbolic core (``numeric.pitch(array)``);
+- :mod:`~screwsym.numeric.mobility`: :func:`mobility_map`, the mobility of a
+  parallel mechanism at many configurations at once.
+
+Built on :mod:`screwsym.codegen`, :mod:`screwsym.core` and :mod:`screwsym.systems`.
+"""
+
+from collections.abc import Callable
+
+from . import screws
+from .mobility import MobilityMap, mobility_map
+from .screws import NAMES, functions_for
+
+__all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map"]
+
+
+def __getattr__(name: str) -> Callable:
+    # the generated functions are made on first use, by screws' own __getattr__ (PEP 562)
+    if name in NAMES:
+        return getattr(screws, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(NAMES))

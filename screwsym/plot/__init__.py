@@ -1,0 +1,32 @@
+r"""Pictures of lines, screws, twists and wrenches in matplotlib 3D axes.
+
+Needs matplotlib (``pip install "screwsym[plot]"``); see :mod:`screwsym.plot.figures`.
+``screwsym.plot`` is loaded on first use and is not part of ``from screwsym import *``
+(it would shadow SymPy's ``plot``).
+"""
+
+from .figures import (
+    find_artists,
+    helix_advance,
+    plot,
+    plot_common_normal,
+    plot_couple,
+    plot_frame,
+    plot_line,
+    plot_screw,
+    plot_twist,
+    plot_wrench,
+)
+
+__all__ = [
+    "plot",
+    "plot_line",
+    "plot_screw",
+    "plot_couple",
+    "plot_twist",
+    "plot_wrench",
+    "plot_common_normal",
+    "plot_frame",
+    "find_artists",
+    "helix_advance",
+]

@@ -1,0 +1,24 @@
+r"""Screw systems, kinematic pairs and the mobility of parallel mechanisms.
+
+Built on :mod:`screwsym.core` alone (Huang, Li & Ding, Chapters 2 and 5).  A
+sibling of :mod:`screwsym.motion`: neither imports the other.
+"""
+
+from .joints import Cylindrical, Helical, Joint, Prismatic, Revolute, Spherical, Universal
+from .mechanism import Limb, Mobility, ParallelMechanism, motion_type
+from .screw_system import ScrewSystem
+
+__all__ = [
+    "ScrewSystem",
+    "Joint",
+    "Revolute",
+    "Prismatic",
+    "Helical",
+    "Cylindrical",
+    "Universal",
+    "Spherical",
+    "Limb",
+    "ParallelMechanism",
+    "Mobility",
+    "motion_type",
+]

@@ -1,0 +1,206 @@
+r"""Kinematic pairs: each joint is the screw system of the unit twists it allows.
+
+The book's lower pairs and the two compound ones used in its examples:
+:class:`Revolute` (R), :class:`Prismatic` (P), :class:`Helical` (H),
+:class:`Cylindrical` (C), :class:`Universal` (U) and :class:`Spherical` (S).
+The one-letter names are aliases in this module (``from screwsym.systems.joints
+import R, P, S``); they are not exported by ``screwsym``, where ``S`` would
+shadow SymPy's ``S``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from sympy import ImmutableMatrix
+
+from ..core.basic import ScrewsymBasic
+from ..core.checks import check_exact, check_nonzero_vector, check_scalar, check_vector
+from ..core.twist import Twist
+from .screw_system import ScrewSystem
+
+__all__ = ["Joint", "Revolute", "Prismatic", "Helical", "Cylindrical", "Universal", "Spherical"]
+
+_E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
+
+
+def _axis(value: Any, name: str) -> ImmutableMatrix:
+    return check_exact(
+        check_nonzero_vector(value, name, "a joint axis needs a non-zero direction"), name
+    )
+
+
+def _point(value: Any, name: str) -> ImmutableMatrix:
+    return check_exact(check_vector(value, name), name)
+
+
+def _rotation(point: ImmutableMatrix, direction: ImmutableMatrix) -> Twist:
+    """The unit-rate rotation about the line through ``point`` along ``direction`` (1.48)."""
+    return Twist.rotation(direction, point=point)
+
+
+class Joint(ScrewsymBasic):
+    """A kinematic pair: the screw system of the unit twists it allows.
+
+    Subclasses: :class:`Revolute`, :class:`Prismatic`, :class:`Helical`, :class:`Cylindrical`, :class:`Universal`,
+    :class:`Spherical`.  ``freedom`` is the number of joint variables (f_i).
+    """
+
+    __slots__ = ()
+    freedom: int = 0
+
+    @property
+    def twists(self) -> ScrewSystem:
+        """The joint's twists, one per freedom, as a :class:`~screwsym.systems.screw_system.ScrewSystem`."""
+        return ScrewSystem(*self._twists())
+
+    def _twists(self) -> list[Twist]:  # pragma: no cover - every subclass defines it
+        raise NotImplementedError
+
+
+class Revolute(Joint):
+    """Revolute joint: rotation about the line through ``point`` along ``direction``.
+
+    >>> from screwsym.systems.joints import Revolute
+    >>> Revolute([1, 0, 0], [0, 0, 1]).twists
+    ScrewSystem(Twist([0, 0, 1], [0, -1, 0]))
+    """
+
+    __slots__ = ()
+    freedom = 1
+
+    def __new__(cls, point: Any, direction: Any):
+        return ScrewsymBasic.__new__(
+            cls, _point(point, "point"), _axis(direction, "direction")
+        )
+
+    def _twists(self):
+        return [_rotation(*self.args)]
+
+
+class Prismatic(Joint):
+    """Prismatic joint: translation along ``direction``, the twist ``(0; direction)``.
+
+    >>> from screwsym.systems.joints import Prismatic
+    >>> Prismatic([0, 0, 1]).twists
+    ScrewSystem(Twist([0, 0, 0], [0, 0, 1]))
+    """
+
+    __slots__ = ()
+    freedom = 1
+
+    def __new__(cls, direction: Any):
+        return ScrewsymBasic.__new__(cls, _axis(direction, "direction"))
+
+    def _twists(self):
+        return [Twist.translation(self.args[0])]
+
+
+class Helical(Joint):
+    """Helical joint: the screw motion of ``pitch`` about the line (point, direction) (1.52).
+
+    >>> from screwsym.systems.joints import Helical
+    >>> Helical([0, 0, 0], [0, 0, 1], 2).twists
+    ScrewSystem(Twist([0, 0, 1], [0, 0, 2]))
+    """
+
+    __slots__ = ()
+    freedom = 1
+
+    def __new__(cls, point: Any, direction: Any, pitch: Any):
+        return ScrewsymBasic.__new__(
+            cls,
+            _point(point, "point"),
+            _axis(direction, "direction"),
+            check_exact(check_scalar(pitch, "pitch"), "pitch"),
+        )
+
+    def _twists(self):
+        r, u, h = self.args
+        return [Twist.screw_motion(u, point=r, pitch=h)]
+
+
+class Cylindrical(Joint):
+    """Cylindrical joint: rotation about and translation along one line (2 freedoms).
+
+    >>> from screwsym.systems.joints import Cylindrical
+    >>> Cylindrical([1, 0, 0], [0, 0, 1]).twists
+    ScrewSystem(Twist([0, 0, 1], [0, -1, 0]), Twist([0, 0, 0], [0, 0, 1]))
+    """
+
+    __slots__ = ()
+    freedom = 2
+
+    def __new__(cls, point: Any, direction: Any):
+        return ScrewsymBasic.__new__(
+            cls, _point(point, "point"), _axis(direction, "direction")
+        )
+
+    def _twists(self):
+        r, u = self.args
+        return [_rotation(r, u), Twist.translation(u)]
+
+
+class Universal(Joint):
+    """Universal (Hooke) joint: rotations about two axes through ``point`` (2 freedoms).
+
+    ``dir1`` is the axis fixed in the link nearer the base, ``dir2`` the other.
+
+    >>> from screwsym.systems.joints import Universal
+    >>> Universal([0, 0, 1], [1, 0, 0], [0, 1, 0]).twists
+    ScrewSystem(Twist([1, 0, 0], [0, 1, 0]), Twist([0, 1, 0], [-1, 0, 0]))
+    """
+
+    __slots__ = ()
+    freedom = 2
+
+    def __new__(cls, point: Any, dir1: Any, dir2: Any):
+        return ScrewsymBasic.__new__(
+            cls,
+            _point(point, "point"),
+            _axis(dir1, "dir1"),
+            _axis(dir2, "dir2"),
+        )
+
+    def _twists(self):
+        r, u1, u2 = self.args
+        return [_rotation(r, u1), _rotation(r, u2)]
+
+
+class Spherical(Joint):
+    """Spherical joint: the three rotations about the axes x, y, z through ``point``.
+
+    >>> from screwsym.systems.joints import Spherical
+    >>> Spherical([0, 0, 1]).twists.rank
+    3
+    """
+
+    __slots__ = ()
+    freedom = 3
+
+    def __new__(cls, point: Any):
+        return ScrewsymBasic.__new__(cls, _point(point, "point"))
+
+    def _twists(self):
+        return [_rotation(self.args[0], ImmutableMatrix(e)) for e in _E]
+
+
+def check_joints(joints: tuple, name: str) -> tuple:
+    if not joints:
+        raise ValueError(f"{name}: expected at least one joint, got none")
+    for i, j in enumerate(joints):
+        if not isinstance(j, Joint):
+            raise TypeError(
+                f"{name}[{i}]: expected a joint (Revolute, Prismatic, Helical, Cylindrical, Universal or Spherical), got {type(j).__name__}"
+            )
+    return joints
+
+
+# The book's one-letter names (R, P, H, C, U, S), kept here and not exported: ``S`` would
+# shadow SymPy's ``S`` under ``from sympy import *; from screwsym import *``.
+R = Revolute
+P = Prismatic
+H = Helical
+C = Cylindrical
+U = Universal
+S = Spherical
