@@ -192,7 +192,7 @@ def test_a_new_process_loads_the_compiled_functions_without_rebuilding_them(tmp_
         print(numeric.pitch(np.array([1.0, 1, 0, 1, 0, 0])), numeric.foot(np.ones((2, 6)))[1, 1])
     """)
     env = dict(os.environ, SCREWSYM_CACHE_DIR=str(tmp_path))
-    root = Path(__file__).resolve().parents[1]
+    root = Path(__file__).resolve().parents[2]
 
     def run(mode):
         return subprocess.run([sys.executable, "-c", script, mode], env=env, cwd=root,

@@ -340,7 +340,7 @@ def test_numba_disk_cache_serves_a_new_process(tmp_path):
               sum(k().stats.cache_misses.values()))
     """)
     env = dict(os.environ, SCREWSYM_CACHE_DIR=str(tmp_path))
-    root = Path(__file__).resolve().parents[1]
+    root = Path(__file__).resolve().parents[2]
     runs = [subprocess.run([sys.executable, "-c", script], env=env, cwd=root, check=True,
                            capture_output=True, text=True).stdout.split("]") for _ in range(2)]
     assert runs[0][0] == runs[1][0] == "[-0.5, 0.6666666666666667, 7.75, 26.8"

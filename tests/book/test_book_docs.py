@@ -9,7 +9,7 @@ import pytest
 
 from screwsym.book import entries
 
-NOTEBOOKS = Path(__file__).resolve().parent.parent / "notebooks"
+NOTEBOOKS = Path(__file__).resolve().parents[2] / "notebooks"
 
 
 def test_every_notebook_is_on_the_site():
