@@ -3,7 +3,7 @@
 Householder QR with column pivoting of each limb's (unit, halves-swapped)
 twists, the orthonormal null vectors past the rank as its constraints, and the
 pivoted QR of their union, one configuration per iteration of a parallel loop.
-The same algorithm as the NumPy back end (``mechanism_numeric._qrcp``).
+The same algorithm as the NumPy back end (``screwsym.numeric.mobility._qrcp``).
 Compiled with ``cache=True``: the first call on a machine compiles (seconds),
 later processes load the compiled code.  Imported only when the numba back
 end is asked for (``pip install "screwsym[fast]"``).
@@ -33,7 +33,7 @@ __all__ = ["analyse_loop", "qrcp_one"]
 
 @_jit
 def qrcp_one(C, want_q, rdiag, Qt):  # pragma: no cover - compiled
-    """One item of ``mechanism_numeric._qrcp``, in loops: fills ``rdiag`` and ``Qt``."""
+    """One item of ``screwsym.numeric.mobility._qrcp``, in loops: fills ``rdiag`` and ``Qt``."""
     m, n = C.shape
     k = min(m, n)
     used = np.zeros(m, dtype=np.bool_)
@@ -78,7 +78,7 @@ def qrcp_one(C, want_q, rdiag, Qt):  # pragma: no cover - compiled
 
 @_parallel_jit
 def analyse_loop(T, offsets, rtol, ranks, counts, sigma):  # pragma: no cover - compiled
-    """The per-configuration loop of ``mechanism_numeric._analyse_numpy``."""
+    """The per-configuration loop of ``screwsym.numeric.mobility._analyse_numpy``."""
     N, _, M = T.shape
     k = offsets.shape[0] - 1
     for item in _prange(N):
