@@ -6,7 +6,7 @@ Convention (used everywhere in screwsym): a screw is written in the book's
     $ = (S; S0)        line vector (S; S_0), twist (omega; v_O), wrench (f; C_O)
 
 ``S`` is the primary (direction) 3-vector and ``S0`` the dual (moment)
-3-vector about the origin O.  ``matrix`` stacks them into the 6x1
+3-vector about the origin O.  ``s.matrix`` stacks them into the 6x1
 column ``[S; S0]`` in that order.
 
 A :class:`Screw` is a SymPy ``Basic`` whose ``args`` are ``(S, S0)``, each a
