@@ -47,6 +47,7 @@ from .checks import (
     check_vector,
 )
 from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
+from .formulas import dual_part, foot_point, moved, pitch_ratio
 from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
 __all__ = [
@@ -268,7 +269,7 @@ class Screw(ScrewsymBasic):
         m = check_scalar(magnitude, "magnitude")
         # a kind that refuses the result (a line vector of zero direction) names the culprit
         label = "magnitude" if is_zero(m) is True else "point, direction, pitch"
-        return cls._rebuild(m * S_, m * (r.cross(S_) + h * S_), label)
+        return cls._rebuild(m * S_, m * dual_part(r, S_, h), label)
 
     @classmethod
     def through(cls, A: VectorLike, B: VectorLike):
@@ -511,10 +512,10 @@ def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
     if tidy and float_tau(dot) is None:
         # exact: the quotient in lowest terms is 0 exactly when S . S0 expands to 0, so the
         # zero test of the float policy below would only repeat the same expansion
-        return _finish(dot / s.S.dot(s.S))
+        return _finish(pitch_ratio(s.S, s.S0))
     if is_zero_scaled(dot, norm(s.S) * norm(s.S0)) is True:
         return S.Zero
-    return dot / s.S.dot(s.S)
+    return pitch_ratio(s.S, s.S0)
 
 
 def _known(cls: type, S_: ImmutableMatrix, S0_: ImmutableMatrix):
@@ -631,7 +632,7 @@ def axis(s: ScrewLike, *, tidy: bool = True):
 def _foot(s: Screw, name: str | None = None, tidy: bool = True,
           conds: str = "none") -> ImmutableMatrix:
     _require_axis(s, "foot point", name)
-    P = _finish(s.S.cross(s.S0) / s.S.dot(s.S), tidy)
+    P = _finish(foot_point(s.S, s.S0), tidy)
     return _where_direction_vanishes(s, P) if conds == "piecewise" else P
 
 
@@ -669,7 +670,7 @@ def _distance_to_origin(s: Screw, name: str | None = None, tidy: bool = True,
         if _is_polynomial(h):
             d = _finish(norm(_axis_moment(s, True, h)) / norm(s.S))
         else:
-            d = _finish(norm(_finish(s.S.cross(s.S0))) / s.S.dot(s.S))
+            d = _finish(norm(_foot(s, name)))
     return _where_direction_vanishes(s, d) if conds == "piecewise" else d
 
 
@@ -811,9 +812,10 @@ def classify(s: ScrewLike) -> str | None:
 
 
 def _shift_origin(s: Screw, A: ImmutableMatrix, tidy: bool = True):
+    S_, S0_ = moved(None, -A, s.S, s.S0)  # a pure translation by -A (1.32)
     if tidy:
-        return _known(type(s), s.S, _finish(s.S0 - A.cross(s.S)))
-    return type(s)(s.S, s.S0 - A.cross(s.S))
+        return _known(type(s), S_, _finish(S0_))
+    return type(s)(S_, S0_)
 
 
 def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True):

@@ -34,7 +34,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, cos, sin, sqrt, trigsimp, zeros
+from sympy import Expr, ImmutableMatrix, S, cos, sin, sqrt, trigsimp, zeros
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
@@ -46,6 +46,7 @@ from ..core.checks import (
     check_vector,
 )
 from ..core.decide import is_zero_vector
+from ..core.formulas import moved
 from ..core.screw import Screw
 from ..core.tidy import tidy
 
@@ -66,6 +67,25 @@ def skew(v: VectorLike) -> ImmutableMatrix:
     """
     x, y, z = check_vector(v, "v")
     return ImmutableMatrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+
+
+def rodrigues(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One) -> ImmutableMatrix:
+    r"""Rodrigues' formula: the rotation ``exp([omega]x theta)`` by ``w theta`` about ``omega``.
+
+    ``R = I + sin(w theta)/w K + (1 - cos(w theta))/w^2 K^2`` with ``K = [omega]x``
+    and ``w = |omega|``, which the caller passes (the default 1: a unit
+    ``omega``, ``R = I + sin(theta) K + (1 - cos(theta)) K^2``).  It is the
+    rotation part of the finite screw displacement of a twist (1.48)-(1.53).
+
+    >>> from sympy import pi
+    >>> rodrigues(ImmutableMatrix([0, 0, 1]), pi/2)
+    Matrix([
+    [0, -1, 0],
+    [1,  0, 0],
+    [0,  0, 1]])
+    """
+    K = skew(omega)
+    return ImmutableMatrix.eye(3) + (sin(w * theta) / w) * K + ((1 - cos(w * theta)) / w**2) * (K * K)
 
 
 def _tidy(e: Expr) -> Expr:
@@ -181,9 +201,7 @@ class Transform(ScrewsymBasic):
         angle = check_scalar(angle, "angle")
         if is_zero_vector(direction) is True:
             raise ValueError(f"direction: expected a non-zero direction, got {list(direction)}")
-        n = sqrt(direction.dot(direction))
-        K = skew(direction / n)
-        R = ImmutableMatrix.eye(3) + sin(angle) * K + (1 - cos(angle)) * (K * K)
+        R = rodrigues(direction / sqrt(direction.dot(direction)), angle)
         R = R.applyfunc(lambda e: e.expand() if e.is_number else e)
         if point is None:
             return cls._new(R, zeros(3, 1))
@@ -325,9 +343,7 @@ class Transform(ScrewsymBasic):
         if isinstance(obj, Transform):
             return self @ obj
         if isinstance(obj, Screw):
-            S = self.R * obj.S
-            S0 = self.R * obj.S0 + self.p.cross(S)
-            return tidy(type(obj)(S, S0))
+            return tidy(type(obj)(*moved(self.R, self.p, obj.S, obj.S0)))
         x = check_point_or_direction(obj, "obj")
         return ImmutableMatrix(self.R * x) if direction else ImmutableMatrix(self.R * x + self.p)
 
@@ -410,6 +426,7 @@ def adjoint_matrix(T: Transform) -> ImmutableMatrix:
     True
     """
     check_instance(T, "T", Transform)
-    top = T.R.row_join(zeros(3, 3))
-    bottom = (skew(T.p) * T.R).row_join(T.R)
-    return ImmutableMatrix(top.col_join(bottom))
+    # column j is the action (:func:`screwsym.core.formulas.moved`) on the j-th unit 6-vector
+    e = ImmutableMatrix.eye(6)
+    columns = [ImmutableMatrix.vstack(*moved(T.R, T.p, e[:3, j], e[3:, j])) for j in range(6)]
+    return ImmutableMatrix.hstack(*columns)
