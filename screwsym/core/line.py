@@ -15,8 +15,8 @@ from sympy import Abs, Eq, Expr, Float, ImmutableMatrix, Rational, atan2, nan, s
 from sympy.core.evalf import prec_to_dps
 
 from .basic import ScrewsymBasic
-from .checks import check_choice, check_flag, check_line_parts, check_screw, check_vector
-from .decide import float_tau, is_zero_scaled, is_zero_vector_scaled, norm
+from .checks import check_choice, check_flag, check_vector
+from .decide import float_tau, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
 from .formulas import foot_point
 from .screw import (
     Screw,
@@ -25,6 +25,7 @@ from .screw import (
     _pitch_formula,
     _reciprocal_product,
     _require_axis,
+    check_screw,
 )
 from .tidy import CONDS, _finish, _piecewise, _vanishes
 
@@ -38,6 +39,23 @@ __all__ = [
 ]
 
 LineLike = Any  # a LineVector, a screw whose parts make a line, or a 6-vector
+
+
+def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple[str, str]) -> None:
+    """Raise ``ValueError`` unless ``(S; S0)`` may be a line vector.
+
+    A line vector has ``S != 0`` and ``S . S0 = 0`` (1.10).  Only a provable
+    violation raises: undecidable symbolic cases are accepted, and floats are
+    judged by the float policy of :func:`screwsym.core.decide.is_zero_scaled`.
+    ``label`` starts the message: the argument's name, or the names of the
+    two parts (a tuple) when the parts were given.
+    """
+    first, both = (label[0], ", ".join(label)) if isinstance(label, tuple) else (label, label)
+    if is_zero_vector(S) is True:
+        raise ValueError(f"{first}: a line vector needs a non-zero direction S, got {list(S)}")
+    dot = S.dot(S0)
+    if is_zero_scaled(dot, norm(S) * norm(S0)) is False:
+        raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")
 
 
 class LineVector(Screw, line_of=Screw):

@@ -37,12 +37,13 @@ from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 
 from .basic import ScrewsymBasic
 from .checks import (
+    _describe,
+    _shape_of,
     check_choice,
     check_flag,
     check_nonzero_vector,
     check_pitch,
     check_scalar,
-    check_screw,
     check_six,
     check_vector,
 )
@@ -468,7 +469,29 @@ class Screw(ScrewsymBasic):
         return pretty_screw(self, printer)
 
 
-Screw._root = Screw
+def check_screw(value: Any, name: str, cls: type):
+    """Return ``value`` as a screw object, an instance of ``cls``.
+
+    A screw object of class ``cls`` is passed through.  Another screw is
+    rebuilt as ``cls`` from its parts (a plain screw may serve as a line
+    vector when its parts make a line), except across kinds: a twist is never
+    read as a wrench or a line, nor a wrench as a twist (each kind declares
+    its ``_kind``).  A 6-vector (list, tuple, SymPy Matrix or NumPy array of
+    six numbers, in the book's order ``(S; S0)``) goes through
+    ``cls.from_matrix``.  Errors name the argument ``name``.
+    """
+    if isinstance(value, cls):
+        return value
+    if isinstance(value, Screw):
+        if value._kind is not None and value._kind != cls._kind:
+            raise TypeError(f"{name}: expected a {cls.__name__}, got {type(value).__name__}")
+        return cls._rebuild(value.S, value.S0, name)
+    if isinstance(value, (str, bytes)) or _shape_of(value) is None:
+        raise TypeError(
+            f"{name}: expected a {cls.__name__} or a 6-vector (S; S0), got {_describe(value)}"
+        )
+    S_, S0_ = check_six(value, name)
+    return cls._rebuild(S_, S0_, name)
 
 
 # --------------------------------------------------------------------------

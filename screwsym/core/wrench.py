@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from sympy import Expr, ImmutableMatrix
 
-from .checks import check_flag, check_nonzero_vector, check_screw, check_vector
+from .checks import check_flag, check_nonzero_vector, check_vector
 from .formulas import dual_part
-from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
+from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin, check_screw
 from .twist import Twist
 
 __all__ = ["Wrench", "power"]

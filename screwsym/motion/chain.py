@@ -48,11 +48,11 @@ from ..core.checks import (
     check_choice,
     check_instance,
     check_scalar,
-    check_screw,
     check_sequence,
 )
 from ..core.decide import is_zero_vector
 from ..core.formulas import moved
+from ..core.screw import check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
 from .displacement import exp6

@@ -30,7 +30,7 @@ from typing import Any
 from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, pi, sqrt, zeros
 from sympy.core.evalf import prec_to_dps
 
-from ..core.checks import check_instance, check_scalar, check_screw
+from ..core.checks import check_instance, check_scalar
 from ..core.decide import (
     float_tau,
     is_zero,
@@ -40,6 +40,7 @@ from ..core.decide import (
     norm,
 )
 from ..core.formulas import dual_part, foot_point, pitch_ratio
+from ..core.screw import check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
 from .transform import Transform, rodrigues, skew

@@ -41,11 +41,10 @@ from ..core.checks import (
     check_instance,
     check_matrix,
     check_point_or_direction,
-    check_rotation,
     check_scalar,
     check_vector,
 )
-from ..core.decide import is_zero_vector
+from ..core.decide import is_zero, is_zero_scaled, is_zero_vector
 from ..core.formulas import moved
 from ..core.screw import Screw
 from ..core.tidy import tidy
@@ -67,6 +66,60 @@ def skew(v: VectorLike) -> ImmutableMatrix:
     """
     x, y, z = check_vector(v, "v")
     return ImmutableMatrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+
+
+#: symbolic entries larger than this (``count_ops``) are not put through the
+#: exact decision of :func:`check_rotation`; they are accepted undecided
+ROTATION_CHECK_OPS = 400
+
+
+def _decide_small(expr: Expr) -> bool | None:
+    """Zero-decision for an entry of ``R^T R - I`` (of size 1 for a rotation).
+
+    Numbers follow the float policy (:func:`screwsym.core.decide.is_zero_scaled`
+    with scale 1: exact for exact numbers); symbolic entries up to
+    ``ROTATION_CHECK_OPS`` operations are decided exactly, larger ones not at all.
+    """
+    if expr.is_number:
+        return is_zero_scaled(expr, S.One)
+    if expr.count_ops() > ROTATION_CHECK_OPS:
+        return None
+    return is_zero(expr)
+
+
+def check_rotation(value: Any, name: str) -> ImmutableMatrix:
+    """Return ``value`` as a 3x3 rotation matrix, refusing a provably improper one.
+
+    A rotation satisfies ``R^T R = I`` and ``det R = 1``.  Only a provable
+    violation raises: entries that are numbers are decided exactly (floats by
+    the float policy of :func:`screwsym.core.decide.is_zero_scaled`), symbolic
+    entries with the exact decision of
+    :func:`screwsym.core.decide.is_zero` when they are no larger than
+    ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
+
+    >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
+    (3, 3)
+    >>> check_rotation([[1, 0, 0], [0, 1, 0], [0, 0, -1]], "R")
+    Traceback (most recent call last):
+    ...
+    ValueError: R: expected a rotation (det R = 1), got det R = -1
+    >>> check_rotation([[1, 1, 0], [0, 1, 0], [0, 0, 1]], "R")
+    Traceback (most recent call last):
+    ...
+    ValueError: R: expected an orthonormal matrix (R^T R = I), got R^T R - I = Matrix([[0, 1, 0], [1, 1, 0], [0, 0, 0]])
+    """
+    R = check_matrix(value, name, (3, 3))
+    gram = R.T * R - ImmutableMatrix.eye(3)
+    if any(_decide_small(e) is False for e in gram):
+        raise ValueError(
+            f"{name}: expected an orthonormal matrix (R^T R = I), got R^T R - I = "
+            f"Matrix({gram.tolist()})"
+        )
+    # R^T R = I leaves det R = +-1; the sign is decided for numeric entries only
+    det = R.det(method="berkowitz") if all(e.is_number for e in R) else None
+    if det is not None and _decide_small(det - 1) is False:
+        raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
+    return R
 
 
 def rodrigues(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One) -> ImmutableMatrix:
@@ -102,7 +155,7 @@ class Transform(ScrewsymBasic):
     ``args == (R, p)``: ``R`` a 3x3 rotation, ``p`` a 3x1 translation, both
     ``ImmutableMatrix``.  A rotation part that is provably not orthonormal
     with determinant 1 is refused (see
-    :func:`screwsym.core.checks.check_rotation`: exact for numbers, exact for
+    :func:`check_rotation`: exact for numbers, exact for
     small symbolic entries, undecided large symbolic entries are accepted).
     Composition is ``T1 @ T2`` (first ``T2``, then ``T1``), as for the 4x4
     matrices.

@@ -52,11 +52,11 @@ import numpy as np
 from sympy import Abs, Basic, ImmutableMatrix
 from sympy.matrices import MatrixBase
 
-from ..core.checks import check_no_strings, check_screw, check_vector
+from ..core.checks import check_no_strings, check_vector
 from ..core.decide import is_zero_scaled
 from ..core.formulas import foot_point, pitch_ratio
 from ..core.line import LineVector, common_normal, contains
-from ..core.screw import Screw
+from ..core.screw import Screw, check_screw
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 

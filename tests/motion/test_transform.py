@@ -279,7 +279,7 @@ def test_a_symbolic_forward_kinematics_rotation_is_accepted():
 
 def test_entries_beyond_the_size_limit_are_not_decided(monkeypatch):
     """Beyond ROTATION_CHECK_OPS a symbolic entry is accepted undecided (documented)."""
-    import screwsym.core.checks as validation
+    import screwsym.motion.transform as validation
 
     y = symbols("y", positive=True)
     wrong = [[1, 2 * y, 0], [0, 1, 0], [0, 0, 1]]  # (R^T R)[0, 1] = 2 y != 0: provably wrong
