@@ -74,7 +74,7 @@ ROTATION_CHECK_OPS = 400
 
 
 def _decide_small(expr: Expr) -> bool | None:
-    """Zero-decision for an entry of ``R^T R - I`` (of size 1 for a rotation).
+    """Zero-decision for an entry of size 1: of ``R^T R - I``, or of a 4x4 last row minus ``[0, 0, 0, 1]``.
 
     Numbers follow the float policy (:func:`screwsym.core.decide.is_zero_scaled`
     with scale 1: exact for exact numbers); symbolic entries up to
@@ -266,7 +266,11 @@ class Transform(ScrewsymBasic):
         """The transform of the 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
 
         Errors name the argument ``name`` (as :meth:`Screw.from_matrix
-        <screwsym.core.screw.Screw.from_matrix>`'s do).
+        <screwsym.core.screw.Screw.from_matrix>`'s do).  As for the rotation
+        part, only a provably wrong last row raises: exact entries are decided
+        exactly, floats by the float policy of
+        :func:`screwsym.core.decide.is_zero_scaled` (entries of size 1), and an
+        entry the symbols leave undecided is accepted.
 
         >>> Transform.from_matrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
         Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[5, 0, 0])
@@ -277,7 +281,7 @@ class Transform(ScrewsymBasic):
         """
         M = check_matrix(M, name, (4, 4))
         last = list(M[3, :])
-        if any((e - target).is_zero is not True for e, target in zip(last, (0, 0, 0, 1), strict=True)):
+        if any(_decide_small(e - target) is False for e, target in zip(last, (0, 0, 0, 1), strict=True)):
             raise ValueError(f"{name}: expected the last row [0, 0, 0, 1], got {last}")
         return cls._new(check_rotation(M[:3, :3], f"{name}[:3, :3]"), M[:3, 3])
 
