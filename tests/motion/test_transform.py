@@ -279,11 +279,14 @@ def test_a_symbolic_forward_kinematics_rotation_is_accepted():
     assert Transform.from_matrix(M).matrix == M
 
 
-def test_from_matrix_accepts_a_last_row_that_is_provably_or_up_to_rounding_0001():
+def test_from_matrix_accepts_a_last_row_that_is_provably_0001():
     # only a provable violation raises (the float policy of screwsym.core.decide), as for R
     one = sin(t) ** 2 + cos(t) ** 2  # 1 for every real t, though not literally 1
     M = [[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, one]]
     assert Transform.from_matrix(M) == Transform.translation([5, 0, 0])
+
+
+def test_from_matrix_accepts_a_float_last_row_off_0001_by_rounding():
     residue = [[1.0, 0, 0, 5], [0, 1.0, 0, 0], [0, 0, 1.0, 0], [1e-30, 0, 0, 1.0]]
     assert Transform.from_matrix(residue).p.T == ImmutableMatrix([[5, 0, 0]])
 
