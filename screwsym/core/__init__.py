@@ -6,6 +6,8 @@ This floor imports nothing of screwsym above it.  Its public modules:
 - :mod:`~screwsym.core.line`, :mod:`~screwsym.core.twist`, :mod:`~screwsym.core.wrench`:
   the three kinds of screw (line vector, twist, wrench);
 - :mod:`~screwsym.core.vectors`, :mod:`~screwsym.core.tidy`, :mod:`~screwsym.core.printing`;
+- :mod:`~screwsym.core.formulas`: the formulas the floors share (foot point, pitch,
+  axis to screw, a screw moved by a rigid motion, the half swap), each written once;
 - :mod:`~screwsym.core.decide` (exact decisions and the float policy),
   :mod:`~screwsym.core.checks` (input checks and their wording) and
   :mod:`~screwsym.core.basic` (the SymPy base of every object), which the

@@ -1,7 +1,13 @@
-"""All input checking of screwsym, and all of its error wording, in one place.
+"""The wording of screwsym's input checks, and the generic checks.
 
-Every public function passes its arguments through one of the ``check_*``
-functions below before doing anything else.  Each returns the cleaned value
+Every public function passes its arguments through ``check_*`` functions
+before doing anything else: the generic ones below (numbers, vectors,
+matrices, names, choices, ...), and the invariants, which live beside their
+concepts: :func:`screwsym.core.screw.check_screw` (a screw of a kind),
+:func:`screwsym.core.line.check_line_parts` (the line condition
+``S . S0 = 0``), :func:`screwsym.motion.transform.check_rotation` and
+:func:`screwsym.systems.screw_system.check_screw_system_members` (the kinds
+a screw system holds).  Each returns the cleaned value
 (a SymPy expression, or a 3x1 ``ImmutableMatrix``) or raises a ``TypeError``
 (wrong kind of object) or ``ValueError`` (right kind, wrong value) whose
 message names the argument, says what was expected and what came.
@@ -19,7 +25,7 @@ from sympy import Basic, Expr, Float, ImmutableMatrix, S
 from sympy.core.sympify import SympifyError, sympify
 from sympy.matrices import MatrixBase
 
-from .decide import is_real_where_defined, is_zero, is_zero_scaled, is_zero_vector, norm
+from .decide import is_real_where_defined, is_zero, is_zero_vector
 
 __all__ = [
     "check_no_strings",
@@ -27,8 +33,6 @@ __all__ = [
     "check_scalar",
     "check_vector",
     "check_name",
-    "check_screw",
-    "check_line_parts",
 ]
 
 
@@ -216,31 +220,6 @@ def check_name(value: Any, name: str) -> str:
     return value
 
 
-def check_screw(value: Any, name: str, cls: type):
-    """Return ``value`` as a screw object, an instance of ``cls``.
-
-    A screw object of class ``cls`` is passed through.  Another screw is
-    rebuilt as ``cls`` from its parts (a plain screw may serve as a line
-    vector when its parts make a line), except across kinds: a twist is never
-    read as a wrench or a line, nor a wrench as a twist (each kind declares
-    its ``_kind``).  A 6-vector (list, tuple, SymPy Matrix or NumPy array of
-    six numbers, in the book's order ``(S; S0)``) goes through
-    ``cls.from_matrix``.  Errors name the argument ``name``.
-    """
-    if isinstance(value, cls):
-        return value
-    if isinstance(value, cls._root):
-        if value._kind is not None and value._kind != cls._kind:
-            raise TypeError(f"{name}: expected a {cls.__name__}, got {type(value).__name__}")
-        return cls._rebuild(value.S, value.S0, name)
-    if isinstance(value, (str, bytes)) or _shape_of(value) is None:
-        raise TypeError(
-            f"{name}: expected a {cls.__name__} or a 6-vector (S; S0), got {_describe(value)}"
-        )
-    S_, S0_ = check_six(value, name)
-    return cls._rebuild(S_, S0_, name)
-
-
 def check_six(value: Any, name: str) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     """Split a 6-vector in the book's order into its two 3x1 parts ``(S, S0)``."""
     if (
@@ -264,32 +243,10 @@ def check_six(value: Any, name: str) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     return ImmutableMatrix(3, 1, entries[:3]), ImmutableMatrix(3, 1, entries[3:])
 
 
-def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple[str, str]) -> None:
-    """Raise ``ValueError`` unless ``(S; S0)`` may be a line vector.
-
-    A line vector has ``S != 0`` and ``S . S0 = 0`` (1.10).  Only a provable
-    violation raises: undecidable symbolic cases are accepted, and floats are
-    judged by the float policy of :func:`screwsym.core.decide.is_zero_scaled`.
-    ``label`` starts the message: the argument's name, or the names of the
-    two parts (a tuple) when the parts were given.
-    """
-    first, both = (label[0], ", ".join(label)) if isinstance(label, tuple) else (label, label)
-    if is_zero_vector(S) is True:
-        raise ValueError(f"{first}: a line vector needs a non-zero direction S, got {list(S)}")
-    dot = S.dot(S0)
-    if is_zero_scaled(dot, norm(S) * norm(S0)) is False:
-        raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")
-
-
 # --------------------------------------------------------------------------
 # Rigid motions (screwsym.motion.transform, screwsym.motion.displacement, screwsym.motion.chain,
 # screwsym.motion.conventions)
 # --------------------------------------------------------------------------
-
-#: symbolic entries larger than this (``count_ops``) are not put through the
-#: exact decision of :func:`check_rotation`; they are accepted undecided
-ROTATION_CHECK_OPS = 400
-
 
 def check_matrix(value: Any, name: str, shape: tuple[int, int]) -> ImmutableMatrix:
     """Return ``value`` as an ``ImmutableMatrix`` of ``shape`` with real entries.
@@ -334,55 +291,6 @@ def check_matrix(value: Any, name: str, shape: tuple[int, int]) -> ImmutableMatr
         for j, item in enumerate(row)
     ]
     return ImmutableMatrix(shape[0], shape[1], entries)
-
-
-def _decide_small(expr: Expr) -> bool | None:
-    """Zero-decision for an entry of ``R^T R - I`` (of size 1 for a rotation).
-
-    Numbers follow the float policy (:func:`screwsym.core.decide.is_zero_scaled`
-    with scale 1: exact for exact numbers); symbolic entries up to
-    ``ROTATION_CHECK_OPS`` operations are decided exactly, larger ones not at all.
-    """
-    if expr.is_number:
-        return is_zero_scaled(expr, S.One)
-    if expr.count_ops() > ROTATION_CHECK_OPS:
-        return None
-    return is_zero(expr)
-
-
-def check_rotation(value: Any, name: str) -> ImmutableMatrix:
-    """Return ``value`` as a 3x3 rotation matrix, refusing a provably improper one.
-
-    A rotation satisfies ``R^T R = I`` and ``det R = 1``.  Only a provable
-    violation raises: entries that are numbers are decided exactly (floats by
-    the float policy of :func:`screwsym.core.decide.is_zero_scaled`), symbolic
-    entries with the exact decision of
-    :func:`screwsym.core.decide.is_zero` when they are no larger than
-    ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
-
-    >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
-    (3, 3)
-    >>> check_rotation([[1, 0, 0], [0, 1, 0], [0, 0, -1]], "R")
-    Traceback (most recent call last):
-    ...
-    ValueError: R: expected a rotation (det R = 1), got det R = -1
-    >>> check_rotation([[1, 1, 0], [0, 1, 0], [0, 0, 1]], "R")
-    Traceback (most recent call last):
-    ...
-    ValueError: R: expected an orthonormal matrix (R^T R = I), got R^T R - I = Matrix([[0, 1, 0], [1, 1, 0], [0, 0, 0]])
-    """
-    R = check_matrix(value, name, (3, 3))
-    gram = R.T * R - ImmutableMatrix.eye(3)
-    if any(_decide_small(e) is False for e in gram):
-        raise ValueError(
-            f"{name}: expected an orthonormal matrix (R^T R = I), got R^T R - I = "
-            f"Matrix({gram.tolist()})"
-        )
-    # R^T R = I leaves det R = +-1; the sign is decided for numeric entries only
-    det = R.det(method="berkowitz") if all(e.is_number for e in R) else None
-    if det is not None and _decide_small(det - 1) is False:
-        raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
-    return R
 
 
 def check_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
@@ -469,45 +377,6 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
 # Screw systems and mechanisms (screwsym.systems.screw_system, screwsym.systems.mechanism,
 # screwsym.numeric.mobility)
 # --------------------------------------------------------------------------
-
-
-def check_screw_system_members(values: Any, name: str, kinds: dict) -> tuple:
-    """Return ``values`` as a tuple of screws of one kind: all twists, all wrenches or screws.
-
-    ``kinds`` maps a screw class's ``_kind`` to the class a system of that
-    kind holds, ``None`` to the root class (screws and line vectors, which
-    mix).  Screw objects are passed through; 6-vectors (S; S0) become the
-    kind of the screw objects among them, plain screws if there are none.
-    Floats are refused: a screw system decides ranks exactly.
-
-    >>> from screwsym import Screw, Twist, Wrench
-    >>> kinds = {None: Screw, "twist": Twist, "wrench": Wrench}
-    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0])], "screws", kinds)
-    (Twist([1, 0, 0], [0, 0, 0]),)
-    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0]),
-    ...                             Wrench([1, 0, 0], [0, 0, 0])], "screws", kinds)
-    Traceback (most recent call last):
-    ...
-    TypeError: screws: expected screws of one kind, got Twist and Wrench
-    """
-    root = kinds[None]
-    values = tuple(values)
-    found: list = []
-    for v in values:
-        if isinstance(v, root):
-            k = v._kind if v._kind in kinds else None
-            if k not in found:
-                found.append(k)
-    if len(found) > 1:
-        raise TypeError(
-            f"{name}: expected screws of one kind, got "
-            f"{' and '.join(kinds[k].__name__ for k in found)}"
-        )
-    cls = kinds[found[0]] if found else root
-    screws = tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
-    for i, s in enumerate(screws):
-        check_exact(s, f"{name}[{i}]")
-    return screws
 
 
 def check_exact(value: Any, name: str) -> Any:

@@ -13,14 +13,17 @@ Exact and symbolic values are decided exactly.  A quantity computed from
 floating-point numbers carries rounding error, so every decision of the core
 (the line condition of a constructor, ``classify``, ``pitch``,
 ``is_coplanar``, ``contains``, the parallel and intersecting cases of
-``common_normal``) goes through :func:`is_zero_scaled`: a float quantity
+``common_normal``; and above it the rotation check and the last row of
+``Transform.from_matrix``, ``log6``'s identity and half-turn, the plots'
+checks) goes through :func:`is_zero_scaled`: a float quantity
 ``q`` counts as zero when ``|q| <= tau * scale``, where ``scale`` is the
 size the quantity would have without cancellation (``|S| |S0|`` for
 ``S . S0``, ``|S1| |S2|`` for ``S1 x S2``) and ``tau = 2**(13 - p)`` for
 ``p``-bit floats (``tau = 2**-40``, about ``9.1e-13``, for double precision).
 The test is relative, so it does not change when the input is scaled by any
 power of ten, and it is made in SymPy's arbitrary-exponent floats, so
-``1e200`` does not overflow.
+``1e200`` does not overflow.  The documentation's page "Decisions and the
+float policy" lists every decision with its scale.
 """
 
 from __future__ import annotations

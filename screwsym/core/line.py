@@ -12,10 +12,12 @@ from __future__ import annotations
 from typing import Any
 
 from sympy import Abs, Eq, Expr, Float, ImmutableMatrix, Rational, atan2, nan, sign, sqrt
+from sympy.core.evalf import prec_to_dps
 
 from .basic import ScrewsymBasic
-from .checks import check_choice, check_flag, check_line_parts, check_screw, check_vector
-from .decide import float_tau, is_zero_scaled, is_zero_vector_scaled, norm
+from .checks import check_choice, check_flag, check_vector
+from .decide import float_tau, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
+from .formulas import foot_point
 from .screw import (
     Screw,
     ScrewLike,
@@ -23,6 +25,7 @@ from .screw import (
     _pitch_formula,
     _reciprocal_product,
     _require_axis,
+    check_screw,
 )
 from .tidy import CONDS, _finish, _piecewise, _vanishes
 
@@ -36,6 +39,23 @@ __all__ = [
 ]
 
 LineLike = Any  # a LineVector, a screw whose parts make a line, or a 6-vector
+
+
+def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple[str, str]) -> None:
+    """Raise ``ValueError`` unless ``(S; S0)`` may be a line vector.
+
+    A line vector has ``S != 0`` and ``S . S0 = 0`` (1.10).  Only a provable
+    violation raises: undecidable symbolic cases are accepted, and floats are
+    judged by the float policy of :func:`screwsym.core.decide.is_zero_scaled`.
+    ``label`` starts the message: the argument's name, or the names of the
+    two parts (a tuple) when the parts were given.
+    """
+    first, both = (label[0], ", ".join(label)) if isinstance(label, tuple) else (label, label)
+    if is_zero_vector(S) is True:
+        raise ValueError(f"{first}: a line vector needs a non-zero direction S, got {list(S)}")
+    dot = S.dot(S0)
+    if is_zero_scaled(dot, norm(S) * norm(S0)) is False:
+        raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")
 
 
 class LineVector(Screw, line_of=Screw):
@@ -254,18 +274,19 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
     # The moments are made exactly perpendicular to the directions first: a float line's
     # S.S0 is zero only up to rounding, and that residue divided by a small |S1 x S2| would
     # move the distance of nearly parallel lines far more than the rounding moved the lines.
-    digits = min(f._prec for m in (l1.matrix, l2.matrix) for f in m.atoms(Float))
+    prec = min(f._prec for m in (l1.matrix, l2.matrix) for f in m.atoms(Float))
     S1, S2 = _exact(l1.S), _exact(l2.S)
     S01, S02 = _exact(l1.S0), _exact(l2.S0)
     S01 = S01 - S1.dot(S01) / S1.dot(S1) * S1
     S02 = S02 - S2.dot(S02) / S2.dot(S2) * S2
     cn = _common_normal_parts(S1, S01, S2, S02, tau, names)
-    return cn.func(*(a.evalf(n=max(15, int(digits * 0.30103) + 1)) for a in cn.args))
+    # the floats' digits and one guard digit (16 for double precision, as before)
+    return cn.func(*(a.evalf(n=max(15, prec_to_dps(prec) + 1)) for a in cn.args))
 
 
 def _common_normal_parts(S1, S01, S2, S02, tau, names, conds="none") -> CommonNormal:
     nn1, nn2 = S1.dot(S1), S2.dot(S2)
-    p1, p2 = S1.cross(S01) / nn1, S2.cross(S02) / nn2  # the feet (1.16)
+    p1, p2 = foot_point(S1, S01), foot_point(S2, S02)  # the feet (1.16)
     d = p2 - p1
     n = S1.cross(S2)
     nn = n.dot(n)

@@ -37,16 +37,18 @@ from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 
 from .basic import ScrewsymBasic
 from .checks import (
+    _describe,
+    _shape_of,
     check_choice,
     check_flag,
     check_nonzero_vector,
     check_pitch,
     check_scalar,
-    check_screw,
     check_six,
     check_vector,
 )
 from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
+from .formulas import dual_part, foot_point, moved, pitch_ratio
 from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
 __all__ = [
@@ -268,7 +270,7 @@ class Screw(ScrewsymBasic):
         m = check_scalar(magnitude, "magnitude")
         # a kind that refuses the result (a line vector of zero direction) names the culprit
         label = "magnitude" if is_zero(m) is True else "point, direction, pitch"
-        return cls._rebuild(m * S_, m * (r.cross(S_) + h * S_), label)
+        return cls._rebuild(m * S_, m * dual_part(r, S_, h), label)
 
     @classmethod
     def through(cls, A: VectorLike, B: VectorLike):
@@ -467,7 +469,29 @@ class Screw(ScrewsymBasic):
         return pretty_screw(self, printer)
 
 
-Screw._root = Screw
+def check_screw(value: Any, name: str, cls: type):
+    """Return ``value`` as a screw object, an instance of ``cls``.
+
+    A screw object of class ``cls`` is passed through.  Another screw is
+    rebuilt as ``cls`` from its parts (a plain screw may serve as a line
+    vector when its parts make a line), except across kinds: a twist is never
+    read as a wrench or a line, nor a wrench as a twist (each kind declares
+    its ``_kind``).  A 6-vector (list, tuple, SymPy Matrix or NumPy array of
+    six numbers, in the book's order ``(S; S0)``) goes through
+    ``cls.from_matrix``.  Errors name the argument ``name``.
+    """
+    if isinstance(value, cls):
+        return value
+    if isinstance(value, Screw):
+        if value._kind is not None and value._kind != cls._kind:
+            raise TypeError(f"{name}: expected a {cls.__name__}, got {type(value).__name__}")
+        return cls._rebuild(value.S, value.S0, name)
+    if isinstance(value, (str, bytes)) or _shape_of(value) is None:
+        raise TypeError(
+            f"{name}: expected a {cls.__name__} or a 6-vector (S; S0), got {_describe(value)}"
+        )
+    S_, S0_ = check_six(value, name)
+    return cls._rebuild(S_, S0_, name)
 
 
 # --------------------------------------------------------------------------
@@ -511,10 +535,10 @@ def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
     if tidy and float_tau(dot) is None:
         # exact: the quotient in lowest terms is 0 exactly when S . S0 expands to 0, so the
         # zero test of the float policy below would only repeat the same expansion
-        return _finish(dot / s.S.dot(s.S))
+        return _finish(pitch_ratio(s.S, s.S0))
     if is_zero_scaled(dot, norm(s.S) * norm(s.S0)) is True:
         return S.Zero
-    return dot / s.S.dot(s.S)
+    return pitch_ratio(s.S, s.S0)
 
 
 def _known(cls: type, S_: ImmutableMatrix, S0_: ImmutableMatrix):
@@ -631,7 +655,7 @@ def axis(s: ScrewLike, *, tidy: bool = True):
 def _foot(s: Screw, name: str | None = None, tidy: bool = True,
           conds: str = "none") -> ImmutableMatrix:
     _require_axis(s, "foot point", name)
-    P = _finish(s.S.cross(s.S0) / s.S.dot(s.S), tidy)
+    P = _finish(foot_point(s.S, s.S0), tidy)
     return _where_direction_vanishes(s, P) if conds == "piecewise" else P
 
 
@@ -669,7 +693,7 @@ def _distance_to_origin(s: Screw, name: str | None = None, tidy: bool = True,
         if _is_polynomial(h):
             d = _finish(norm(_axis_moment(s, True, h)) / norm(s.S))
         else:
-            d = _finish(norm(_finish(s.S.cross(s.S0))) / s.S.dot(s.S))
+            d = _finish(norm(_foot(s, name)))
     return _where_direction_vanishes(s, d) if conds == "piecewise" else d
 
 
@@ -811,9 +835,10 @@ def classify(s: ScrewLike) -> str | None:
 
 
 def _shift_origin(s: Screw, A: ImmutableMatrix, tidy: bool = True):
+    S_, S0_ = moved(None, -A, s.S, s.S0)  # a pure translation by -A (1.32)
     if tidy:
-        return _known(type(s), s.S, _finish(s.S0 - A.cross(s.S)))
-    return type(s)(s.S, s.S0 - A.cross(s.S))
+        return _known(type(s), S_, _finish(S0_))
+    return type(s)(S_, S0_)
 
 
 def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True):

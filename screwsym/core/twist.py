@@ -12,6 +12,7 @@ from typing import Any
 from sympy import ImmutableMatrix, zeros
 
 from .checks import check_flag, check_nonzero_vector, check_vector
+from .formulas import dual_part
 from .screw import Screw, VectorLike, _shift_origin
 
 __all__ = ["Twist"]
@@ -67,7 +68,7 @@ class Twist(Screw):
         """
         omega = check_nonzero_vector(omega, "omega", "a rotation needs a non-zero angular velocity")
         r = check_vector(point, "point")
-        return cls(omega, r.cross(omega))
+        return cls(omega, dual_part(r, omega))
 
     @classmethod
     def translation(cls, v: VectorLike) -> Twist:

@@ -9,8 +9,9 @@ from __future__ import annotations
 
 from sympy import Expr, ImmutableMatrix
 
-from .checks import check_flag, check_nonzero_vector, check_screw, check_vector
-from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
+from .checks import check_flag, check_nonzero_vector, check_vector
+from .formulas import dual_part
+from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin, check_screw
 from .twist import Twist
 
 __all__ = ["Wrench", "power"]
@@ -62,7 +63,7 @@ class Wrench(Screw):
         """
         f = check_nonzero_vector(f, "f", "a force needs a non-zero vector for its line of action")
         r = check_vector(point, "point")
-        return cls(f, r.cross(f))
+        return cls(f, dual_part(r, f))
 
     def moment_about(self, point: VectorLike, *, tidy: bool = True) -> ImmutableMatrix:
         r"""The moment of the wrench about ``point``: ``C_A = C_O - A x f`` (1.32).

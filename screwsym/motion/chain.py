@@ -41,18 +41,18 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, Rational, Tuple, zeros
+from sympy import Expr, ImmutableMatrix, Rational, Tuple
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_choice,
     check_instance,
     check_scalar,
-    check_screw,
     check_sequence,
 )
 from ..core.decide import is_zero_vector
-from ..core.screw import foot, pitch
+from ..core.formulas import moved
+from ..core.screw import check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
 from .displacement import exp6
@@ -62,18 +62,13 @@ __all__ = ["Chain", "ur5"]
 
 
 def _carried_column(T: Transform, twist: Twist) -> ImmutableMatrix:
-    """``Ad(T) $`` built from the carried axis: ``(R w; (R r + p) x R w + h R w)``, tidied.
+    """``Ad(T) $``: the joint twist carried by the motion ``T``, ``(R w; R v + p x R w)``, tidied.
 
-    Equal to ``T.adjoint() * $.matrix``; a revolute or helical twist is
-    carried through a point of its axis and its pitch (which the motion keeps),
-    a prismatic one ``(0; v)`` as the direction ``R v``.
+    The action of :func:`screwsym.core.formulas.moved`, equal to
+    ``T.adjoint() * $.matrix``; each part is tidied.
     """
-    if is_zero_vector(twist.omega) is True:
-        return ImmutableMatrix.vstack(zeros(3, 1), tidy(T.R * twist.v_O))
-    w = tidy(T.R * twist.omega)
-    r = tidy(T.R * foot(twist) + T.p)
-    h = pitch(twist)
-    return ImmutableMatrix.vstack(w, tidy(r.cross(w) + h * w))
+    w, v = moved(T.R, T.p, twist.omega, twist.v_O)
+    return ImmutableMatrix.vstack(tidy(w), tidy(v))
 
 
 class Chain(ScrewsymBasic):

@@ -57,6 +57,7 @@ from typing import Any, NamedTuple
 from sympy import ImmutableMatrix
 
 from ..core.checks import check_choice, check_six
+from ..core.formulas import SWAP
 from ..core.line import LineVector
 from ..core.screw import Screw
 from ..core.twist import Twist
@@ -89,7 +90,9 @@ _KINDS = (Screw, LineVector, Twist, Wrench, Transform)
 
 
 def _swap(first: ImmutableMatrix, second: ImmutableMatrix, swap: bool) -> ImmutableMatrix:
-    return ImmutableMatrix.vstack(second, first) if swap else ImmutableMatrix.vstack(first, second)
+    """``(first; second)``, its halves swapped by the core's ``SWAP`` (1.45) when ``swap``."""
+    m = ImmutableMatrix.vstack(first, second)
+    return m[list(SWAP), :] if swap else m
 
 
 def convert(obj: Any, to: str) -> ImmutableMatrix:
@@ -174,5 +177,4 @@ def convert_from(value: Any, source: str, kind: type) -> Any:
         return T.inverse() if c.transform_inverse else T
     first, second = check_six(value, "value")
     swap = c.force_moment_first if kind is Wrench else not c.motion_angular_first
-    ours = ImmutableMatrix.vstack(second, first) if swap else ImmutableMatrix.vstack(first, second)
-    return kind.from_matrix(ours, name="value")
+    return kind.from_matrix(_swap(first, second, swap), name="value")

@@ -27,9 +27,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, cos, pi, sin, sqrt, zeros
+from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, pi, sqrt, zeros
+from sympy.core.evalf import prec_to_dps
 
-from ..core.checks import check_instance, check_scalar, check_screw
+from ..core.checks import check_instance, check_scalar
 from ..core.decide import (
     float_tau,
     is_zero,
@@ -38,9 +39,11 @@ from ..core.decide import (
     is_zero_vector_scaled,
     norm,
 )
+from ..core.formulas import dual_part, foot_point, pitch_ratio
+from ..core.screw import check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
-from .transform import Transform, skew
+from .transform import Transform, rodrigues, skew
 
 __all__ = ["exp6", "log6", "se3_matrix"]
 
@@ -116,11 +119,9 @@ def exp6(twist: Any, theta: Any) -> Transform:
     if is_zero_vector(omega) is True:
         return Transform._new(ImmutableMatrix.eye(3), theta * v)
     ww = omega.dot(omega)
-    w = sqrt(ww)
-    K = skew(omega)
-    R = ImmutableMatrix.eye(3) + (sin(w * theta) / w) * K + ((1 - cos(w * theta)) / ww) * (K * K)
-    r = omega.cross(v) / ww
-    h = omega.dot(v) / ww
+    R = rodrigues(omega, theta, sqrt(ww))
+    r = foot_point(omega, v)
+    h = pitch_ratio(omega, v)
     p = (ImmutableMatrix.eye(3) - R) * r + (h * theta) * omega
     if all(e.is_number for e in p) or is_zero(ww - 1) is True:
         p = p.applyfunc(lambda e: e.expand())
@@ -224,8 +225,9 @@ def log6(T: Any) -> tuple[Twist, Expr]:
     if half_turn:
         theta = pi
     elif floats:  # atan2 keeps every digit near 0 and pi; a float, as acos(c) gave
-        digits = min(f._prec for f in R.atoms(Float)) * 0.30103
-        theta = atan2(s, c).evalf(max(15, int(digits) + 1))
+        prec = min(f._prec for f in R.atoms(Float))
+        # the floats' digits and one guard digit (16 for double precision, as before)
+        theta = atan2(s, c).evalf(max(15, prec_to_dps(prec) + 1))
     else:
         theta = acos(c)
     if half_turn:
@@ -241,7 +243,7 @@ def log6(T: Any) -> tuple[Twist, Expr]:
     cot_half = (1 + c) / s if floats and c > 0 else s / (1 - c)
     r = p_perp / 2 + (cot_half / 2) * omega.cross(p)
     h = along / theta
-    v = r.cross(omega) + h * omega
+    v = dual_part(r, omega, h)
     return Twist(omega, v.applyfunc(_expand_number)), theta
 
 

@@ -34,18 +34,18 @@ from __future__ import annotations
 
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, cos, sin, sqrt, trigsimp, zeros
+from sympy import Expr, ImmutableMatrix, S, cos, sin, sqrt, trigsimp, zeros
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_instance,
     check_matrix,
     check_point_or_direction,
-    check_rotation,
     check_scalar,
     check_vector,
 )
-from ..core.decide import is_zero_vector
+from ..core.decide import is_zero, is_zero_scaled, is_zero_vector
+from ..core.formulas import moved
 from ..core.screw import Screw
 from ..core.tidy import tidy
 
@@ -68,6 +68,79 @@ def skew(v: VectorLike) -> ImmutableMatrix:
     return ImmutableMatrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
 
 
+#: symbolic entries larger than this (``count_ops``) are not put through the
+#: exact decision of :func:`check_rotation`; they are accepted undecided
+ROTATION_CHECK_OPS = 400
+
+
+def _decide_small(expr: Expr) -> bool | None:
+    """Zero-decision for an entry of size 1: of ``R^T R - I``, or of a 4x4 last row minus ``[0, 0, 0, 1]``.
+
+    Numbers follow the float policy (:func:`screwsym.core.decide.is_zero_scaled`
+    with scale 1: exact for exact numbers); symbolic entries up to
+    ``ROTATION_CHECK_OPS`` operations are decided exactly, larger ones not at all.
+    """
+    if expr.is_number:
+        return is_zero_scaled(expr, S.One)
+    if expr.count_ops() > ROTATION_CHECK_OPS:
+        return None
+    return is_zero(expr)
+
+
+def check_rotation(value: Any, name: str) -> ImmutableMatrix:
+    """Return ``value`` as a 3x3 rotation matrix, refusing a provably improper one.
+
+    A rotation satisfies ``R^T R = I`` and ``det R = 1``.  Only a provable
+    violation raises: entries that are numbers are decided exactly (floats by
+    the float policy of :func:`screwsym.core.decide.is_zero_scaled`), symbolic
+    entries with the exact decision of
+    :func:`screwsym.core.decide.is_zero` when they are no larger than
+    ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
+
+    >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
+    (3, 3)
+    >>> check_rotation([[1, 0, 0], [0, 1, 0], [0, 0, -1]], "R")
+    Traceback (most recent call last):
+    ...
+    ValueError: R: expected a rotation (det R = 1), got det R = -1
+    >>> check_rotation([[1, 1, 0], [0, 1, 0], [0, 0, 1]], "R")
+    Traceback (most recent call last):
+    ...
+    ValueError: R: expected an orthonormal matrix (R^T R = I), got R^T R - I = Matrix([[0, 1, 0], [1, 1, 0], [0, 0, 0]])
+    """
+    R = check_matrix(value, name, (3, 3))
+    gram = R.T * R - ImmutableMatrix.eye(3)
+    if any(_decide_small(e) is False for e in gram):
+        raise ValueError(
+            f"{name}: expected an orthonormal matrix (R^T R = I), got R^T R - I = "
+            f"Matrix({gram.tolist()})"
+        )
+    # R^T R = I leaves det R = +-1; the sign is decided for numeric entries only
+    det = R.det(method="berkowitz") if all(e.is_number for e in R) else None
+    if det is not None and _decide_small(det - 1) is False:
+        raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
+    return R
+
+
+def rodrigues(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One) -> ImmutableMatrix:
+    r"""Rodrigues' formula: the rotation ``exp([omega]x theta)`` by ``w theta`` about ``omega``.
+
+    ``R = I + sin(w theta)/w K + (1 - cos(w theta))/w^2 K^2`` with ``K = [omega]x``
+    and ``w = |omega|``, which the caller passes (the default 1: a unit
+    ``omega``, ``R = I + sin(theta) K + (1 - cos(theta)) K^2``).  It is the
+    rotation part of the finite screw displacement of a twist (1.48)-(1.53).
+
+    >>> from sympy import pi
+    >>> rodrigues(ImmutableMatrix([0, 0, 1]), pi/2)
+    Matrix([
+    [0, -1, 0],
+    [1,  0, 0],
+    [0,  0, 1]])
+    """
+    K = skew(omega)
+    return ImmutableMatrix.eye(3) + (sin(w * theta) / w) * K + ((1 - cos(w * theta)) / w**2) * (K * K)
+
+
 def _tidy(e: Expr) -> Expr:
     """``trigsimp`` where there is trigonometry (``sin^2 + cos^2``), else the entry itself."""
     return trigsimp(e) if e.has(sin, cos) else e
@@ -82,7 +155,7 @@ class Transform(ScrewsymBasic):
     ``args == (R, p)``: ``R`` a 3x3 rotation, ``p`` a 3x1 translation, both
     ``ImmutableMatrix``.  A rotation part that is provably not orthonormal
     with determinant 1 is refused (see
-    :func:`screwsym.core.checks.check_rotation`: exact for numbers, exact for
+    :func:`check_rotation`: exact for numbers, exact for
     small symbolic entries, undecided large symbolic entries are accepted).
     Composition is ``T1 @ T2`` (first ``T2``, then ``T1``), as for the 4x4
     matrices.
@@ -181,9 +254,7 @@ class Transform(ScrewsymBasic):
         angle = check_scalar(angle, "angle")
         if is_zero_vector(direction) is True:
             raise ValueError(f"direction: expected a non-zero direction, got {list(direction)}")
-        n = sqrt(direction.dot(direction))
-        K = skew(direction / n)
-        R = ImmutableMatrix.eye(3) + sin(angle) * K + (1 - cos(angle)) * (K * K)
+        R = rodrigues(direction / sqrt(direction.dot(direction)), angle)
         R = R.applyfunc(lambda e: e.expand() if e.is_number else e)
         if point is None:
             return cls._new(R, zeros(3, 1))
@@ -195,7 +266,11 @@ class Transform(ScrewsymBasic):
         """The transform of the 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
 
         Errors name the argument ``name`` (as :meth:`Screw.from_matrix
-        <screwsym.core.screw.Screw.from_matrix>`'s do).
+        <screwsym.core.screw.Screw.from_matrix>`'s do).  As for the rotation
+        part, only a provably wrong last row raises: exact entries are decided
+        exactly, floats by the float policy of
+        :func:`screwsym.core.decide.is_zero_scaled` (entries of size 1), and an
+        entry the symbols leave undecided is accepted.
 
         >>> Transform.from_matrix([[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]])
         Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[5, 0, 0])
@@ -206,7 +281,7 @@ class Transform(ScrewsymBasic):
         """
         M = check_matrix(M, name, (4, 4))
         last = list(M[3, :])
-        if any((e - target).is_zero is not True for e, target in zip(last, (0, 0, 0, 1), strict=True)):
+        if any(_decide_small(e - target) is False for e, target in zip(last, (0, 0, 0, 1), strict=True)):
             raise ValueError(f"{name}: expected the last row [0, 0, 0, 1], got {last}")
         return cls._new(check_rotation(M[:3, :3], f"{name}[:3, :3]"), M[:3, 3])
 
@@ -325,9 +400,7 @@ class Transform(ScrewsymBasic):
         if isinstance(obj, Transform):
             return self @ obj
         if isinstance(obj, Screw):
-            S = self.R * obj.S
-            S0 = self.R * obj.S0 + self.p.cross(S)
-            return tidy(type(obj)(S, S0))
+            return tidy(type(obj)(*moved(self.R, self.p, obj.S, obj.S0)))
         x = check_point_or_direction(obj, "obj")
         return ImmutableMatrix(self.R * x) if direction else ImmutableMatrix(self.R * x + self.p)
 
@@ -410,6 +483,7 @@ def adjoint_matrix(T: Transform) -> ImmutableMatrix:
     True
     """
     check_instance(T, "T", Transform)
-    top = T.R.row_join(zeros(3, 3))
-    bottom = (skew(T.p) * T.R).row_join(T.R)
-    return ImmutableMatrix(top.col_join(bottom))
+    # column j is the action (:func:`screwsym.core.formulas.moved`) on the j-th unit 6-vector
+    e = ImmutableMatrix.eye(6)
+    columns = [ImmutableMatrix.vstack(*moved(T.R, T.p, e[:3, j], e[3:, j])) for j in range(6)]
+    return ImmutableMatrix.hstack(*columns)

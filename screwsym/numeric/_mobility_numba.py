@@ -11,6 +11,8 @@ end is asked for (``pip install "screwsym[fast]"``).
 
 import numpy as np
 
+from ..core.formulas import SWAP
+
 try:
     import numba
 except ImportError:  # pragma: no cover - numba is optional; lambdify refuses "numba" first
@@ -92,9 +94,8 @@ def analyse_loop(T, offsets, rtol, ranks, counts, sigma):  # pragma: no cover - 
                 for q in range(6):
                     norm += T[item, q, a + c] * T[item, q, a + c]
                 norm = np.sqrt(norm) if norm > 0 else 1.0
-                for q in range(3):
-                    C[c, q] = T[item, q + 3, a + c] / norm
-                    C[c, q + 3] = T[item, q, a + c] / norm
+                for q in range(6):
+                    C[c, q] = T[item, SWAP[q], a + c] / norm
             kk = min(b - a, 6)
             rd = np.zeros(kk)
             Qt = np.eye(6)

@@ -46,6 +46,7 @@ from sympy import ImmutableMatrix
 
 from ..codegen import lambdify
 from ..core.checks import check_positive_float
+from ..core.formulas import SWAP
 from ..systems.mechanism import ParallelMechanism
 
 __all__ = ["MobilityMap", "mobility_map"]
@@ -192,15 +193,12 @@ def _rank(rdiag: np.ndarray, rtol: float) -> np.ndarray:
     return np.sum(rdiag > rtol * rdiag[:1], axis=0)
 
 
-_SWAP = np.r_[3:6, 0:3]
-
-
 def _analyse_numpy(T: np.ndarray, offsets: tuple, rtol: float):
     """``T`` ``(N, 6, M)``: every limb's twists side by side, limb i in columns offsets[i:i+2]."""
     N = T.shape[0]
     k = len(offsets) - 1
     norms = np.sqrt(np.einsum("nqm,nqm->mn", T, T))
-    rows = np.transpose(T, (2, 1, 0))[:, _SWAP, :] / np.where(norms == 0, 1.0, norms)[:, None, :]
+    rows = np.transpose(T, (2, 1, 0))[:, SWAP, :] / np.where(norms == 0, 1.0, norms)[:, None, :]
     nulls, counts = [], []
     for i in range(k):
         rdiag, Qt = _qrcp(rows[offsets[i]:offsets[i + 1]], True)

@@ -49,12 +49,14 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-from sympy import Basic, ImmutableMatrix
+from sympy import Abs, Basic, ImmutableMatrix
 from sympy.matrices import MatrixBase
 
-from ..core.checks import check_no_strings, check_screw, check_vector
-from ..core.line import LineVector, common_normal
-from ..core.screw import Screw
+from ..core.checks import check_no_strings, check_vector
+from ..core.decide import is_zero_scaled
+from ..core.formulas import foot_point, pitch_ratio
+from ..core.line import LineVector, common_normal, contains
+from ..core.screw import Screw, check_screw
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 
@@ -111,10 +113,12 @@ def _numeric(value: Basic, subs: dict, name: str) -> Basic:
 def _floats(m: ImmutableMatrix, name: str) -> np.ndarray:
     out = []
     for e in m:
-        z = complex(e.evalf())
-        if abs(z.imag) > 1e-12 * max(1.0, abs(z.real)):
+        z = e.evalf()
+        re, im = z.as_real_imag()
+        # the float policy (screwsym.core.decide): an imaginary part within rounding of |z|
+        if is_zero_scaled(im, Abs(z)) is False:
             raise ValueError(f"{name}: expected real components, got {e}")
-        out.append(z.real)
+        out.append(float(re))
     return np.array(out, dtype=float)
 
 
@@ -333,13 +337,17 @@ def _draw_foot(ax, P: np.ndarray, color: str, show_perpendicular: bool) -> None:
         _polyline(ax, np.zeros((1, 3)), "origin", color="black", marker="o", ms=3, ls="none")
 
 
-def _anchor(at: Any, subs: dict, s: Screw, P: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """The point on the axis where the arrow starts: the foot, or ``at`` if it is on it."""
+def _anchor(at: Any, subs: dict, s: Screw, P: np.ndarray) -> np.ndarray:
+    """The point on the axis where the arrow starts: the foot, or ``at`` if it is on it.
+
+    ``at`` is on the axis unless :func:`screwsym.core.line.contains` (the float policy)
+    says it is not.
+    """
     if at is None:
         return P
-    a = _point(at, subs, "at")
-    off = (a - P) - np.dot(a - P, u) * u
-    if _norm(off) > 1e-9 * max(1.0, _norm(a), _norm(P)):
+    point = _numeric(check_vector(at, "at"), subs, "at")
+    a = _floats(point, "at")
+    if contains(s, point) is False:
         raise ValueError(f"at: the point {list(a)} is not on the axis of {s}")
     return a
 
@@ -401,9 +409,9 @@ def plot_line(line: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
     subs = _check_subs(subs)
     ax = _axes(ax)
     s, S, S0 = _screw_floats(line, subs, "line", LineVector)
-    P = np.cross(S, S0) / np.dot(S, S)
+    P = foot_point(S, S0)
     u = S / _norm(S)
-    a = _anchor(at, subs, s, P, u)
+    a = _anchor(at, subs, s, P)
     length, glyph = _sizes(length, S, a)
     _draw_axis_line(ax, a, u, _norm(S), length, color)
     _arrow(ax, a, S, color, head=glyph)
@@ -419,10 +427,10 @@ def _axis_glyph(ax, s: Screw, S: np.ndarray, S0: np.ndarray, subs: dict, at: Any
                 length: float | None, color: str, *, moment_arrow: bool,
                 curl: bool) -> tuple[np.ndarray, np.ndarray, float]:
     """Axis, arrow ``S``, pitch helix and optional couple arrow / curl; returns anchor."""
-    h = float(np.dot(S, S0) / np.dot(S, S))
-    P = np.cross(S, S0) / np.dot(S, S)
+    h = float(pitch_ratio(S, S0))
+    P = foot_point(S, S0)
     u = S / _norm(S)
-    a = _anchor(at, subs, s, P, u)
+    a = _anchor(at, subs, s, P)
     length, glyph = _sizes(length, S, a)
     _draw_axis_line(ax, a, u, _norm(S), length, color)
     _arrow(ax, a, S, color, head=glyph)

@@ -57,9 +57,10 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyutils import parallel_dict_from_expr
 
 from ..core.basic import ScrewsymBasic
-from ..core.checks import check_count, check_screw, check_screw_system_members
+from ..core.checks import check_count, check_exact
 from ..core.decide import is_zero
-from ..core.screw import Screw
+from ..core.formulas import SWAP
+from ..core.screw import Screw, check_screw
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 
@@ -79,6 +80,46 @@ def _kind_of(system) -> type | None:
 _DUAL_KIND = {Twist: Wrench, Wrench: Twist, Screw: Screw}
 #: the class a system holds, by the members' ``_kind``
 _KINDS = {None: Screw, Twist._kind: Twist, Wrench._kind: Wrench}
+
+
+def check_screw_system_members(values: Any, name: str, kinds: dict) -> tuple:
+    """Return ``values`` as a tuple of screws of one kind: all twists, all wrenches or screws.
+
+    ``kinds`` maps a screw class's ``_kind`` to the class a system of that
+    kind holds, ``None`` to the root class (screws and line vectors, which
+    mix).  Screw objects are passed through; 6-vectors (S; S0) become the
+    kind of the screw objects among them, plain screws if there are none.
+    Floats are refused: a screw system decides ranks exactly.
+
+    >>> from screwsym import Screw, Twist, Wrench
+    >>> from screwsym.systems.screw_system import check_screw_system_members
+    >>> kinds = {None: Screw, "twist": Twist, "wrench": Wrench}
+    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0])], "screws", kinds)
+    (Twist([1, 0, 0], [0, 0, 0]),)
+    >>> check_screw_system_members([Twist([1, 0, 0], [0, 0, 0]),
+    ...                             Wrench([1, 0, 0], [0, 0, 0])], "screws", kinds)
+    Traceback (most recent call last):
+    ...
+    TypeError: screws: expected screws of one kind, got Twist and Wrench
+    """
+    root = kinds[None]
+    values = tuple(values)
+    found: list = []
+    for v in values:
+        if isinstance(v, root):
+            k = v._kind if v._kind in kinds else None
+            if k not in found:
+                found.append(k)
+    if len(found) > 1:
+        raise TypeError(
+            f"{name}: expected screws of one kind, got "
+            f"{' and '.join(kinds[k].__name__ for k in found)}"
+        )
+    cls = kinds[found[0]] if found else root
+    screws = tuple(check_screw(v, f"{name}[{i}]", cls) for i, v in enumerate(values))
+    for i, s in enumerate(screws):
+        check_exact(s, f"{name}[{i}]")
+    return screws
 #: at most this many r x r minors are compared when choosing the one that states a case
 _MINOR_BUDGET = 64
 #: the default limit on the number of cases of ``rank_conditions``
@@ -532,8 +573,8 @@ def _det(rows, R):
 
 
 def _swap(col: tuple) -> tuple:
-    """A screw's row of ``(Delta A)^T``: its two halves swapped."""
-    return tuple(col[3:]) + tuple(col[:3])
+    """A screw's row of ``(Delta A)^T``: its two halves swapped (1.45), by the one ``SWAP``."""
+    return tuple(col[i] for i in SWAP)
 
 
 @dataclass(frozen=True)

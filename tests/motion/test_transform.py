@@ -15,8 +15,10 @@ from sympy import (
     Matrix,
     Rational,
     cancel,
+    cos,
     latex,
     pi,
+    sin,
     sqrt,
     symbols,
     trigsimp,
@@ -277,9 +279,29 @@ def test_a_symbolic_forward_kinematics_rotation_is_accepted():
     assert Transform.from_matrix(M).matrix == M
 
 
+def test_from_matrix_accepts_a_last_row_that_is_provably_0001():
+    # only a provable violation raises (the float policy of screwsym.core.decide), as for R
+    one = sin(t) ** 2 + cos(t) ** 2  # 1 for every real t, though not literally 1
+    M = [[1, 0, 0, 5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, one]]
+    assert Transform.from_matrix(M) == Transform.translation([5, 0, 0])
+
+
+def test_from_matrix_accepts_a_float_last_row_off_0001_by_rounding():
+    residue = [[1.0, 0, 0, 5], [0, 1.0, 0, 0], [0, 0, 1.0, 0], [1e-30, 0, 0, 1.0]]
+    assert Transform.from_matrix(residue).p.T == ImmutableMatrix([[5, 0, 0]])
+
+
+def test_from_matrix_refuses_a_provably_wrong_last_row():
+    y = symbols("y", real=True)
+    for last in ([0, 0, 0, 2], [0, 0, 0, y**2 + 2], [0, 0, 1e-3, 1.0], [0, 0, 0, 1 + 1e-9]):
+        M = ImmutableMatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], last])
+        with pytest.raises(ValueError, match=r"T: expected the last row \[0, 0, 0, 1\]"):
+            Transform.from_matrix(M, name="T")
+
+
 def test_entries_beyond_the_size_limit_are_not_decided(monkeypatch):
     """Beyond ROTATION_CHECK_OPS a symbolic entry is accepted undecided (documented)."""
-    import screwsym.core.checks as validation
+    import screwsym.motion.transform as validation
 
     y = symbols("y", positive=True)
     wrong = [[1, 2 * y, 0], [0, 1, 0], [0, 0, 1]]  # (R^T R)[0, 1] = 2 y != 0: provably wrong

@@ -114,6 +114,29 @@ def test_line_arrow_can_start_at_a_given_point_of_the_line():
         plot_line(L, at=[0, 1, 1])
 
 
+def test_a_point_off_the_line_is_refused_however_small_the_offset_in_absolute_terms():
+    # the float policy (relative to the sizes involved), not an absolute tolerance: a point
+    # 1e-10 off the x axis is off it (the old test accepted anything within 1e-9)
+    L = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    with pytest.raises(ValueError, match=r"at: the point .* is not on the axis"):
+        plot_line(L, at=[0, 1e-10, 0])
+    tiny = LineVector.from_axis([0, 0, 0], [1e-6, 0, 0])
+    with pytest.raises(ValueError, match=r"at: the point .* is not on the axis"):
+        plot_line(tiny, at=[0, 1e-10, 0])
+    plot_line(L, at=[2.5, 1e-17, 0])  # on the axis up to rounding
+    plt.close("all")
+
+
+def test_an_imaginary_component_is_refused_however_small():
+    # a purely imaginary 1e-15 i is not a real number up to rounding (the old test accepted
+    # an imaginary part up to 1e-12 absolute)
+    x = symbols("x", nonnegative=True)
+    L = LineVector.from_axis([0, 0, 0], [1, 0, 0])
+    with pytest.raises(ValueError, match=r"at: expected real components"):
+        plot_line(L, at=[Rational(1, 10**15) * sqrt(x), 0, 0], subs={x: -1})
+    plt.close("all")
+
+
 def test_pictures_accumulate_in_one_axes():
     ax = plot_frame()
     plot_line(LineVector.from_axis([0, 0, 0], [1, 0, 0]), ax)
