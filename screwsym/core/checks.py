@@ -12,7 +12,7 @@ Strings are never evaluated: components go through
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol, TypeVar
 
 import numpy as np
 from sympy import Basic, Expr, Float, ImmutableMatrix, S
@@ -20,6 +20,21 @@ from sympy.core.sympify import SympifyError, sympify
 from sympy.matrices import MatrixBase
 
 from .decide import is_real_where_defined, is_zero, is_zero_scaled, is_zero_vector, norm
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
+
+    class _ScrewKind(Protocol):
+        """What :func:`check_screw` uses of a screw class (``screwsym.core.screw.Screw``,
+        which this module cannot import: that module imports this one)."""
+
+        _root: ClassVar[type[Any]]
+        _kind: ClassVar[str | None]
+
+        @classmethod
+        def _rebuild(cls, S: ImmutableMatrix, S0: ImmutableMatrix, name: str) -> Self: ...
+
+    _K = TypeVar("_K", bound=_ScrewKind)
 
 __all__ = [
     "check_no_strings",
@@ -34,7 +49,7 @@ __all__ = [
 
 def _describe(value: Any) -> str:
     """A short description of ``value`` for error messages."""
-    shape = getattr(value, "shape", None)
+    shape: Any = getattr(value, "shape", None)
     if shape is not None and not isinstance(value, Basic) or isinstance(value, MatrixBase):
         return f"{type(value).__name__} of shape {tuple(shape)}"
     text = " ".join(repr(value).split())
@@ -216,7 +231,7 @@ def check_name(value: Any, name: str) -> str:
     return value
 
 
-def check_screw(value: Any, name: str, cls: type):
+def check_screw(value: Any, name: str, cls: type[_K]) -> _K:
     """Return ``value`` as a screw object, an instance of ``cls``.
 
     A screw object of class ``cls`` is passed through.  Another screw is
@@ -313,7 +328,7 @@ def check_matrix(value: Any, name: str, shape: tuple[int, int]) -> ImmutableMatr
             f"nested lists), got {_describe(value)}"
         )
     if isinstance(value, MatrixBase):
-        got = tuple(value.shape)
+        got: tuple[int, ...] | None = tuple(value.shape)
         rows = value.tolist()
     else:
         got = _shape_of(value)

@@ -7,11 +7,16 @@ A wrench is written in the book's ray order ``(f; C_O)``: the resultant force
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from sympy import Expr, ImmutableMatrix
 
 from .checks import check_flag, check_nonzero_vector, check_screw, check_vector
-from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
+from .screw import ScalarLike, Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin
 from .twist import Twist
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["Wrench", "power"]
 
@@ -41,6 +46,15 @@ class Wrench(Screw):
     _part_names = ("f", "C_O")
     _kind = "wrench"
 
+    if TYPE_CHECKING:
+        # a wrench's algebra closes: a sum with another screw, a multiple and a quotient are
+        # a wrench (Screw.__add__ and __mul__ keep the kind of the operand that has one)
+        def __add__(self, other: Screw) -> Self: ...
+        def __sub__(self, other: Screw) -> Self: ...
+        def __mul__(self, k: ScalarLike) -> Self: ...
+        def __rmul__(self, k: ScalarLike) -> Self: ...
+        def __truediv__(self, k: ScalarLike) -> Self: ...
+
     @property
     def f(self) -> ImmutableMatrix:
         """The resultant force (the primary part)."""
@@ -52,7 +66,7 @@ class Wrench(Screw):
         return self.S0
 
     @classmethod
-    def force(cls, f: VectorLike, *, point: VectorLike) -> Wrench:
+    def force(cls, f: VectorLike, *, point: VectorLike) -> Self:
         r"""The force ``f`` acting along the line through ``point``: ``(f; r x f)`` (1.55).
 
         A zero force has no line of action and raises ``ValueError``.
