@@ -70,11 +70,11 @@ class ScrewsymBasic(Basic):
         check_no_strings((expr, args, _values(kwargs)), "matches")
         return super().matches(expr, *args, **kwargs)
 
-    def diff(self, *symbols: Any, **kwargs: Any) -> ScrewsymBasic:
+    def diff(self, *symbols: Any, **kwargs: Any) -> Basic:
         check_no_strings((symbols, _values(kwargs)), "diff")
         return self._eval_diff_parts(*symbols, **kwargs)
 
-    def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> ScrewsymBasic:
+    def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> Basic:
         """Differentiate ``args`` one by one; subclasses override for their own result class."""
         return self.func(*(a.diff(*symbols, **kwargs) for a in self.args))
 

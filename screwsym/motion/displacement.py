@@ -25,8 +25,6 @@ Lynch & Park, *Modern Robotics*, Cambridge 2017, Section 3.3.3 (Proposition 3.25
 
 from __future__ import annotations
 
-from typing import Any
-
 from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, cos, pi, sin, sqrt, zeros
 
 from ..core.checks import check_instance, check_scalar, check_screw
@@ -38,6 +36,7 @@ from ..core.decide import (
     is_zero_vector_scaled,
     norm,
 )
+from ..core.screw import ScalarLike, ScrewLike
 from ..core.tidy import tidy
 from ..core.twist import Twist
 from .transform import Transform, skew
@@ -45,7 +44,7 @@ from .transform import Transform, skew
 __all__ = ["exp6", "log6", "se3_matrix"]
 
 
-def se3_matrix(twist: Any) -> ImmutableMatrix:
+def se3_matrix(twist: ScrewLike) -> ImmutableMatrix:
     r"""The 4x4 matrix ``[[[omega]x, v_O], [0, 0]]`` of a twist (an element of se(3)).
 
     ``d/dt exp6($, t) = [$] exp6($, t)``.
@@ -64,7 +63,7 @@ def se3_matrix(twist: Any) -> ImmutableMatrix:
     return ImmutableMatrix(top.col_join(zeros(1, 4)))
 
 
-def exp6(twist: Any, theta: Any) -> Transform:
+def exp6(twist: ScrewLike, theta: ScalarLike) -> Transform:
     r"""The finite screw displacement ``exp([$] theta)`` of a twist: a :class:`Transform`.
 
     Explanation
@@ -156,7 +155,7 @@ def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
     return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s
 
 
-def log6(T: Any) -> tuple[Twist, Expr]:
+def log6(T: Transform) -> tuple[Twist, Expr]:
     r"""The screw of a rigid motion (Mozzi-Chasles): a unit twist and an angle.
 
     Explanation
