@@ -45,18 +45,21 @@ imported only when a function here is called.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
-from typing import Any
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeAlias
 
 import numpy as np
 from sympy import Basic, ImmutableMatrix
 from sympy.matrices import MatrixBase
 
 from ..core.checks import check_no_strings, check_screw, check_vector
-from ..core.line import LineVector, common_normal
-from ..core.screw import Screw
+from ..core.line import LineLike, LineVector, common_normal
+from ..core.screw import Screw, ScrewLike, VectorLike
 from ..core.twist import Twist
 from ..core.wrench import Wrench
+
+if TYPE_CHECKING:
+    from mpl_toolkits.mplot3d import Axes3D
 
 __all__ = [
     "plot",
@@ -71,7 +74,7 @@ __all__ = [
     "helix_advance",
 ]
 
-Subs = Mapping[Any, Any] | None
+Subs: TypeAlias = Mapping[Any, Any] | None
 
 TWIST_COLOR = "tab:green"
 WRENCH_COLOR = "tab:red"
@@ -118,7 +121,8 @@ def _floats(m: ImmutableMatrix, name: str) -> np.ndarray:
     return np.array(out, dtype=float)
 
 
-def _screw_floats(obj: Any, subs: dict, name: str, cls: type = Screw):
+def _screw_floats(obj: Any, subs: dict, name: str,
+                  cls: type[Screw] = Screw) -> tuple[Screw, np.ndarray, np.ndarray]:
     """Return the screw (after ``subs``) and its two parts as float arrays."""
     s = check_screw(obj, name, cls)
     s = _numeric(s, subs, name)
@@ -182,7 +186,7 @@ def _mpl():
     return plt
 
 
-def _axes(ax: Any):
+def _axes(ax: Axes3D | None) -> Axes3D:
     plt = _mpl()
     if ax is None:
         fig = plt.figure(figsize=(6, 5))
@@ -199,7 +203,7 @@ def _gid(kind: str) -> str:
     return f"screwsym.{kind}"
 
 
-def find_artists(ax: Any, kind: str) -> list:
+def find_artists(ax: Axes3D, kind: str) -> list[Any]:
     """The artists of one kind that screwsym drew into ``ax``.
 
     ``kind`` is one of ``line``, ``arrow``, ``head``, ``foot``, ``origin``,
@@ -349,9 +353,10 @@ def _anchor(at: Any, subs: dict, s: Screw, P: np.ndarray, u: np.ndarray) -> np.n
 # --------------------------------------------------------------------------
 
 
-def plot_line(line: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_line(line: LineLike, ax: Axes3D | None = None, *, subs: Subs = None,
+              at: VectorLike | None = None,
               length: float | None = None, color: str = SCREW_COLOR, label: str | None = None,
-              show_foot: bool = True):
+              show_foot: bool = True) -> Axes3D:
     r"""Draw a line vector ``(S; S0)``: its line, the arrow ``S`` and the foot point (1.16).
 
     Explanation
@@ -439,9 +444,10 @@ def _axis_glyph(ax, s: Screw, S: np.ndarray, S0: np.ndarray, subs: dict, at: Any
     return a, u, h
 
 
-def plot_screw(screw: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_screw(screw: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+               at: VectorLike | None = None,
                length: float | None = None, color: str = SCREW_COLOR,
-               label: str | None = None):
+               label: str | None = None) -> Axes3D:
     r"""Draw a screw: its axis (1.36), the arrow ``S`` and the pitch helix.
 
     Explanation
@@ -500,8 +506,9 @@ def _fmt(x: float) -> str:
     return f"{x:.3g}"
 
 
-def plot_couple(couple: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
-                color: str = WRENCH_COLOR, label: str | None = None):
+def plot_couple(couple: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+                at: VectorLike | None = None,
+                color: str = WRENCH_COLOR, label: str | None = None) -> Axes3D:
     r"""Draw a couple ``(0; C)`` as a free vector: a double-headed arrow and a curled arrow.
 
     Explanation
@@ -549,9 +556,10 @@ def plot_couple(couple: Any, ax: Any = None, *, subs: Subs = None, at: Any = Non
     return ax
 
 
-def plot_twist(twist: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_twist(twist: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+               at: VectorLike | None = None,
                length: float | None = None, color: str = TWIST_COLOR,
-               label: str | None = None):
+               label: str | None = None) -> Axes3D:
     r"""Draw a twist ``(omega; v_O)``: axis, ``omega``, sense of rotation and pitch helix.
 
     Explanation
@@ -605,9 +613,10 @@ def plot_twist(twist: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
     return ax
 
 
-def plot_wrench(wrench: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_wrench(wrench: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+                at: VectorLike | None = None,
                 length: float | None = None, color: str = WRENCH_COLOR,
-                label: str | None = None):
+                label: str | None = None) -> Axes3D:
     r"""Draw a wrench ``(f; C_O)``: the force on its axis, the parallel couple and the helix.
 
     Explanation
@@ -653,8 +662,9 @@ def plot_wrench(wrench: Any, ax: Any = None, *, subs: Subs = None, at: Any = Non
     return ax
 
 
-def plot_common_normal(l1: Any, l2: Any, ax: Any = None, *, subs: Subs = None,
-                       length: float | None = None, colors: tuple[str, str] = ("C0", "C1")):
+def plot_common_normal(l1: LineLike, l2: LineLike, ax: Axes3D | None = None, *,
+                       subs: Subs = None, length: float | None = None,
+                       colors: tuple[str, str] = ("C0", "C1")) -> Axes3D:
     r"""Draw two lines, their common normal and the twist angle (Fig. 1.3).
 
     Explanation
@@ -731,7 +741,8 @@ def plot_common_normal(l1: Any, l2: Any, ax: Any = None, *, subs: Subs = None,
     return ax
 
 
-def plot_frame(ax: Any = None, *, length: float = 1.0, origin: Any = (0, 0, 0)):
+def plot_frame(ax: Axes3D | None = None, *, length: float = 1.0,
+               origin: VectorLike = (0, 0, 0)) -> Axes3D:
     """Draw the coordinate frame: gray arrows x, y, z from the origin O.
 
     Examples
@@ -759,7 +770,7 @@ def plot_frame(ax: Any = None, *, length: float = 1.0, origin: Any = (0, 0, 0)):
     return ax
 
 
-def plot(obj: Any, ax: Any = None, **kw: Any):
+def plot(obj: Screw | Sequence[Any], ax: Axes3D | None = None, **kw: Any) -> Axes3D:
     r"""Draw any screwsym object with its own glyph; a list or tuple draws each item.
 
     Dispatch: :class:`~screwsym.core.twist.Twist` to :func:`plot_twist`,
