@@ -12,12 +12,31 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from sympy import Basic
-
 from .checks import check_no_strings
 
 if TYPE_CHECKING:
     from typing_extensions import Self
+
+    class Basic:
+        """What a type checker sees of ``sympy.Basic``: SymPy ships no types.
+
+        Were the base the untyped ``sympy.Basic`` itself (Any to mypy), every screwsym
+        object would pass for every type: ``2 * twist`` would be an int, and
+        ``x: int = Screw(...)`` accepted.  This declares what screwsym uses and leaves
+        any other attribute Any.
+        """
+
+        args: tuple[Any, ...]
+        free_symbols: set[Any]
+
+        def __new__(cls, *args: Any) -> Self: ...
+        def __getattr__(self, name: str) -> Any: ...
+        def subs(self, *args: Any, **kwargs: Any) -> Any: ...
+        def xreplace(self, rule: Any, *args: Any, **kwargs: Any) -> Any: ...
+        def match(self, pattern: Any, *args: Any, **kwargs: Any) -> dict[Any, Any] | None: ...
+        def matches(self, expr: Any, *args: Any, **kwargs: Any) -> dict[Any, Any] | None: ...
+else:
+    from sympy import Basic
 
 __all__ = ["ScrewsymBasic"]
 
@@ -42,11 +61,6 @@ class ScrewsymBasic(Basic):
     """
 
     __slots__ = ()
-
-    if TYPE_CHECKING:
-        # SymPy is untyped (Any to mypy), which hides Basic.__new__ from mypy behind
-        # object.__new__; the subclasses build through Basic.__new__(cls, *args)
-        def __new__(cls, *args: Any) -> Self: ...
 
     # subs and xreplace give Any: a rule may replace the object itself (``s.subs(s, 0)``)
     def subs(self, *args: Any, **kwargs: Any) -> Any:

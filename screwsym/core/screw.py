@@ -151,7 +151,7 @@ class Screw(ScrewsymBasic):
     #: names of the two parts, used in error messages and printing
     _part_names: tuple[str, str] = ("S", "S0")
     #: the kind of a screw that may not mix with other kinds ("twist", "wrench"), or None
-    _kind: str | None = None
+    _kind: ClassVar[str | None] = None
     #: the class of a linear combination (sum, zero multiple, derivative); None: the class itself
     _combination: type[Screw] | None = None
     #: the class of the axis line of a decomposition, declared by ``line_of=`` below
@@ -420,7 +420,10 @@ class Screw(ScrewsymBasic):
         cls = self._combination_class() if is_zero(k) is True else type(self)
         return cls(k * self.S, k * self.S0)
 
-    __rmul__ = __mul__
+    if TYPE_CHECKING:
+        def __rmul__(self, k: ScalarLike) -> Screw: ...
+    else:
+        __rmul__ = __mul__
 
     def __truediv__(self, k: ScalarLike) -> Screw:
         return self * (S.One / check_scalar(k, "k", nonzero=True))

@@ -7,7 +7,7 @@ momentarily coincides with the origin O (1.51, 1.53).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, ClassVar
 
 from sympy import ImmutableMatrix, zeros
 
@@ -45,7 +45,7 @@ class Twist(Screw):
 
     __slots__ = ()
     _part_names = ("omega", "v_O")
-    _kind = "twist"
+    _kind: ClassVar[str | None] = "twist"
 
     if TYPE_CHECKING:
         # a twist's algebra closes: a sum with another screw, a multiple and a quotient are

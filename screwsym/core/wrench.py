@@ -7,7 +7,7 @@ A wrench is written in the book's ray order ``(f; C_O)``: the resultant force
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, ClassVar
 
 from sympy import Expr, ImmutableMatrix
 
@@ -44,7 +44,7 @@ class Wrench(Screw):
 
     __slots__ = ()
     _part_names = ("f", "C_O")
-    _kind = "wrench"
+    _kind: ClassVar[str | None] = "wrench"
 
     if TYPE_CHECKING:
         # a wrench's algebra closes: a sum with another screw, a multiple and a quotient are
