@@ -735,8 +735,8 @@ def plot_common_normal(l1: LineLike, l2: LineLike, ax: Axes3D | None = None, *,
     text = (f"$a_{{12}}$ = {_fmt(a12)}, $\\alpha_{{12}}$ = {alpha:.4g} rad "
             f"({math.degrees(alpha):.4g}°)")
     # in the corner of the axes, where it cannot cover the lines, the normal or the axis labels
-    t = ax.text2D(0.02, 0.98, text, transform=ax.transAxes, va="top", fontsize=9)
-    t.set_gid(_gid("label"))
+    caption = ax.text2D(0.02, 0.98, text, transform=ax.transAxes, va="top", fontsize=9)
+    caption.set_gid(_gid("label"))
     _fit(ax)
     return ax
 
