@@ -31,7 +31,7 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Chapter 1.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union
+from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union, overload
 
 import numpy as np
 from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
@@ -756,6 +756,12 @@ def _unit(s: _S, name: str | None = None, tidy: bool = True) -> _S:
     return _finish(type(s)(s.S / n, s.S0 / n), tidy)
 
 
+@overload
+def unit(s: _S, *, tidy: bool = True) -> _S: ...
+@overload
+def unit(s: SixVectorLike, *, tidy: bool = True) -> Screw: ...
+
+
 def unit(s: ScrewLike, *, tidy: bool = True) -> Screw:
     r"""The unit screw: ``$ / |S|``, or ``$ / |S0|`` for a couple (1.5, Example 1.3).
 
@@ -842,6 +848,12 @@ def _shift_origin(s: _S, A: ImmutableMatrix, tidy: bool = True) -> _S:
     if tidy:
         return _known(type(s), s.S, _finish(s.S0 - A.cross(s.S)))
     return type(s)(s.S, s.S0 - A.cross(s.S))
+
+
+@overload
+def shift_origin(s: _S, A: VectorLike, *, tidy: bool = True) -> _S: ...
+@overload
+def shift_origin(s: SixVectorLike, A: VectorLike, *, tidy: bool = True) -> Screw: ...
 
 
 def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True) -> Screw:

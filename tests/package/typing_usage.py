@@ -25,7 +25,9 @@ from screwsym import (
     convert_from,
     exp6,
     pitch,
+    shift_origin,
     tidy,
+    unit,
 )
 from screwsym.core.screw import ScalarLike, ScrewLike, VectorLike
 
@@ -57,8 +59,10 @@ def usage() -> None:
     lines: Screw = line + line2
     shifted: LineVector = line.shift_origin([1, 2, 3])
     u: Twist = t.unit()
+    u2: Wrench = unit(w)
+    shifted2: Twist = shift_origin(t, [1, 0, 0])
     for value, cls in [(t_sum, Twist), (w_sum, Wrench), (lines, Screw),
-                       (shifted, LineVector), (u, Twist)]:
+                       (shifted, LineVector), (u, Twist), (u2, Wrench), (shifted2, Twist)]:
         _exactly(value, cls)
 
     # functions and properties
