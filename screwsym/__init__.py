@@ -13,6 +13,7 @@ Mechanisms* (Springer 2013); docstrings cite its equation numbers.
 """
 
 import importlib
+from typing import Any as _Any
 
 from ._version import __version__ as __version__
 from .core import (
@@ -117,7 +118,7 @@ def __dir__() -> list[str]:
     return sorted(set(globals()) | set(__all__) | set(_LAZY_MODULES) | {"lambdify"})
 
 
-def __getattr__(name: str):
+def __getattr__(name: str) -> _Any:
     if name in _LAZY_MODULES:
         return importlib.import_module(f".{name}", __name__)
     if name == "lambdify":

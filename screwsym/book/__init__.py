@@ -14,6 +14,10 @@ real symbols and verified by an exact decision procedure.
 (True, 0)
 """
 
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+
 from ._entry import KINDS, Check, CheckResult, Construction, Entry, Result, as_text
 from ._registry import entries, entry, ids
 from ._verify import Decision, decide_nonzero, decide_zero
@@ -47,7 +51,9 @@ def _verify_one(args: tuple[str, int]) -> Result:
     return entry(id_).verify(seed=seed)
 
 
-def verify_all(ids=None, *, seed: int = 0, progress=None, jobs: int = 1) -> list[Result]:
+def verify_all(ids: Iterable[str] | None = None, *, seed: int = 0,
+               progress: Callable[[int, int, Result], object] | None = None,
+               jobs: int = 1) -> list[Result]:
     """Verify the named entries (all by default), in order.
 
     ``progress(i, n, result)`` is called after each entry.  With ``jobs > 1``

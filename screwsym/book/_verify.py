@@ -246,7 +246,7 @@ def _guard(e: Expr, zero: bool, seed: int) -> bool:
     """Evaluate the original ``e`` at seeded rational points; agree with ``zero``?"""
     syms = _symbols(e)
     rng = random.Random(seed)
-    verdicts = []
+    verdicts: list[bool] = []
     tries = 0
     while len(verdicts) < GUARD_POINTS and tries < 12:
         tries += 1

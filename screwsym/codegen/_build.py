@@ -24,6 +24,7 @@ import threading
 from collections import OrderedDict
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -146,12 +147,14 @@ def _write_atomic(path: Path, data: bytes) -> None:
 # ------------------------------------------------------------------ finishing
 
 
-def _finish(fn: Callable, plan: Plan, doc: str) -> Callable:
-    """Give the generated ``_fn`` the user's names, as data on its code object."""
+def _finish(fn: Callable[..., Any], plan: Plan, doc: str) -> Any:
+    """Give the generated ``_fn`` the user's names, as data on its code object.
+
+    Returns the function (typed Any: the backends attach their own attributes to it)."""
     code = fn.__code__
     n = len(plan.specs)
     varnames = tuple(spec.name for spec in plan.specs) + code.co_varnames[n:]
-    changes = {"co_varnames": varnames, "co_name": plan.name}
+    changes: dict[str, Any] = {"co_varnames": varnames, "co_name": plan.name}
     if hasattr(code, "co_qualname"):
         changes["co_qualname"] = plan.name
     fn.__code__ = code.replace(**changes)
@@ -217,6 +220,7 @@ def _numba_module(plan: Plan, use_cse: bool):
         _write_atomic(path, _emit.numba_source(full, PY_HELPERS).encode())
         _prune(sub, ".py")
     spec = importlib.util.spec_from_file_location(modname, path)
+    assert spec is not None and spec.loader is not None, "a .py path always has a source loader"
     mod = importlib.util.module_from_spec(spec)
     sys.modules[modname] = mod
     try:

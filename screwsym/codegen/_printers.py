@@ -21,6 +21,8 @@ screwsym binds.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 from sympy import Expr, Float, Integer
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.numpy import NumPyPrinter
@@ -43,6 +45,10 @@ class _Common:
 
     _inf = "_m.inf"
     _nan = "_m.nan"
+
+    if TYPE_CHECKING:
+        # a mixin: the SymPy printer it is mixed into prints the parts
+        def _print(self, expr: Any, **kwargs: Any) -> str: ...
 
     def _module_format(self, fqn, register=True):  # noqa: D401 - SymPy's protocol
         head, _, tail = fqn.partition(".")

@@ -10,14 +10,38 @@ these methods refuse strings (anywhere in their arguments) with a
 
 from __future__ import annotations
 
-from sympy import Basic
+from typing import TYPE_CHECKING, Any
 
 from .checks import check_no_strings
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
+
+    class Basic:
+        """What a type checker sees of ``sympy.Basic``: SymPy ships no types.
+
+        Were the base the untyped ``sympy.Basic`` itself (Any to mypy), every screwsym
+        object would pass for every type: ``2 * twist`` would be an int, and
+        ``x: int = Screw(...)`` accepted.  This declares what screwsym uses and leaves
+        any other attribute Any.
+        """
+
+        args: tuple[Any, ...]
+        free_symbols: set[Any]
+
+        def __new__(cls, *args: Any) -> Self: ...
+        def __getattr__(self, name: str) -> Any: ...
+        def subs(self, *args: Any, **kwargs: Any) -> Any: ...
+        def xreplace(self, rule: Any, *args: Any, **kwargs: Any) -> Any: ...
+        def match(self, pattern: Any, *args: Any, **kwargs: Any) -> dict[Any, Any] | None: ...
+        def matches(self, expr: Any, *args: Any, **kwargs: Any) -> dict[Any, Any] | None: ...
+else:
+    from sympy import Basic
 
 __all__ = ["ScrewsymBasic"]
 
 
-def _values(kwargs: dict) -> tuple:
+def _values(kwargs: dict[str, Any]) -> tuple[Any, ...]:
     """The values of keyword arguments: their names are Python identifiers, never evaluated."""
     return tuple(kwargs.values())
 
@@ -38,7 +62,8 @@ class ScrewsymBasic(Basic):
 
     __slots__ = ()
 
-    def subs(self, *args, **kwargs):
+    # subs and xreplace give Any: a rule may replace the object itself (``s.subs(s, 0)``)
+    def subs(self, *args: Any, **kwargs: Any) -> Any:
         check_no_strings((args, _values(kwargs)), "subs")
         if kwargs.get("simultaneous"):
             # SymPy's simultaneous substitution passes through placeholder symbols with no
@@ -47,32 +72,32 @@ class ScrewsymBasic(Basic):
             return self.func(*(a.subs(*args, **kwargs) for a in self.args))
         return super().subs(*args, **kwargs)
 
-    def xreplace(self, rule, *args, **kwargs):
+    def xreplace(self, rule: Any, *args: Any, **kwargs: Any) -> Any:
         check_no_strings((rule, args, _values(kwargs)), "xreplace")
         return super().xreplace(rule, *args, **kwargs)
 
-    def match(self, pattern, *args, **kwargs):
+    def match(self, pattern: Any, *args: Any, **kwargs: Any) -> dict[Any, Any] | None:
         check_no_strings((pattern, args, _values(kwargs)), "match")
         return super().match(pattern, *args, **kwargs)
 
-    def matches(self, expr, *args, **kwargs):
+    def matches(self, expr: Any, *args: Any, **kwargs: Any) -> dict[Any, Any] | None:
         check_no_strings((expr, args, _values(kwargs)), "matches")
         return super().matches(expr, *args, **kwargs)
 
-    def diff(self, *symbols, **kwargs):
+    def diff(self, *symbols: Any, **kwargs: Any) -> Basic:
         check_no_strings((symbols, _values(kwargs)), "diff")
         return self._eval_diff_parts(*symbols, **kwargs)
 
-    def _eval_diff_parts(self, *symbols, **kwargs):
+    def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> Basic:
         """Differentiate ``args`` one by one; subclasses override for their own result class."""
         return self.func(*(a.diff(*symbols, **kwargs) for a in self.args))
 
-    def evalf(self, n: int = 15, subs=None, **options):
+    def evalf(self, n: int = 15, subs: Any = None, **options: Any) -> Self:
         check_no_strings((subs, _values(options)), "evalf")
         return self._eval_evalf_parts(n, subs=subs, **options)
 
-    def _eval_evalf_parts(self, n, **options):
+    def _eval_evalf_parts(self, n: int, **options: Any) -> Self:
         return self.func(*(a.evalf(n, **options) for a in self.args))
 
-    def n(self, n: int = 15, subs=None, **options):
+    def n(self, n: int = 15, subs: Any = None, **options: Any) -> Self:
         return self.evalf(n, subs=subs, **options)

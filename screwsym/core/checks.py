@@ -38,7 +38,7 @@ __all__ = [
 
 def _describe(value: Any) -> str:
     """A short description of ``value`` for error messages."""
-    shape = getattr(value, "shape", None)
+    shape: Any = getattr(value, "shape", None)
     if shape is not None and not isinstance(value, Basic) or isinstance(value, MatrixBase):
         return f"{type(value).__name__} of shape {tuple(shape)}"
     text = " ".join(repr(value).split())
@@ -270,7 +270,7 @@ def check_matrix(value: Any, name: str, shape: tuple[int, int]) -> ImmutableMatr
             f"nested lists), got {_describe(value)}"
         )
     if isinstance(value, MatrixBase):
-        got = tuple(value.shape)
+        got: tuple[int, ...] | None = tuple(value.shape)
         rows = value.tolist()
     else:
         got = _shape_of(value)

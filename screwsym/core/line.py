@@ -9,7 +9,7 @@ line of action, or an angular velocity about its axis.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any, TypeAlias
 
 from sympy import Abs, Eq, Expr, Float, ImmutableMatrix, Rational, atan2, nan, sign, sqrt
 from sympy.core.evalf import prec_to_dps
@@ -19,6 +19,7 @@ from .checks import check_choice, check_flag, check_vector
 from .decide import float_tau, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
 from .formulas import foot_point
 from .screw import (
+    ScalarLike,
     Screw,
     ScrewLike,
     VectorLike,
@@ -29,6 +30,9 @@ from .screw import (
 )
 from .tidy import CONDS, _finish, _piecewise, _vanishes
 
+if TYPE_CHECKING:
+    from typing_extensions import Self
+
 __all__ = [
     "LineVector",
     "CommonNormal",
@@ -38,7 +42,8 @@ __all__ = [
     "common_normal",
 ]
 
-LineLike = Any  # a LineVector, a screw whose parts make a line, or a 6-vector
+#: a LineVector, a screw whose parts make a line, or a 6-vector (S; S0)
+LineLike: TypeAlias = ScrewLike
 
 
 def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple[str, str]) -> None:
@@ -93,7 +98,8 @@ class LineVector(Screw, line_of=Screw):
     _pitch_is_zero = True
 
     @classmethod
-    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix, label) -> None:
+    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix,
+                     label: str | tuple[str, str]) -> None:
         check_line_parts(S, S0, label)
 
     def contains(self, point: VectorLike) -> bool | None:
@@ -202,7 +208,8 @@ class CommonNormal(ScrewsymBasic):
     __slots__ = ()
     _fields = ("a12", "normal", "alpha12", "foot1", "foot2")
 
-    def __new__(cls, a12, normal, alpha12, foot1, foot2):
+    def __new__(cls, a12: ScalarLike, normal: VectorLike, alpha12: ScalarLike,
+                foot1: VectorLike, foot2: VectorLike) -> Self:
         return ScrewsymBasic.__new__(
             cls, a12, ImmutableMatrix(normal), alpha12, ImmutableMatrix(foot1), ImmutableMatrix(foot2)
         )
@@ -232,12 +239,12 @@ class CommonNormal(ScrewsymBasic):
         """The foot of the normal on line 2."""
         return self.args[4]
 
-    def _lambdify_outputs(self) -> tuple:
+    def _lambdify_outputs(self) -> tuple[Any, ...]:
         """The five parts, for :func:`screwsym.lambdify` (a tuple of results)."""
         return tuple(self.args)
 
-    def _sympystr(self, printer) -> str:
-        def show(v):
+    def _sympystr(self, printer: Any) -> str:
+        def show(v: Any) -> str:
             if isinstance(v, ImmutableMatrix):
                 return "[" + ", ".join(printer._print(e) for e in v) + "]"
             return printer._print(v)
@@ -245,7 +252,7 @@ class CommonNormal(ScrewsymBasic):
         parts = ", ".join(f"{k}={show(v)}" for k, v in zip(self._fields, self.args, strict=True))
         return f"CommonNormal({parts})"
 
-    def _latex(self, printer) -> str:
+    def _latex(self, printer: Any) -> str:
         def column(v: ImmutableMatrix) -> str:
             return printer._print(v.T) + "^{T}"
 
@@ -284,7 +291,9 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
     return cn.func(*(a.evalf(n=max(15, prec_to_dps(prec) + 1)) for a in cn.args))
 
 
-def _common_normal_parts(S1, S01, S2, S02, tau, names, conds="none") -> CommonNormal:
+def _common_normal_parts(S1: ImmutableMatrix, S01: ImmutableMatrix, S2: ImmutableMatrix,
+                         S02: ImmutableMatrix, tau: Expr | None, names: tuple[str, str],
+                         conds: str = "none") -> CommonNormal:
     nn1, nn2 = S1.dot(S1), S2.dot(S2)
     p1, p2 = foot_point(S1, S01), foot_point(S2, S02)  # the feet (1.16)
     d = p2 - p1

@@ -8,12 +8,19 @@ go through the active printer, so user settings (``order``, symbol names,
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from sympy import Basic
+    from sympy.printing.pretty.stringpict import prettyForm
+    from sympy.printing.printer import Printer
 
 __all__ = ["init_printing", "latex_screw", "pretty_screw"]
 
 
-def latex_screw(s, printer) -> str:
+# ``s`` is a screw (screwsym.core.screw.Screw, which imports this module): a Basic whose
+# args are its two parts
+def latex_screw(s: Basic, printer: Printer) -> str:
     r"""LaTeX for a screw: ``\left(l \quad m \quad n;\; p \quad q \quad r\right)``.
 
     >>> from sympy import latex, symbols
@@ -26,7 +33,7 @@ def latex_screw(s, printer) -> str:
     return rf"\left({S};\; {S0}\right)"
 
 
-def pretty_screw(s, printer):
+def pretty_screw(s: Basic, printer: Printer) -> prettyForm:
     """Unicode/ASCII pretty form: ``(1  0  0; h  0  0)``.
 
     >>> from sympy import pretty, symbols
@@ -36,7 +43,7 @@ def pretty_screw(s, printer):
     """
     from sympy.printing.pretty.stringpict import prettyForm
 
-    pieces = []
+    pieces: list[prettyForm] = []
     for i, part in enumerate(s.args):
         for j, e in enumerate(part):
             if pieces:

@@ -30,10 +30,12 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Chapter 1.
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union, overload
 
 import numpy as np
 from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
+from sympy.matrices import MatrixBase
 
 from .basic import ScrewsymBasic
 from .checks import (
@@ -51,6 +53,10 @@ from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
 from .formulas import dual_part, foot_point, moved, pitch_ratio
 from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
+if TYPE_CHECKING:
+    from numpy.typing import DTypeLike
+    from typing_extensions import Self
+
 __all__ = [
     "Screw",
     "pitch",
@@ -66,8 +72,20 @@ __all__ = [
     "unit",
 ]
 
-ScrewLike = Any  # a Screw, or a 6-vector (list, tuple, SymPy Matrix, NumPy array) in (S; S0) order
-VectorLike = Any  # a 3-vector: list, tuple, SymPy Matrix or NumPy array of three
+# What the checks (screwsym.core.checks) accept.  SymPy ships no type information, so to a
+# type checker its classes (Expr, MatrixBase) are Any and these unions accept anything; they
+# say what the functions take, and the checks refuse the rest at run time.
+
+#: a real scalar: a SymPy expression (its symbols declared ``real=True``), a Python or NumPy number
+ScalarLike: TypeAlias = Expr | int | float | np.integer | np.floating
+#: a 3-vector: a 3x1 or 1x3 SymPy matrix, a list or tuple of three scalars, or a NumPy array
+VectorLike: TypeAlias = MatrixBase | Sequence[ScalarLike] | np.ndarray
+#: a 6-vector ``(S; S0)``: a 6x1 or 1x6 SymPy matrix, a list or tuple of six, or a NumPy array
+SixVectorLike: TypeAlias = MatrixBase | Sequence[ScalarLike] | np.ndarray
+#: a matrix: a SymPy matrix, nested lists or tuples of scalars, or a 2-d NumPy array
+MatrixLike: TypeAlias = MatrixBase | Sequence[Sequence[ScalarLike]] | np.ndarray
+#: a screw: a Screw (of a kind the function accepts), or a 6-vector in the book's order (S; S0)
+ScrewLike: TypeAlias = Union["Screw", SixVectorLike]
 
 
 class Screw(ScrewsymBasic):
@@ -135,20 +153,22 @@ class Screw(ScrewsymBasic):
     #: names of the two parts, used in error messages and printing
     _part_names: tuple[str, str] = ("S", "S0")
     #: the kind of a screw that may not mix with other kinds ("twist", "wrench"), or None
-    _kind: str | None = None
+    _kind: ClassVar[str | None] = None
     #: the class of a linear combination (sum, zero multiple, derivative); None: the class itself
-    _combination: type | None = None
+    _combination: type[Screw] | None = None
     #: the class of the axis line of a decomposition, declared by ``line_of=`` below
-    _line_classes: dict[type, type] = {}
+    _line_classes: dict[type[Screw], type[Screw]] = {}
+    #: the root of the hierarchy (this class), for the checks, which cannot import it
+    _root: ClassVar[type[Screw]]
     #: whether the kind's invariant makes the pitch 0 (a line vector's does)
     _pitch_is_zero: bool = False
 
-    def __init_subclass__(cls, *, line_of: type | None = None, **kwargs):
+    def __init_subclass__(cls, *, line_of: type[Screw] | None = None, **kwargs: Any) -> None:
         super().__init_subclass__(**kwargs)
         if line_of is not None:
             Screw._line_classes[line_of] = cls
 
-    def __new__(cls, S: VectorLike, S0: VectorLike = None):
+    def __new__(cls, S: VectorLike, S0: VectorLike | None = None) -> Self:
         if S0 is None:
             if isinstance(S, (list, tuple)) and len(S) == 6 or getattr(S, "shape", None) in (
                 (6,),
@@ -166,21 +186,22 @@ class Screw(ScrewsymBasic):
         return ScrewsymBasic.__new__(cls, S, S0)
 
     @classmethod
-    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix, label) -> None:
+    def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix,
+                     label: str | tuple[str, str]) -> None:
         """Kinds that constrain ``(S; S0)`` raise here, naming ``label`` (a name, or the parts')."""
 
     @classmethod
-    def _rebuild(cls, S: ImmutableMatrix, S0: ImmutableMatrix, name: str):
+    def _rebuild(cls, S: ImmutableMatrix, S0: ImmutableMatrix, name: str) -> Self:
         """``cls`` from checked parts of the argument ``name`` (errors name the argument)."""
         cls._check_parts(S, S0, name)
         return ScrewsymBasic.__new__(cls, S, S0)
 
     @classmethod
-    def _combination_class(cls) -> type:
+    def _combination_class(cls) -> type[Screw]:
         return cls._combination or cls
 
     @classmethod
-    def _line_class(cls) -> type:
+    def _line_class(cls) -> type[Screw]:
         return Screw._line_classes.get(cls, cls)
 
     # ----------------------------------------------------------------- parts
@@ -207,7 +228,7 @@ class Screw(ScrewsymBasic):
         """The 6x1 column ``[S; S0]`` in the book's ray order."""
         return ImmutableMatrix.vstack(self.S, self.S0)
 
-    def __array__(self, dtype=None, copy=None):
+    def __array__(self, dtype: DTypeLike | None = None, copy: bool | None = None) -> np.ndarray:
         """The six components in ray order ``(S; S0)`` as a NumPy array.
 
         Numbers give ``float64`` (or ``dtype``); a screw with symbols gives an
@@ -231,7 +252,7 @@ class Screw(ScrewsymBasic):
         return values if dtype is None else values.astype(dtype)
 
     @classmethod
-    def from_matrix(cls, M: Any, *, name: str = "M"):
+    def from_matrix(cls, M: SixVectorLike, *, name: str = "M") -> Self:
         """Build a screw from a 6-vector ``[S; S0]`` (6x1, 1x6, list, tuple or array).
 
         >>> Screw.from_matrix([1, 0, 0, 0, 1, 0])
@@ -241,8 +262,8 @@ class Screw(ScrewsymBasic):
         return cls._rebuild(S_, S0_, name)
 
     @classmethod
-    def from_axis(cls, point: VectorLike, direction: VectorLike, pitch: Any = 0, *,
-                  magnitude: Any = 1):
+    def from_axis(cls, point: VectorLike, direction: VectorLike, pitch: ScalarLike = 0, *,
+                  magnitude: ScalarLike = 1) -> Self:
         r"""The screw of pitch ``h`` on the axis through ``point`` along ``direction`` (1.38).
 
         ``$ = m (S; r x S + h S)`` with ``r = point``, ``S = direction``,
@@ -273,7 +294,7 @@ class Screw(ScrewsymBasic):
         return cls._rebuild(m * S_, m * dual_part(r, S_, h), label)
 
     @classmethod
-    def through(cls, A: VectorLike, B: VectorLike):
+    def through(cls, A: VectorLike, B: VectorLike) -> Self:
         r"""The line through the points ``A`` and ``B``, directed from A to B: ``(B - A; A x (B - A))``.
 
         ``S = B - A`` (1.1) and ``S0 = A x S`` (1.9).
@@ -290,7 +311,7 @@ class Screw(ScrewsymBasic):
         return cls._rebuild(B - A, A.cross(B - A), "A, B")
 
     @classmethod
-    def couple(cls, C: VectorLike):
+    def couple(cls, C: VectorLike) -> Self:
         """The couple ``(0; C)``: a screw of infinite pitch, a free vector.
 
         >>> Screw.couple([0, 0, 5]).pitch
@@ -305,7 +326,7 @@ class Screw(ScrewsymBasic):
         return _pitch(self)
 
     @property
-    def axis(self):
+    def axis(self) -> Screw:
         """The axis line vector ``(S; S0 - h S)`` (1.36); see :func:`axis`."""
         return _axis(self)
 
@@ -328,15 +349,15 @@ class Screw(ScrewsymBasic):
         """``'line'``, ``'couple'``, ``'screw'``, ``'zero'`` or None; see :func:`classify`."""
         return _classify(self)
 
-    def decompose(self, *, tidy: bool = True):
+    def decompose(self, *, tidy: bool = True) -> tuple[Screw, Screw]:
         """Axis line vector plus parallel couple (1.37); see :func:`decompose_screw`."""
         return _decompose(self, tidy=check_flag(tidy, "tidy"))
 
-    def unit(self, *, tidy: bool = True):
+    def unit(self, *, tidy: bool = True) -> Self:
         """The unit screw, normalised as in (1.5); see :func:`unit`."""
         return _unit(self, tidy=check_flag(tidy, "tidy"))
 
-    def shift_origin(self, A: VectorLike, *, tidy: bool = True):
+    def shift_origin(self, A: VectorLike, *, tidy: bool = True) -> Self:
         """The same screw with its moment taken about ``A`` (1.32); see :func:`shift_origin`."""
         return _shift_origin(self, check_vector(A, "A"), check_flag(tidy, "tidy"))
 
@@ -367,7 +388,7 @@ class Screw(ScrewsymBasic):
         return is_zero_vector(self.matrix - other.matrix)
 
     # ------------------------------------------------------------ algebra
-    def __add__(self, other):
+    def __add__(self, other: Screw) -> Screw:
         """``$1 + $2 = (S1 + S2; S1^0 + S2^0)`` (1.39)."""
         if not isinstance(other, Screw):
             return NotImplemented
@@ -379,18 +400,18 @@ class Screw(ScrewsymBasic):
         cls = (other if other._kind and not self._kind else self)._combination_class()
         return cls(self.S + other.S, self.S0 + other.S0)
 
-    def __sub__(self, other):
+    def __sub__(self, other: Screw) -> Screw:
         if not isinstance(other, Screw):
             return NotImplemented
         return self + (-other)
 
-    def __neg__(self):
+    def __neg__(self) -> Self:
         return type(self)(-self.S, -self.S0)
 
-    def __pos__(self):
+    def __pos__(self) -> Self:
         return self
 
-    def __mul__(self, k):
+    def __mul__(self, k: ScalarLike) -> Screw:
         """``lambda $ = (lambda S; lambda S0)`` (1.44)."""
         if isinstance(k, Screw):
             raise TypeError(
@@ -401,20 +422,24 @@ class Screw(ScrewsymBasic):
         cls = self._combination_class() if is_zero(k) is True else type(self)
         return cls(k * self.S, k * self.S0)
 
-    __rmul__ = __mul__
+    if TYPE_CHECKING:
+        def __rmul__(self, k: ScalarLike) -> Screw: ...
+    else:
+        __rmul__ = __mul__
 
-    def __truediv__(self, k):
+    def __truediv__(self, k: ScalarLike) -> Screw:
         return self * (S.One / check_scalar(k, "k", nonzero=True))
 
     # ------------------------------------------------ SymPy integration
-    def _apply(self, f, cls=None):
+    def _apply(self, f: Callable[[ImmutableMatrix], ImmutableMatrix],
+               cls: type[Screw] | None = None) -> Any:
         cls = type(self) if cls is None else cls
         return cls(f(self.S), f(self.S0))
 
-    def _eval_simplify(self, **kwargs):
+    def _eval_simplify(self, **kwargs: Any) -> Self:
         return self._apply(lambda m: m.simplify(**kwargs))
 
-    def _eval_diff_parts(self, *symbols, **kwargs):
+    def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> Screw:
         """Differentiate both parts: ``d$/dt = (dS/dt; dS0/dt)``.
 
         The derivative of a line vector is in general not a line vector, so it
@@ -427,11 +452,11 @@ class Screw(ScrewsymBasic):
         """
         return self._apply(lambda m: m.diff(*symbols, **kwargs), self._combination_class())
 
-    def _eval_evalf_parts(self, n: int = 15, **options):
+    def _eval_evalf_parts(self, n: int = 15, **options: Any) -> Self:
         """Evaluate both parts numerically to ``n`` digits."""
         return self._apply(lambda m: m.evalf(n, **options))
 
-    def expand(self, **hints):
+    def expand(self, **hints: Any) -> Self:
         """Expand every component.
 
         >>> from sympy import symbols
@@ -441,7 +466,7 @@ class Screw(ScrewsymBasic):
         """
         return self._apply(lambda m: m.expand(**hints))
 
-    def applyfunc(self, f):
+    def applyfunc(self, f: Callable[[Expr], Any]) -> Self:
         """Apply ``f`` to every one of the six components (e.g. ``cancel``).
 
         >>> from sympy import cos, sin, symbols, trigsimp
@@ -452,24 +477,28 @@ class Screw(ScrewsymBasic):
         return self._apply(lambda m: m.applyfunc(f))
 
     # ------------------------------------------------------------ printing
-    def _sympystr(self, printer) -> str:
+    def _sympystr(self, printer: Any) -> str:
         parts = ", ".join(
             "[" + ", ".join(printer._print(e) for e in part) + "]" for part in self.args
         )
         return f"{type(self).__name__}({parts})"
 
-    def _latex(self, printer) -> str:
+    def _latex(self, printer: Any) -> str:
         from .printing import latex_screw
 
         return latex_screw(self, printer)
 
-    def _pretty(self, printer):
+    def _pretty(self, printer: Any) -> Any:
         from .printing import pretty_screw
 
         return pretty_screw(self, printer)
 
 
-def check_screw(value: Any, name: str, cls: type):
+#: a screw of any kind, for the private operations that keep the kind of their argument
+_S = TypeVar("_S", bound=Screw)
+
+
+def check_screw(value: Any, name: str, cls: type[_S]) -> _S:
     """Return ``value`` as a screw object, an instance of ``cls``.
 
     A screw object of class ``cls`` is passed through.  Another screw is
@@ -541,14 +570,14 @@ def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
     return pitch_ratio(s.S, s.S0)
 
 
-def _known(cls: type, S_: ImmutableMatrix, S0_: ImmutableMatrix):
+def _known(cls: type[_S], S_: ImmutableMatrix, S0_: ImmutableMatrix) -> _S:
     """``cls(S_, S0_)`` for parts derived from a checked screw by an operation that keeps
     the kind's invariant identically (the axis moment ``S0 - h S`` has ``S . (S0 - h S) = 0``
     (1.36); a shift of origin keeps ``S . S0``), so checking again would only re-prove it."""
     return ScrewsymBasic.__new__(cls, S_, S0_)
 
 
-def _where_direction_vanishes(s: Screw, value, couple_value=nan):
+def _where_direction_vanishes(s: Screw, value: Any, couple_value: Any = nan) -> Any:
     """``value`` where ``S != 0``; ``couple_value`` where ``S = 0 != S0``; ``nan`` at (0; 0).
 
     The ``conds="piecewise"`` form of a generic result: a ``Piecewise`` when
@@ -614,7 +643,7 @@ def pitch(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> Expr:
     )
 
 
-def _axis(s: Screw, name: str | None = None, tidy: bool = True):
+def _axis(s: Screw, name: str | None = None, tidy: bool = True) -> Screw:
     _require_axis(s, "axis", name)
     if s._pitch_is_zero:
         return _finish(Screw._line_class()._rebuild(s.S, s.S0, name or "s"), tidy)
@@ -630,7 +659,7 @@ def _axis_moment(s: Screw, tidy: bool, h: Expr | None = None) -> ImmutableMatrix
     return _moment_minus(s.S0, h, s.S) if tidy else s.S0 - h * s.S
 
 
-def axis(s: ScrewLike, *, tidy: bool = True):
+def axis(s: ScrewLike, *, tidy: bool = True) -> Screw:
     r"""The axis of a screw as a line vector ``(S; S0 - h S)`` (1.36, 1.37).
 
     The axis has the screw's direction and pitch 0.  A couple has no axis in
@@ -741,7 +770,7 @@ def direction_cosines(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -
     )
 
 
-def _unit(s: Screw, name: str | None = None, tidy: bool = True):
+def _unit(s: _S, name: str | None = None, tidy: bool = True) -> _S:
     if is_zero_vector(s.S) is True:
         if is_zero_vector(s.S0) is True:
             prefix = f"{name}: " if name else ""
@@ -752,7 +781,13 @@ def _unit(s: Screw, name: str | None = None, tidy: bool = True):
     return _finish(type(s)(s.S / n, s.S0 / n), tidy)
 
 
-def unit(s: ScrewLike, *, tidy: bool = True):
+@overload
+def unit(s: _S, *, tidy: bool = True) -> _S: ...
+@overload
+def unit(s: SixVectorLike, *, tidy: bool = True) -> Screw: ...
+
+
+def unit(s: ScrewLike, *, tidy: bool = True) -> Screw:
     r"""The unit screw: ``$ / |S|``, or ``$ / |S0|`` for a couple (1.5, Example 1.3).
 
     The book normalises a line vector or screw by the length of its direction
@@ -771,7 +806,7 @@ def unit(s: ScrewLike, *, tidy: bool = True):
     return _unit(check_screw(s, "s", Screw), "s", check_flag(tidy, "tidy"))
 
 
-def _decompose(s: Screw, name: str | None = None, tidy: bool = True):
+def _decompose(s: Screw, name: str | None = None, tidy: bool = True) -> tuple[Screw, Screw]:
     _require_axis(s, "axis, so no line-plus-couple decomposition", name)
     general = s._combination_class()
     h = _pitch_formula(s, tidy)
@@ -780,7 +815,7 @@ def _decompose(s: Screw, name: str | None = None, tidy: bool = True):
     return line, general(zeros(3, 1), h * s.S)
 
 
-def decompose_screw(s: ScrewLike, *, tidy: bool = True):
+def decompose_screw(s: ScrewLike, *, tidy: bool = True) -> tuple[Screw, Screw]:
     r"""Split a screw into its axis line vector and a parallel couple (1.37).
 
     ``(S; S0) = (S; S0 - h S) + (0; h S)``.  Returns the pair
@@ -834,14 +869,20 @@ def classify(s: ScrewLike) -> str | None:
     return _classify(check_screw(s, "s", Screw))
 
 
-def _shift_origin(s: Screw, A: ImmutableMatrix, tidy: bool = True):
+def _shift_origin(s: _S, A: ImmutableMatrix, tidy: bool = True) -> _S:
     S_, S0_ = moved(None, -A, s.S, s.S0)  # a pure translation by -A (1.32)
     if tidy:
         return _known(type(s), S_, _finish(S0_))
     return type(s)(S_, S0_)
 
 
-def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True):
+@overload
+def shift_origin(s: _S, A: VectorLike, *, tidy: bool = True) -> _S: ...
+@overload
+def shift_origin(s: SixVectorLike, A: VectorLike, *, tidy: bool = True) -> Screw: ...
+
+
+def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True) -> Screw:
     r"""The same screw with its dual part taken about the point ``A`` (1.32).
 
     ``S^A = S^0 + AO x S = S^0 - A x S``, where ``A`` is the position of the

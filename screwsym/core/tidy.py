@@ -39,7 +39,7 @@ operations take ``tidy=False`` to return the raw result.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, TypeVar
 
 from sympy import (
     Add,
@@ -84,7 +84,11 @@ MAX_SIZE = 3000
 FACTOR_SIZE = 40
 
 
-def tidy(expr: Any, *, max_size: int = MAX_SIZE) -> Any:
+#: what tidy gives back: the kind it is given (a screwsym object keeps its class)
+_T = TypeVar("_T")
+
+
+def tidy(expr: _T, *, max_size: int = MAX_SIZE) -> _T:
     r"""Bring ``expr`` to lowest terms and a compact form, without ``simplify``.
 
     Explanation

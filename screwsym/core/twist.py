@@ -7,13 +7,16 @@ momentarily coincides with the origin O (1.51, 1.53).
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, ClassVar
 
 from sympy import ImmutableMatrix, zeros
 
 from .checks import check_flag, check_nonzero_vector, check_vector
 from .formulas import dual_part
-from .screw import Screw, VectorLike, _shift_origin
+from .screw import ScalarLike, Screw, VectorLike, _shift_origin
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["Twist"]
 
@@ -43,7 +46,16 @@ class Twist(Screw):
 
     __slots__ = ()
     _part_names = ("omega", "v_O")
-    _kind = "twist"
+    _kind: ClassVar[str | None] = "twist"
+
+    if TYPE_CHECKING:
+        # a twist's algebra closes: a sum with another screw, a multiple and a quotient are
+        # a twist (Screw.__add__ and __mul__ keep the kind of the operand that has one)
+        def __add__(self, other: Screw) -> Self: ...
+        def __sub__(self, other: Screw) -> Self: ...
+        def __mul__(self, k: ScalarLike) -> Self: ...
+        def __rmul__(self, k: ScalarLike) -> Self: ...
+        def __truediv__(self, k: ScalarLike) -> Self: ...
 
     @property
     def omega(self) -> ImmutableMatrix:
@@ -56,7 +68,7 @@ class Twist(Screw):
         return self.S0
 
     @classmethod
-    def rotation(cls, omega: VectorLike, *, point: VectorLike) -> Twist:
+    def rotation(cls, omega: VectorLike, *, point: VectorLike) -> Self:
         r"""Rotation with angular velocity ``omega`` about the axis through ``point`` (1.48, 1.50).
 
         ``(omega; r x omega)`` with ``r = point``: the velocity of the body
@@ -71,7 +83,7 @@ class Twist(Screw):
         return cls(omega, dual_part(r, omega))
 
     @classmethod
-    def translation(cls, v: VectorLike) -> Twist:
+    def translation(cls, v: VectorLike) -> Self:
         r"""Pure translation with velocity ``v``: the twist ``(0; v)`` (Section 1.6.2).
 
         >>> Twist.translation([1, 2, 3])
@@ -80,7 +92,7 @@ class Twist(Screw):
         return cls(zeros(3, 1), check_vector(v, "v"))
 
     @classmethod
-    def screw_motion(cls, omega: VectorLike, *, point: VectorLike, pitch: Any) -> Twist:
+    def screw_motion(cls, omega: VectorLike, *, point: VectorLike, pitch: ScalarLike) -> Self:
         r"""Screw motion: angular velocity ``omega`` about the axis through ``point``, pitch ``h`` (1.52, 1.53).
 
         ``(omega; r x omega + h omega)``: the body turns at ``|omega|`` and

@@ -7,12 +7,25 @@ A wrench is written in the book's ray order ``(f; C_O)``: the resultant force
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, ClassVar
+
 from sympy import Expr, ImmutableMatrix
 
 from .checks import check_flag, check_nonzero_vector, check_vector
 from .formulas import dual_part
-from .screw import Screw, ScrewLike, VectorLike, _reciprocal_product, _shift_origin, check_screw
+from .screw import (
+    ScalarLike,
+    Screw,
+    ScrewLike,
+    VectorLike,
+    _reciprocal_product,
+    _shift_origin,
+    check_screw,
+)
 from .twist import Twist
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["Wrench", "power"]
 
@@ -40,7 +53,16 @@ class Wrench(Screw):
 
     __slots__ = ()
     _part_names = ("f", "C_O")
-    _kind = "wrench"
+    _kind: ClassVar[str | None] = "wrench"
+
+    if TYPE_CHECKING:
+        # a wrench's algebra closes: a sum with another screw, a multiple and a quotient are
+        # a wrench (Screw.__add__ and __mul__ keep the kind of the operand that has one)
+        def __add__(self, other: Screw) -> Self: ...
+        def __sub__(self, other: Screw) -> Self: ...
+        def __mul__(self, k: ScalarLike) -> Self: ...
+        def __rmul__(self, k: ScalarLike) -> Self: ...
+        def __truediv__(self, k: ScalarLike) -> Self: ...
 
     @property
     def f(self) -> ImmutableMatrix:
@@ -53,7 +75,7 @@ class Wrench(Screw):
         return self.S0
 
     @classmethod
-    def force(cls, f: VectorLike, *, point: VectorLike) -> Wrench:
+    def force(cls, f: VectorLike, *, point: VectorLike) -> Self:
         r"""The force ``f`` acting along the line through ``point``: ``(f; r x f)`` (1.55).
 
         A zero force has no line of action and raises ``ValueError``.

@@ -39,9 +39,11 @@ formula", 1984.  Lynch & Park, *Modern Robotics*, Cambridge 2017, Sections
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any, TypeAlias
 
+import numpy as np
 from sympy import Expr, ImmutableMatrix, Rational, Tuple
+from sympy.matrices import MatrixBase
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
@@ -52,13 +54,19 @@ from ..core.checks import (
 )
 from ..core.decide import is_zero_vector
 from ..core.formulas import moved
-from ..core.screw import check_screw
+from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
 from .displacement import exp6
 from .transform import Transform
 
+if TYPE_CHECKING:
+    from typing_extensions import Self
+
 __all__ = ["Chain", "ur5"]
+
+#: joint values: a list or tuple of scalars (or a SymPy Tuple or matrix, a 1-d NumPy array)
+JointValues: TypeAlias = Sequence[ScalarLike] | MatrixBase | np.ndarray
 
 
 def _carried_column(T: Transform, twist: Twist) -> ImmutableMatrix:
@@ -127,7 +135,7 @@ class Chain(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, twists: Sequence[Any], home: Transform | None = None):
+    def __new__(cls, twists: Sequence[ScrewLike], home: Transform | None = None) -> Self:
         twists = check_sequence(twists, "twists", "twists")
         if len(twists) == 0:
             raise ValueError("twists: expected at least one joint twist, got none")
@@ -167,7 +175,7 @@ class Chain(ScrewsymBasic):
         values = check_sequence(q, "q", "joint values", self.n_joints)
         return tuple(check_scalar(v, f"q[{i}]") for i, v in enumerate(values))
 
-    def forward(self, q: Any) -> Transform:
+    def forward(self, q: JointValues) -> Transform:
         r"""The forward kinematics ``T(q) = exp6($_1, q_1) ... exp6($_n, q_n) M``, tidied.
 
         >>> from sympy import pi
@@ -182,7 +190,7 @@ class Chain(ScrewsymBasic):
             T = tidy(T @ exp6(twist, qi))
         return tidy(T @ self.home)
 
-    def jacobian(self, q: Any, frame: str = "space") -> ImmutableMatrix:
+    def jacobian(self, q: JointValues, frame: str = "space") -> ImmutableMatrix:
         r"""The 6 x n Jacobian in ray order, ``frame="space"`` or ``"body"``, tidied.
 
         Column ``i`` is joint ``i``'s twist at the configuration ``q``,
@@ -218,7 +226,7 @@ class Chain(ScrewsymBasic):
             columns.reverse()
         return ImmutableMatrix.hstack(*columns)
 
-    def _sympystr(self, printer) -> str:
+    def _sympystr(self, printer: Any) -> str:
         twists = ", ".join(printer._print(t) for t in self.twists)
         return f"Chain([{twists}], {printer._print(self.home)})"
 

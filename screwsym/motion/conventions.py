@@ -52,14 +52,14 @@ equal to ``p`` by ``R R^T = I`` (``Transform.equals`` decides it).
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import NamedTuple, TypeVar, overload
 
 from sympy import ImmutableMatrix
 
 from ..core.checks import check_choice, check_six
 from ..core.formulas import SWAP
 from ..core.line import LineVector
-from ..core.screw import Screw
+from ..core.screw import MatrixLike, Screw, SixVectorLike
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .transform import Transform
@@ -95,7 +95,11 @@ def _swap(first: ImmutableMatrix, second: ImmutableMatrix, swap: bool) -> Immuta
     return m[list(SWAP), :] if swap else m
 
 
-def convert(obj: Any, to: str) -> ImmutableMatrix:
+#: a screw of any kind: convert_from gives back the kind it is asked for
+_S = TypeVar("_S", bound=Screw)
+
+
+def convert(obj: Screw | Transform, to: str) -> ImmutableMatrix:
     r"""``obj`` in the layout of another library: a 6x1 matrix, or 4x4 for a transform.
 
     Explanation
@@ -147,7 +151,14 @@ def convert(obj: Any, to: str) -> ImmutableMatrix:
     )
 
 
-def convert_from(value: Any, source: str, kind: type) -> Any:
+@overload
+def convert_from(value: SixVectorLike, source: str, kind: type[_S]) -> _S: ...
+@overload
+def convert_from(value: MatrixLike, source: str, kind: type[Transform]) -> Transform: ...
+
+
+def convert_from(value: SixVectorLike | MatrixLike, source: str,
+                 kind: type[Screw] | type[Transform]) -> Screw | Transform:
     r"""The screwsym object of ``kind`` from ``value`` in the layout of ``source``.
 
     The inverse of :func:`convert`: ``convert_from(convert(x, to=c), c, type(x)) == x``

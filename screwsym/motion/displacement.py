@@ -25,8 +25,6 @@ Lynch & Park, *Modern Robotics*, Cambridge 2017, Section 3.3.3 (Proposition 3.25
 
 from __future__ import annotations
 
-from typing import Any
-
 from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, pi, sqrt, zeros
 from sympy.core.evalf import prec_to_dps
 
@@ -40,7 +38,7 @@ from ..core.decide import (
     norm,
 )
 from ..core.formulas import dual_part, foot_point, pitch_ratio
-from ..core.screw import check_screw
+from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
 from .transform import Transform, rodrigues, skew
@@ -48,7 +46,7 @@ from .transform import Transform, rodrigues, skew
 __all__ = ["exp6", "log6", "se3_matrix"]
 
 
-def se3_matrix(twist: Any) -> ImmutableMatrix:
+def se3_matrix(twist: ScrewLike) -> ImmutableMatrix:
     r"""The 4x4 matrix ``[[[omega]x, v_O], [0, 0]]`` of a twist (an element of se(3)).
 
     ``d/dt exp6($, t) = [$] exp6($, t)``.
@@ -67,7 +65,7 @@ def se3_matrix(twist: Any) -> ImmutableMatrix:
     return ImmutableMatrix(top.col_join(zeros(1, 4)))
 
 
-def exp6(twist: Any, theta: Any) -> Transform:
+def exp6(twist: ScrewLike, theta: ScalarLike) -> Transform:
     r"""The finite screw displacement ``exp([$] theta)`` of a twist: a :class:`Transform`.
 
     Explanation
@@ -157,7 +155,7 @@ def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
     return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s
 
 
-def log6(T: Any) -> tuple[Twist, Expr]:
+def log6(T: Transform) -> tuple[Twist, Expr]:
     r"""The screw of a rigid motion (Mozzi-Chasles): a unit twist and an angle.
 
     Explanation

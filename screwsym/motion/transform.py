@@ -32,7 +32,8 @@ Lynch & Park, *Modern Robotics*, Cambridge 2017, Sections 3.3 and 3.4.
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any, NoReturn, TypeVar, overload
 
 from sympy import Expr, ImmutableMatrix, S, cos, sin, sqrt, trigsimp, zeros
 
@@ -46,12 +47,16 @@ from ..core.checks import (
 )
 from ..core.decide import is_zero, is_zero_scaled, is_zero_vector
 from ..core.formulas import moved
-from ..core.screw import Screw
+from ..core.screw import MatrixLike, ScalarLike, Screw, VectorLike
 from ..core.tidy import tidy
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["Transform", "skew", "adjoint_matrix"]
 
-VectorLike = Any
+#: a screw of any kind: Transform.apply gives back the kind it is given
+_S = TypeVar("_S", bound=Screw)
 
 
 def skew(v: VectorLike) -> ImmutableMatrix:
@@ -204,17 +209,17 @@ class Transform(ScrewsymBasic):
     _op_priority = 30.0
     __array_ufunc__ = None
 
-    def __new__(cls, R: Any, p: VectorLike):
+    def __new__(cls, R: MatrixLike, p: VectorLike) -> Self:
         return cls._new(check_rotation(R, "R"), check_vector(p, "p"))
 
     @classmethod
-    def _new(cls, R: ImmutableMatrix, p: ImmutableMatrix) -> Transform:
+    def _new(cls, R: ImmutableMatrix, p: ImmutableMatrix) -> Self:
         """Build from parts already known to be a rotation and a 3x1 vector (no checks)."""
         return ScrewsymBasic.__new__(cls, ImmutableMatrix(R), ImmutableMatrix(p))
 
     # ------------------------------------------------------------ constructors
     @classmethod
-    def identity(cls) -> Transform:
+    def identity(cls) -> Self:
         """The identity motion.
 
         >>> Transform.identity()
@@ -223,7 +228,7 @@ class Transform(ScrewsymBasic):
         return cls._new(ImmutableMatrix.eye(3), zeros(3, 1))
 
     @classmethod
-    def translation(cls, d: VectorLike) -> Transform:
+    def translation(cls, d: VectorLike) -> Self:
         """The translation by ``d``.
 
         >>> Transform.translation([1, 2, 3]).apply([0, 0, 0]).T
@@ -232,7 +237,8 @@ class Transform(ScrewsymBasic):
         return cls._new(ImmutableMatrix.eye(3), check_vector(d, "d"))
 
     @classmethod
-    def rotation(cls, direction: VectorLike, angle: Any, *, point: VectorLike = None) -> Transform:
+    def rotation(cls, direction: VectorLike, angle: ScalarLike, *,
+                 point: VectorLike | None = None) -> Self:
         r"""The rotation by ``angle`` about the line through ``point`` along ``direction``.
 
         Rodrigues' formula ``R = I + sin(angle) K + (1 - cos(angle)) K^2`` with
@@ -262,7 +268,7 @@ class Transform(ScrewsymBasic):
         return cls._new(R, (ImmutableMatrix.eye(3) - R) * point)
 
     @classmethod
-    def from_matrix(cls, M: Any, *, name: str = "M") -> Transform:
+    def from_matrix(cls, M: MatrixLike, *, name: str = "M") -> Self:
         """The transform of the 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
 
         Errors name the argument ``name`` (as :meth:`Screw.from_matrix
@@ -311,18 +317,18 @@ class Transform(ScrewsymBasic):
         return ImmutableMatrix(top.col_join(ImmutableMatrix([[0, 0, 0, 1]])))
 
     # -------------------------------------------------------------- the group
-    def __matmul__(self, other):
+    def __matmul__(self, other: Transform) -> Transform:
         """``T1 @ T2 = (R1 R2, R1 p2 + p1)``: first ``T2``, then ``T1``."""
         if not isinstance(other, Transform):
             return NotImplemented
         return Transform._new(self.R * other.R, self.R * other.p + self.p)
 
-    def __rmatmul__(self, other):
+    def __rmatmul__(self, other: object) -> NoReturn:
         raise TypeError(
             f"cannot compose a {type(other).__name__} with a Transform; use T.matrix for the 4x4"
         )
 
-    def __mul__(self, other):
+    def __mul__(self, other: object) -> NoReturn:
         raise TypeError("compose transforms with '@' (T1 @ T2), and move objects with T.apply(x)")
 
     __rmul__ = __mul__
@@ -373,7 +379,15 @@ class Transform(ScrewsymBasic):
         """
         return adjoint_matrix(self)
 
-    def apply(self, obj: Any, *, direction: bool = False):
+    @overload
+    def apply(self, obj: Transform, *, direction: bool = False) -> Transform: ...
+    @overload
+    def apply(self, obj: _S, *, direction: bool = False) -> _S: ...
+    @overload
+    def apply(self, obj: VectorLike, *, direction: bool = False) -> ImmutableMatrix: ...
+
+    def apply(self, obj: Transform | Screw | VectorLike, *,
+              direction: bool = False) -> Transform | Screw | ImmutableMatrix:
         r"""Carry ``obj`` by the motion: a point, a direction, or any screw.
 
         * a 3-vector is a point, ``R x + p`` (a 3x1 matrix back), or with
@@ -404,7 +418,7 @@ class Transform(ScrewsymBasic):
         x = check_point_or_direction(obj, "obj")
         return ImmutableMatrix(self.R * x) if direction else ImmutableMatrix(self.R * x + self.p)
 
-    def equals(self, other: Any) -> bool | None:
+    def equals(self, other: Transform) -> bool | None:
         """Whether the two motions are equal mathematically: True, False or None.
 
         ``==`` compares structure, as everywhere in SymPy.
@@ -418,7 +432,7 @@ class Transform(ScrewsymBasic):
         return is_zero_vector(diff)
 
     # ------------------------------------------------------- SymPy integration
-    def applyfunc(self, f) -> Transform:
+    def applyfunc(self, f: Callable[[Expr], Any]) -> Transform:
         """Apply ``f`` to every entry of ``R`` and ``p`` (e.g. ``trigsimp``); checked again.
 
         >>> from sympy import symbols
@@ -428,10 +442,10 @@ class Transform(ScrewsymBasic):
         """
         return Transform(self.R.applyfunc(f), self.p.applyfunc(f))
 
-    def _eval_simplify(self, **kwargs):
+    def _eval_simplify(self, **kwargs: Any) -> Transform:
         return Transform._new(self.R.simplify(**kwargs), self.p.simplify(**kwargs))
 
-    def _eval_diff_parts(self, *symbols, **kwargs):
+    def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> ImmutableMatrix:
         """The derivative of the 4x4 matrix (a derivative of a motion is not a motion).
 
         >>> from sympy import symbols
@@ -445,20 +459,20 @@ class Transform(ScrewsymBasic):
         """
         return self.matrix.diff(*symbols, **kwargs)
 
-    def _eval_evalf_parts(self, n: int = 15, **options):
+    def _eval_evalf_parts(self, n: int = 15, **options: Any) -> Transform:
         return Transform(self.R.evalf(n, **options), self.p.evalf(n, **options))
 
-    def _sympystr(self, printer) -> str:
+    def _sympystr(self, printer: Any) -> str:
         rows = ", ".join(
             "[" + ", ".join(printer._print(e) for e in self.R.row(i)) + "]" for i in range(3)
         )
         p = ", ".join(printer._print(e) for e in self.p)
         return f"Transform(R=[{rows}], p=[{p}])"
 
-    def _latex(self, printer) -> str:
+    def _latex(self, printer: Any) -> str:
         return printer._print(self.matrix)
 
-    def _pretty(self, printer):
+    def _pretty(self, printer: Any) -> Any:
         """The 4x4 matrix, as SymPy draws matrices.
 
         >>> from sympy import pretty

@@ -9,6 +9,8 @@ later processes load the compiled code.  Imported only when the numba back
 end is asked for (``pip install "screwsym[fast]"``).
 """
 
+from typing import Any
+
 import numpy as np
 
 from ..core.formulas import SWAP
@@ -16,8 +18,9 @@ from ..core.formulas import SWAP
 try:
     import numba
 except ImportError:  # pragma: no cover - numba is optional; lambdify refuses "numba" first
-    numba = None
+    numba = None  # type: ignore[assignment]  # the optional module, or None without it
 
+_prange: Any  # numba.prange, or range without numba
 if numba is not None:
     _jit = numba.njit(cache=True)
     _parallel_jit = numba.njit(parallel=True, cache=True)

@@ -39,6 +39,7 @@ a first compilation nobody asked for.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -63,7 +64,7 @@ class MobilityMap(NamedTuple):
 
 def mobility_map(
     mechanism: ParallelMechanism, args: Any, *, rtol: float = 1e-9, backend: str = "numpy"
-):
+) -> Callable[..., MobilityMap]:
     r"""A vectorised function giving the mobility of ``mechanism`` at many configurations.
 
     Explanation
@@ -113,7 +114,7 @@ def mobility_map(
     limbs = mechanism.limbs
     matrices = tuple(ImmutableMatrix(limb.twists.matrix) for limb in limbs)
     listed = args if isinstance(args, (list, tuple)) else [args]
-    given = set()
+    given: set[Any] = set()
     for a in listed:
         given |= getattr(a, "free_symbols", set())
     missing = sorted(set().union(*(m.free_symbols for m in matrices)) - given, key=str)
@@ -180,7 +181,7 @@ def _qrcp(C: np.ndarray, want_q: bool):
         t = np.einsum("cqn,qn->cn", rest, v)
         rest -= 2 * t[:, None, :] * v[None, :, :]
         rdiag[j] = nx
-        if want_q:
+        if Qt is not None:  # want_q
             qs = Qt[j:, :, :]
             qs -= 2 * v[:, None, :] * np.einsum("qn,qkn->kn", v, qs)[None, :, :]
     return rdiag, Qt

@@ -45,8 +45,8 @@ imported only when a function here is called.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
-from typing import Any
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any, TypeAlias
 
 import numpy as np
 from sympy import Abs, Basic, ImmutableMatrix
@@ -55,10 +55,13 @@ from sympy.matrices import MatrixBase
 from ..core.checks import check_no_strings, check_vector
 from ..core.decide import is_zero_scaled
 from ..core.formulas import foot_point, pitch_ratio
-from ..core.line import LineVector, common_normal, contains
-from ..core.screw import Screw, check_screw
+from ..core.line import LineLike, LineVector, common_normal, contains
+from ..core.screw import Screw, ScrewLike, VectorLike, check_screw
 from ..core.twist import Twist
 from ..core.wrench import Wrench
+
+if TYPE_CHECKING:
+    from mpl_toolkits.mplot3d import Axes3D
 
 __all__ = [
     "plot",
@@ -73,7 +76,7 @@ __all__ = [
     "helix_advance",
 ]
 
-Subs = Mapping[Any, Any] | None
+Subs: TypeAlias = Mapping[Any, Any] | None
 
 TWIST_COLOR = "tab:green"
 WRENCH_COLOR = "tab:red"
@@ -122,7 +125,8 @@ def _floats(m: ImmutableMatrix, name: str) -> np.ndarray:
     return np.array(out, dtype=float)
 
 
-def _screw_floats(obj: Any, subs: dict, name: str, cls: type = Screw):
+def _screw_floats(obj: Any, subs: dict, name: str,
+                  cls: type[Screw] = Screw) -> tuple[Screw, np.ndarray, np.ndarray]:
     """Return the screw (after ``subs``) and its two parts as float arrays."""
     s = check_screw(obj, name, cls)
     s = _numeric(s, subs, name)
@@ -186,7 +190,7 @@ def _mpl():
     return plt
 
 
-def _axes(ax: Any):
+def _axes(ax: Axes3D | None) -> Axes3D:
     plt = _mpl()
     if ax is None:
         fig = plt.figure(figsize=(6, 5))
@@ -203,7 +207,7 @@ def _gid(kind: str) -> str:
     return f"screwsym.{kind}"
 
 
-def find_artists(ax: Any, kind: str) -> list:
+def find_artists(ax: Axes3D, kind: str) -> list[Any]:
     """The artists of one kind that screwsym drew into ``ax``.
 
     ``kind`` is one of ``line``, ``arrow``, ``head``, ``foot``, ``origin``,
@@ -357,9 +361,10 @@ def _anchor(at: Any, subs: dict, s: Screw, P: np.ndarray) -> np.ndarray:
 # --------------------------------------------------------------------------
 
 
-def plot_line(line: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_line(line: LineLike, ax: Axes3D | None = None, *, subs: Subs = None,
+              at: VectorLike | None = None,
               length: float | None = None, color: str = SCREW_COLOR, label: str | None = None,
-              show_foot: bool = True):
+              show_foot: bool = True) -> Axes3D:
     r"""Draw a line vector ``(S; S0)``: its line, the arrow ``S`` and the foot point (1.16).
 
     Explanation
@@ -447,9 +452,10 @@ def _axis_glyph(ax, s: Screw, S: np.ndarray, S0: np.ndarray, subs: dict, at: Any
     return a, u, h
 
 
-def plot_screw(screw: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_screw(screw: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+               at: VectorLike | None = None,
                length: float | None = None, color: str = SCREW_COLOR,
-               label: str | None = None):
+               label: str | None = None) -> Axes3D:
     r"""Draw a screw: its axis (1.36), the arrow ``S`` and the pitch helix.
 
     Explanation
@@ -508,8 +514,9 @@ def _fmt(x: float) -> str:
     return f"{x:.3g}"
 
 
-def plot_couple(couple: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
-                color: str = WRENCH_COLOR, label: str | None = None):
+def plot_couple(couple: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+                at: VectorLike | None = None,
+                color: str = WRENCH_COLOR, label: str | None = None) -> Axes3D:
     r"""Draw a couple ``(0; C)`` as a free vector: a double-headed arrow and a curled arrow.
 
     Explanation
@@ -557,9 +564,10 @@ def plot_couple(couple: Any, ax: Any = None, *, subs: Subs = None, at: Any = Non
     return ax
 
 
-def plot_twist(twist: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_twist(twist: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+               at: VectorLike | None = None,
                length: float | None = None, color: str = TWIST_COLOR,
-               label: str | None = None):
+               label: str | None = None) -> Axes3D:
     r"""Draw a twist ``(omega; v_O)``: axis, ``omega``, sense of rotation and pitch helix.
 
     Explanation
@@ -613,9 +621,10 @@ def plot_twist(twist: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
     return ax
 
 
-def plot_wrench(wrench: Any, ax: Any = None, *, subs: Subs = None, at: Any = None,
+def plot_wrench(wrench: ScrewLike, ax: Axes3D | None = None, *, subs: Subs = None,
+                at: VectorLike | None = None,
                 length: float | None = None, color: str = WRENCH_COLOR,
-                label: str | None = None):
+                label: str | None = None) -> Axes3D:
     r"""Draw a wrench ``(f; C_O)``: the force on its axis, the parallel couple and the helix.
 
     Explanation
@@ -661,8 +670,9 @@ def plot_wrench(wrench: Any, ax: Any = None, *, subs: Subs = None, at: Any = Non
     return ax
 
 
-def plot_common_normal(l1: Any, l2: Any, ax: Any = None, *, subs: Subs = None,
-                       length: float | None = None, colors: tuple[str, str] = ("C0", "C1")):
+def plot_common_normal(l1: LineLike, l2: LineLike, ax: Axes3D | None = None, *,
+                       subs: Subs = None, length: float | None = None,
+                       colors: tuple[str, str] = ("C0", "C1")) -> Axes3D:
     r"""Draw two lines, their common normal and the twist angle (Fig. 1.3).
 
     Explanation
@@ -733,13 +743,14 @@ def plot_common_normal(l1: Any, l2: Any, ax: Any = None, *, subs: Subs = None,
     text = (f"$a_{{12}}$ = {_fmt(a12)}, $\\alpha_{{12}}$ = {alpha:.4g} rad "
             f"({math.degrees(alpha):.4g}°)")
     # in the corner of the axes, where it cannot cover the lines, the normal or the axis labels
-    t = ax.text2D(0.02, 0.98, text, transform=ax.transAxes, va="top", fontsize=9)
-    t.set_gid(_gid("label"))
+    caption = ax.text2D(0.02, 0.98, text, transform=ax.transAxes, va="top", fontsize=9)
+    caption.set_gid(_gid("label"))
     _fit(ax)
     return ax
 
 
-def plot_frame(ax: Any = None, *, length: float = 1.0, origin: Any = (0, 0, 0)):
+def plot_frame(ax: Axes3D | None = None, *, length: float = 1.0,
+               origin: VectorLike = (0, 0, 0)) -> Axes3D:
     """Draw the coordinate frame: gray arrows x, y, z from the origin O.
 
     Examples
@@ -767,7 +778,7 @@ def plot_frame(ax: Any = None, *, length: float = 1.0, origin: Any = (0, 0, 0)):
     return ax
 
 
-def plot(obj: Any, ax: Any = None, **kw: Any):
+def plot(obj: Screw | Sequence[Any], ax: Axes3D | None = None, **kw: Any) -> Axes3D:
     r"""Draw any screwsym object with its own glyph; a list or tuple draws each item.
 
     Dispatch: :class:`~screwsym.core.twist.Twist` to :func:`plot_twist`,

@@ -10,14 +10,18 @@ shadow SymPy's ``S``.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from sympy import ImmutableMatrix
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_exact, check_nonzero_vector, check_scalar, check_vector
+from ..core.screw import ScalarLike, VectorLike
 from ..core.twist import Twist
 from .screw_system import ScrewSystem
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["Joint", "Revolute", "Prismatic", "Helical", "Cylindrical", "Universal", "Spherical"]
 
@@ -69,12 +73,12 @@ class Revolute(Joint):
     __slots__ = ()
     freedom = 1
 
-    def __new__(cls, point: Any, direction: Any):
+    def __new__(cls, point: VectorLike, direction: VectorLike) -> Self:
         return ScrewsymBasic.__new__(
             cls, _point(point, "point"), _axis(direction, "direction")
         )
 
-    def _twists(self):
+    def _twists(self) -> list[Twist]:
         return [_rotation(*self.args)]
 
 
@@ -89,10 +93,10 @@ class Prismatic(Joint):
     __slots__ = ()
     freedom = 1
 
-    def __new__(cls, direction: Any):
+    def __new__(cls, direction: VectorLike) -> Self:
         return ScrewsymBasic.__new__(cls, _axis(direction, "direction"))
 
-    def _twists(self):
+    def _twists(self) -> list[Twist]:
         return [Twist.translation(self.args[0])]
 
 
@@ -107,7 +111,7 @@ class Helical(Joint):
     __slots__ = ()
     freedom = 1
 
-    def __new__(cls, point: Any, direction: Any, pitch: Any):
+    def __new__(cls, point: VectorLike, direction: VectorLike, pitch: ScalarLike) -> Self:
         return ScrewsymBasic.__new__(
             cls,
             _point(point, "point"),
@@ -115,7 +119,7 @@ class Helical(Joint):
             check_exact(check_scalar(pitch, "pitch"), "pitch"),
         )
 
-    def _twists(self):
+    def _twists(self) -> list[Twist]:
         r, u, h = self.args
         return [Twist.screw_motion(u, point=r, pitch=h)]
 
@@ -131,12 +135,12 @@ class Cylindrical(Joint):
     __slots__ = ()
     freedom = 2
 
-    def __new__(cls, point: Any, direction: Any):
+    def __new__(cls, point: VectorLike, direction: VectorLike) -> Self:
         return ScrewsymBasic.__new__(
             cls, _point(point, "point"), _axis(direction, "direction")
         )
 
-    def _twists(self):
+    def _twists(self) -> list[Twist]:
         r, u = self.args
         return [_rotation(r, u), Twist.translation(u)]
 
@@ -154,7 +158,7 @@ class Universal(Joint):
     __slots__ = ()
     freedom = 2
 
-    def __new__(cls, point: Any, dir1: Any, dir2: Any):
+    def __new__(cls, point: VectorLike, dir1: VectorLike, dir2: VectorLike) -> Self:
         return ScrewsymBasic.__new__(
             cls,
             _point(point, "point"),
@@ -162,7 +166,7 @@ class Universal(Joint):
             _axis(dir2, "dir2"),
         )
 
-    def _twists(self):
+    def _twists(self) -> list[Twist]:
         r, u1, u2 = self.args
         return [_rotation(r, u1), _rotation(r, u2)]
 
@@ -178,14 +182,14 @@ class Spherical(Joint):
     __slots__ = ()
     freedom = 3
 
-    def __new__(cls, point: Any):
+    def __new__(cls, point: VectorLike) -> Self:
         return ScrewsymBasic.__new__(cls, _point(point, "point"))
 
-    def _twists(self):
+    def _twists(self) -> list[Twist]:
         return [_rotation(self.args[0], ImmutableMatrix(e)) for e in _E]
 
 
-def check_joints(joints: tuple, name: str) -> tuple:
+def check_joints(joints: tuple[Any, ...], name: str) -> tuple[Joint, ...]:
     if not joints:
         raise ValueError(f"{name}: expected at least one joint, got none")
     for i, j in enumerate(joints):

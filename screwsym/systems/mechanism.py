@@ -41,7 +41,7 @@ planar 3-RRR platform need the actuated joints and are not in its scope.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from sympy import And, ImmutableMatrix, cancel, false, true
 
@@ -51,6 +51,9 @@ from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .joints import Joint, check_joints
 from .screw_system import MAX_CASES, ScrewSystem, _analysis
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["Limb", "ParallelMechanism", "Mobility", "motion_type"]
 
@@ -71,7 +74,7 @@ class Limb(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, *joints: Joint):
+    def __new__(cls, *joints: Joint) -> Self:
         return ScrewsymBasic.__new__(cls, *check_joints(joints, "joints"))
 
     @property
@@ -167,7 +170,7 @@ class ParallelMechanism(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, *limbs: Limb):
+    def __new__(cls, *limbs: Limb) -> Self:
         if not limbs:
             raise ValueError("limbs: expected at least one limb, got none")
         for i, limb in enumerate(limbs):
@@ -229,7 +232,7 @@ class ParallelMechanism(ScrewsymBasic):
         [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1R1T')]
         """
         max_cases = check_count(max_cases, "max_cases")
-        leaves: list[tuple[tuple, dict]] = [((), {})]
+        leaves: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = [((), {})]
         for i in range(len(self.args)):
             grown = []
             for conds, subs in leaves:
@@ -237,7 +240,7 @@ class ParallelMechanism(ScrewsymBasic):
                 grown.extend(_refine(conds, subs, limb.twists, max_cases))
             leaves = grown
             _check_cases(len(leaves), max_cases)
-        out = []
+        out: list[tuple[Any, Mobility | None]] = []
         for conds, subs in leaves:
             mech = self.xreplace(subs) if subs else self
             for conds2, subs2 in _refine(conds, subs, mech.constraints, max_cases):
@@ -260,12 +263,13 @@ def _check_cases(count: int, limit: int) -> None:
         )
 
 
-def _refine(conds: tuple, subs: dict, system: ScrewSystem, limit: int):
+def _refine(conds: tuple[Any, ...], subs: dict[Any, Any] | None, system: ScrewSystem,
+            limit: int) -> list[tuple[tuple[Any, ...], dict[Any, Any] | None]]:
     """The cases of ``system`` (already substituted) under ``conds``/``subs``: composed.
 
     A case whose rank is undecided keeps ``None`` as its substitution.
     """
-    out = []
+    out: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = []
     ranks = system.rank_conditions(max_cases=limit)
     for (cond, rank), (_, more) in zip(ranks, system.substitutions(max_cases=limit), strict=True):
         new_conds = conds if cond is true else conds + (cond,)

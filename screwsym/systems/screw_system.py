@@ -30,11 +30,12 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Sections 1.5
 from __future__ import annotations
 
 import random
+from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import lru_cache
 from itertools import combinations
 from math import gcd, lcm
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from sympy import (
     QQ,
@@ -60,26 +61,29 @@ from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_exact
 from ..core.decide import is_zero
 from ..core.formulas import SWAP
-from ..core.screw import Screw, check_screw
+from ..core.screw import Screw, ScrewLike, check_screw
 from ..core.twist import Twist
 from ..core.wrench import Wrench
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 __all__ = ["ScrewSystem"]
 
 #: the kinds an empty system can remember, by the name its marker argument holds
-_KIND_NAMES = {"Twist": Twist, "Wrench": Wrench}
+_KIND_NAMES: dict[str, type[Screw]] = {"Twist": Twist, "Wrench": Wrench}
 
 
-def _kind_of(system) -> type | None:
+def _kind_of(system: ScrewSystem) -> type[Screw] | None:
     """Twist or Wrench when the system is of one, else None (plain screws)."""
     kind = system.kind
     return kind if kind in (Twist, Wrench) else None
 
 
 #: the kind of the reciprocal system: twists and wrenches are each other's reciprocals
-_DUAL_KIND = {Twist: Wrench, Wrench: Twist, Screw: Screw}
+_DUAL_KIND: dict[type[Screw], type[Screw]] = {Twist: Wrench, Wrench: Twist, Screw: Screw}
 #: the class a system holds, by the members' ``_kind``
-_KINDS = {None: Screw, Twist._kind: Twist, Wrench._kind: Wrench}
+_KINDS: dict[str | None, type[Screw]] = {None: Screw, Twist._kind: Twist, Wrench._kind: Wrench}
 
 
 def check_screw_system_members(values: Any, name: str, kinds: dict) -> tuple:
@@ -201,7 +205,7 @@ class ScrewSystem(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, *screws: Any, kind: type | None = None):
+    def __new__(cls, *screws: ScrewLike, kind: type[Screw] | None = None) -> Self:
         # An empty system keeps its kind as a marker argument, so that ``func(*args)``
         # rebuilds it and its reciprocal is of the dual kind.
         if len(screws) == 1 and isinstance(screws[0], Str):
@@ -220,16 +224,16 @@ class ScrewSystem(ScrewsymBasic):
             return ScrewsymBasic.__new__(cls, Str(kind.__name__))
         return ScrewsymBasic.__new__(cls, *members)
 
-    def _eval_diff_parts(self, *symbols, **kwargs):
+    def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> ScrewSystem:
         return self.func(*(s.diff(*symbols, **kwargs) for s in self.screws), kind=self._marked_kind)
 
-    def _sympystr(self, printer) -> str:
+    def _sympystr(self, printer: Any) -> str:
         marked = self._marked_kind
         if marked is not None:
             return f"ScrewSystem(kind={marked.__name__})"
         return "ScrewSystem(" + ", ".join(printer._print(s) for s in self.screws) + ")"
 
-    def _latex(self, printer) -> str:
+    def _latex(self, printer: Any) -> str:
         r"""The span of the members, each in the book's notation.
 
         >>> from sympy import latex
@@ -249,14 +253,14 @@ class ScrewSystem(ScrewsymBasic):
         return tuple(a for a in self.args if not isinstance(a, Str))
 
     @property
-    def _marked_kind(self) -> type | None:
+    def _marked_kind(self) -> type[Screw] | None:
         """The kind an empty system was built with (``kind=``), else None."""
         if self.args and isinstance(self.args[0], Str):
             return _KIND_NAMES[self.args[0].name]
         return None
 
     @property
-    def kind(self) -> type:
+    def kind(self) -> type[Screw]:
         """``Twist`` or ``Wrench`` when the members are (or an empty system was built with
         ``kind=``), else ``Screw``.
 
@@ -282,7 +286,7 @@ class ScrewSystem(ScrewsymBasic):
     def __len__(self) -> int:
         return len(self.screws)
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[Screw]:
         return iter(self.screws)
 
     # ----------------------------------------------------------- generic
@@ -305,7 +309,7 @@ class ScrewSystem(ScrewsymBasic):
         pivots = _analysis(self.matrix).pivots
         return ScrewSystem(*(self.screws[i] for i in pivots), kind=_kind_of(self))
 
-    def contains(self, screw: Any) -> bool:
+    def contains(self, screw: ScrewLike) -> bool:
         """Whether ``screw`` lies in the span, generically (for generic values of the symbols).
 
         Exact for numeric systems.  Decided by the generic rank of the system
@@ -423,7 +427,7 @@ class ScrewSystem(ScrewsymBasic):
             for n in _cases(self.matrix, check_count(max_cases, "max_cases"))
         ]
 
-    def substitutions(self, *, max_cases: int = MAX_CASES) -> list[tuple[Boolean, dict]]:
+    def substitutions(self, *, max_cases: int = MAX_CASES) -> list[tuple[Boolean, dict[Any, Any]]]:
         """For each case of :meth:`rank_conditions`, the substitution of symbols that it makes.
 
         Applying the substitution (``system.xreplace(subs)``) gives a system
@@ -690,6 +694,7 @@ def _choose_minor(rg: _Ring, rank: int, pivots: tuple):
                 best = (key, m, rows, cols)
                 if key[0] == 0:
                     return best[1:]
+    assert best is not None, "a system of rank r has a non-zero r x r minor on its pivot rows"
     return best[1:]
 
 
@@ -881,7 +886,7 @@ def _impose(M, conds, subs, nonzero, pending: list, out: list) -> None:
             _impose(M, conds + (eq,), subs, nonzero, [g, _poly_expr(b, R)] + rest, out)
 
 
-def _basis_system(node: _Node, kind: type) -> ScrewSystem:
+def _basis_system(node: _Node, kind: type[Screw]) -> ScrewSystem:
     """The reciprocal basis of a case, by Cramer's rule on its minor (see ``reciprocal``)."""
     if node.rank == 0:
         eye = ImmutableMatrix.eye(6)
