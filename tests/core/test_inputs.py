@@ -255,11 +255,22 @@ def test_dir_and_all_list_every_public_name():
     for name in ("book", "codegen", "numeric", "unit", "CommonNormal", "exp6", "Revolute"):
         assert name in screwsym.__all__ and name in dir(screwsym)
     # attributes that a star import leaves out, since SymPy's star import binds the same names
-    for name in ("lambdify", "plot", "init_printing", "__version__"):
+    import importlib
+
+    homes = {
+        "lambdify": importlib.import_module("screwsym.codegen").lambdify,
+        "plot": importlib.import_module("screwsym.plot"),
+        "init_printing": importlib.import_module("screwsym.core.printing").init_printing,
+        "__version__": importlib.import_module("screwsym._version").__version__,
+    }
+    for name, home in homes.items():
         assert name not in screwsym.__all__ and name in dir(screwsym)
-        assert getattr(screwsym, name) is not None
-    for name in screwsym.__all__:
-        assert getattr(screwsym, name) is not None
+        assert getattr(screwsym, name) is home
+    # the star import binds exactly __all__, each name resolving
+    ns: dict = {}
+    exec("from screwsym import *", ns)  # noqa: S102 - a fixed statement
+    assert sorted(set(ns) - {"__builtins__"}) == sorted(screwsym.__all__)
+    assert all(ns[name] is getattr(screwsym, name) for name in screwsym.__all__)
 
 
 # ---------------------------------------------------------- CommonNormal

@@ -8,77 +8,82 @@ tolerance here, in the test, never as a verdict inside the library.  Both
 write twists ``(omega; v)`` like the book's ray order; modern_robotics writes
 wrenches moment first ``(m; f)``, converted with :func:`screwsym.convert`.
 
-Each check runs on 200 seeded random exact motions (rotations from rational
-quaternions, rational translations) and twists (rational, non-unit omega).
+Each check runs on 200 random exact motions (rotations from rational
+quaternions, rational translations) and twists (rational, non-unit omega), one
+test case each, drawn from a generator seeded by the test's seed and the case
+number: any one case reruns alone with its numbers
+(``pytest "tests/crosscheck/test_modern_robotics.py::test_exp_agrees_with_mr_matrix_exp6[17]"``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
-from _motions import random_transform, random_twist, rational_vector, to_float
+from _motions import quaternion_rotation, random_transform, random_twist, rational_vector, to_float
 from sympy import Matrix, Rational, pi, symbols
 
-from screwsym import Twist, Wrench, convert, exp6, lambdify, log6, power
+from screwsym import Transform, Twist, Wrench, convert, exp6, lambdify, log6, power
 from screwsym.motion.chain import ur5 as ur5_chain
 
 mr = pytest.importorskip("modern_robotics")
 
 N = 200
+CASES = range(N)
 
 
-def _rng(seed: int) -> np.random.Generator:
-    return np.random.default_rng(seed)
+def _rng(seed: int, case: int) -> np.random.Generator:
+    """The generator of one case: its numbers depend on ``(seed, case)`` only."""
+    return np.random.default_rng([seed, case])
 
 
-def test_apply_and_adjoint_agree_with_mr_adjoint():
-    rng = _rng(101)
-    for _ in range(N):
-        T = random_transform(rng)
-        twist, wrench = Twist(*(rational_vector(rng) for _ in "ab")), Wrench(
-            *(rational_vector(rng) for _ in "ab")
-        )
-        Tf = to_float(T.matrix)
-        Ad = mr.Adjoint(Tf)
-        np.testing.assert_allclose(to_float(T.adjoint()), Ad, atol=1e-12)
-        # twists move with Ad(T) in (omega; v) order
-        moved = to_float(convert(T.apply(twist), to="modern_robotics")).ravel()
-        np.testing.assert_allclose(
-            moved, Ad @ to_float(convert(twist, to="modern_robotics")).ravel(), atol=1e-12
-        )
-        # wrenches, (m; f) in modern_robotics, move with Ad(T^-1)^T (Modern Robotics (3.95))
-        moved = to_float(convert(T.apply(wrench), to="modern_robotics")).ravel()
-        expected = mr.Adjoint(mr.TransInv(Tf)).T @ to_float(
-            convert(wrench, to="modern_robotics")
-        ).ravel()
-        np.testing.assert_allclose(moved, expected, atol=1e-11)
-        # and the power of a wrench on a twist is the plain dot product in MR's layout
-        dot = float(
-            to_float(convert(wrench, to="modern_robotics")).ravel()
-            @ to_float(convert(twist, to="modern_robotics")).ravel()
-        )
-        assert abs(dot - float(power(twist, wrench))) < 1e-10
+@pytest.mark.parametrize("case", CASES)
+def test_apply_and_adjoint_agree_with_mr_adjoint(case):
+    rng = _rng(101, case)
+    T = random_transform(rng)
+    twist, wrench = Twist(*(rational_vector(rng) for _ in "ab")), Wrench(
+        *(rational_vector(rng) for _ in "ab")
+    )
+    Tf = to_float(T.matrix)
+    Ad = mr.Adjoint(Tf)
+    np.testing.assert_allclose(to_float(T.adjoint()), Ad, atol=1e-12)
+    # twists move with Ad(T) in (omega; v) order
+    moved = to_float(convert(T.apply(twist), to="modern_robotics")).ravel()
+    np.testing.assert_allclose(
+        moved, Ad @ to_float(convert(twist, to="modern_robotics")).ravel(), atol=1e-12
+    )
+    # wrenches, (m; f) in modern_robotics, move with Ad(T^-1)^T (Modern Robotics (3.95))
+    moved = to_float(convert(T.apply(wrench), to="modern_robotics")).ravel()
+    expected = mr.Adjoint(mr.TransInv(Tf)).T @ to_float(
+        convert(wrench, to="modern_robotics")
+    ).ravel()
+    np.testing.assert_allclose(moved, expected, atol=1e-11)
+    # and the power of a wrench on a twist is the plain dot product in MR's layout
+    dot = float(
+        to_float(convert(wrench, to="modern_robotics")).ravel()
+        @ to_float(convert(twist, to="modern_robotics")).ravel()
+    )
+    assert abs(dot - float(power(twist, wrench))) < 1e-10
 
 
-def test_exp_agrees_with_mr_matrix_exp6():
-    rng = _rng(202)
-    for _ in range(N):
-        twist = random_twist(rng)
-        theta = Rational(int(rng.integers(-40, 41)), 9)
-        ours = to_float(exp6(twist, theta).matrix)
-        se3 = mr.VecTose3(to_float(twist.matrix).ravel() * float(theta))
-        np.testing.assert_allclose(ours, mr.MatrixExp6(se3), atol=1e-11)
+@pytest.mark.parametrize("case", CASES)
+def test_exp_agrees_with_mr_matrix_exp6(case):
+    rng = _rng(202, case)
+    twist = random_twist(rng)
+    theta = Rational(int(rng.integers(-40, 41)), 9)
+    ours = to_float(exp6(twist, theta).matrix)
+    se3 = mr.VecTose3(to_float(twist.matrix).ravel() * float(theta))
+    np.testing.assert_allclose(ours, mr.MatrixExp6(se3), atol=1e-11)
 
 
-def test_exp_of_a_translation_agrees_with_mr():
-    rng = _rng(203)
-    for _ in range(20):
-        v = rational_vector(rng)
-        theta = Rational(int(rng.integers(-40, 41)), 9)
-        se3 = mr.VecTose3(np.r_[0.0, 0, 0, np.array(v, dtype=float)] * float(theta))
-        np.testing.assert_allclose(
-            to_float(exp6(Twist([0, 0, 0], v), theta).matrix), mr.MatrixExp6(se3), atol=1e-12
-        )
+@pytest.mark.parametrize("case", range(20))
+def test_exp_of_a_translation_agrees_with_mr(case):
+    rng = _rng(203, case)
+    v = rational_vector(rng)
+    theta = Rational(int(rng.integers(-40, 41)), 9)
+    se3 = mr.VecTose3(np.r_[0.0, 0, 0, np.array(v, dtype=float)] * float(theta))
+    np.testing.assert_allclose(
+        to_float(exp6(Twist([0, 0, 0], v), theta).matrix), mr.MatrixExp6(se3), atol=1e-12
+    )
 
 
 def _assert_same_log(T, ours, theirs, half_turn: bool) -> int:
@@ -94,38 +99,48 @@ def _assert_same_log(T, ours, theirs, half_turn: bool) -> int:
     return 1
 
 
-def test_log_agrees_with_mr_matrix_log6():
-    rng = _rng(303)
-    half_turns = 0
-    for _ in range(N):
-        T = random_transform(rng)  # a quaternion with a zero real part is a half-turn
-        twist, theta = log6(T)
-        ours = to_float(twist.matrix).ravel() * float(theta)
-        theirs = mr.se3ToVec(mr.MatrixLog6(to_float(T.matrix)))
-        assert float(theta) > 0 and abs(np.linalg.norm(to_float(twist.omega)) - 1) < 1e-12
-        half_turns += _assert_same_log(T, ours, theirs, theta == pi)
-    assert half_turns >= 3
+def _check_log(T) -> int:
+    twist, theta = log6(T)
+    ours = to_float(twist.matrix).ravel() * float(theta)
+    theirs = mr.se3ToVec(mr.MatrixLog6(to_float(T.matrix)))
+    assert float(theta) > 0 and abs(np.linalg.norm(to_float(twist.omega)) - 1) < 1e-12
+    return _assert_same_log(T, ours, theirs, theta == pi)
 
 
-def test_pytransform3d_exp_adjoint_and_log_agree():
+@pytest.mark.parametrize("case", CASES)
+def test_log_agrees_with_mr_matrix_log6(case):
+    _check_log(random_transform(_rng(303, case)))
+
+
+#: half-turns, where the logarithm has two right answers: quaternions with a zero real part
+HALF_TURNS = [(1, 0, 0), (0, 0, 3), (1, 1, 0), (2, -1, 2), (-3, 1, 5)]
+
+
+@pytest.mark.parametrize("bcd", HALF_TURNS)
+def test_log_of_a_half_turn_agrees_with_mr_matrix_log6(bcd):
+    T = Transform(quaternion_rotation(0, *bcd), [Rational(2, 7), -1, Rational(3, 5)])
+    assert _check_log(T) == 1  # the half-turn branch of the comparison ran
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_pytransform3d_exp_adjoint_and_log_agree(case):
     pt = pytest.importorskip("pytransform3d.transformations")
-    rng = _rng(404)
-    for _ in range(N):
-        twist = random_twist(rng)
-        theta = Rational(int(rng.integers(-40, 41)), 9)
-        Stheta = to_float(twist.matrix).ravel() * float(theta)
-        np.testing.assert_allclose(
-            to_float(exp6(twist, theta).matrix),
-            pt.transform_from_exponential_coordinates(Stheta),
-            atol=1e-10,
-        )
-        T = random_transform(rng)
-        Tf = to_float(T.matrix)
-        np.testing.assert_allclose(to_float(T.adjoint()), pt.adjoint_from_transform(Tf), atol=1e-12)
-        u, angle = log6(T)
-        ours = to_float(u.matrix).ravel() * float(angle)
-        theirs = pt.exponential_coordinates_from_transform(Tf)
-        _assert_same_log(T, ours, theirs, angle == pi)
+    rng = _rng(404, case)
+    twist = random_twist(rng)
+    theta = Rational(int(rng.integers(-40, 41)), 9)
+    Stheta = to_float(twist.matrix).ravel() * float(theta)
+    np.testing.assert_allclose(
+        to_float(exp6(twist, theta).matrix),
+        pt.transform_from_exponential_coordinates(Stheta),
+        atol=1e-10,
+    )
+    T = random_transform(rng)
+    Tf = to_float(T.matrix)
+    np.testing.assert_allclose(to_float(T.adjoint()), pt.adjoint_from_transform(Tf), atol=1e-12)
+    u, angle = log6(T)
+    ours = to_float(u.matrix).ravel() * float(angle)
+    theirs = pt.exponential_coordinates_from_transform(Tf)
+    _assert_same_log(T, ours, theirs, angle == pi)
 
 
 # -------------------------------------------------------------------------
@@ -158,7 +173,7 @@ def _mr_ur5():
 def test_ur5_kinematics_and_jacobians_agree_with_mr(ur5):
     _, functions = ur5
     M, Slist, Blist = _mr_ur5()
-    rng = _rng(505)
+    rng = _rng(505, 0)  # one batch of N poses, one case
     Q = rng.uniform(-np.pi, np.pi, size=(N, 6))
     fk, js, jb = functions(Q)  # one batched call for all the poses
     for k in range(N):
@@ -172,7 +187,7 @@ def test_ur5_exact_numbers_agree_with_mr(ur5):
     """The exact path with numbers for q (no symbols, no lambdify)."""
     chain, _ = ur5
     M, Slist, Blist = _mr_ur5()
-    rng = _rng(606)
+    rng = _rng(606, 0)  # three exact poses, one case
     for _ in range(3):
         q = [Rational(int(n), 7) for n in rng.integers(-21, 22, size=6)]
         qf = np.array(q, dtype=float)

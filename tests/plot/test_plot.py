@@ -6,13 +6,13 @@ import math
 import subprocess
 import sys
 
-import matplotlib
+import numpy as np
+import pytest
 
+matplotlib = pytest.importorskip("matplotlib")
 matplotlib.use("Agg")
 
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pytest  # noqa: E402
 from sympy import Rational, pi, sqrt, symbols  # noqa: E402
 
 from screwsym import LineVector, Screw, Twist, Wrench, common_normal, foot  # noqa: E402

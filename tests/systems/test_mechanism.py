@@ -11,17 +11,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from sympy import Matrix, Rational, expand, sqrt, symbols, true
+from _mechanisms import E, O, Z, four_bar, three_rps
+from sympy import Matrix, Rational, expand, symbols, true
 
 from screwsym import ScrewSystem, reciprocal_product
 from screwsym.numeric.mobility import mobility_map
 from screwsym.systems.joints import C, H, P, R, S, U
 from screwsym.systems.mechanism import Limb, Mobility, ParallelMechanism, motion_type
-
-Z = [0, 0, 1]
-O = [0, 0, 0]
-#: unit radial directions at 0, 120 and 240 degrees
-E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
 
 
 def sub(a, b):
@@ -43,25 +39,6 @@ def check_consistent(m: Mobility, mech: ParallelMechanism):
 
 
 # ------------------------------------------------------------- mechanisms
-
-
-def four_bar(B=(1, 2, 0), Cp=(3, 3, 0)):
-    """A-B-C-D, base joints A = O and D = (4, 0, 0); limbs A-B and D-C carry the coupler B-C."""
-    return ParallelMechanism(Limb(R(O, Z), R(list(B), Z)), Limb(R([4, 0, 0], Z), R(list(Cp), Z)))
-
-
-def rps_leg(i, rho, h, base=2):
-    """3-RPS leg i: R at base * e_i, axis tangent; the leg in the plane normal to the R axis."""
-    e = E[i]
-    b = [base * c for c in e]
-    d = [rho * e[0], rho * e[1], h]
-    top = [x + y for x, y in zip(b, d, strict=True)]
-    return Limb(R(b, [-e[1], e[0], 0]), P(d), S(top))
-
-
-def three_rps(rho=None, h=(2, 2, 3)):
-    rho = (Rational(-1, 2),) * 3 if rho is None else rho
-    return ParallelMechanism(*(rps_leg(i, rho[i], h[i]) for i in range(3)))
 
 
 def upu_leg(b, a1, top):
@@ -312,58 +289,6 @@ def test_joints_refuse_floats_naming_the_argument():
 
 
 # ---------------------------------------------------------------- numeric
-
-
-def test_mobility_map_agrees_with_the_exact_analysis():
-    # 3-RPS at random heights (generic: 3) and at the concurrent configuration (4)
-    rho = symbols("rho1:4", real=True)
-    h = symbols("h1:4", positive=True)
-    mech = three_rps(rho, h)
-    f = mobility_map(mech, [*rho, *h])
-    rng = np.random.default_rng(0)
-    vals = [rng.uniform(-1, 1, 50) for _ in range(3)] + [rng.uniform(1, 2, 50) for _ in range(3)]
-    vals[4][:5] = vals[3][:5]
-    vals[5][:5] = vals[3][:5]
-    vals[2][:5] = -6 - vals[0][:5] - vals[1][:5]
-    out = f(*vals)
-    assert out.mobility.shape == (50,) and out.limb_constraints.shape == (50, 3)
-    assert list(out.mobility[:5]) == [4] * 5 and (out.mobility[5:] == 3).all()
-    assert (out.limb_constraints == 1).all()
-    for j in (0, 7):  # exact check of two configurations
-        at = {s: Rational(float(v[j])) for s, v in zip((*rho, *h), vals, strict=True)}
-        if j == 0:  # on the singular set exactly, not only to rounding
-            at[rho[2]] = -6 - at[rho[0]] - at[rho[1]]
-        exact = mech.xreplace(at).mobility().mobility
-        assert exact == out.mobility[j]
-    # sigma: the third |R_jj| of the union vanishes only at the singular configurations
-    assert (out.sigma[:5, 2] < 1e-12).all() and (out.sigma[5:, 2] > 1e-6).all()
-
-
-def test_mobility_map_backends_agree():
-    pytest.importorskip("numba")
-    bx, by = symbols("b_x b_y", real=True)
-    mech = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
-    grid = np.meshgrid(np.linspace(-2, 2, 9), np.linspace(-1, 1, 5))
-    a = mobility_map(mech, [bx, by])(*grid)
-    b = mobility_map(mech, [bx, by], backend="numba")(*grid)
-    assert a.mobility.shape == (5, 9)
-    assert (a.mobility == b.mobility).all() and np.allclose(a.sigma, b.sigma)
-    # b_y = 0: collinear, 2 DOF, except b = (0, 0) where B sits on A (exact analysis: 1 DOF)
-    assert a.mobility[2].tolist() == [2, 2, 2, 2, 1, 2, 2, 2, 2]
-    assert (a.mobility[[0, 1, 3, 4]] == 1).all()
-    assert mech.xreplace({bx: 0, by: 0}).mobility().mobility == 1
-
-
-def test_mobility_map_bad_input():
-    bx = symbols("b_x", real=True)
-    mech = four_bar(B=(bx, 1, 0))
-    with pytest.raises(TypeError, match="mechanism: expected a ParallelMechanism, got Limb"):
-        mobility_map(mech.limbs[0], [bx])
-    message = "args: expected every symbol of the mechanism, missing b_x"
-    with pytest.raises(ValueError, match=message):
-        mobility_map(mech, [])
-    with pytest.raises(ValueError, match="rtol: expected a positive finite number, got 0"):
-        mobility_map(mech, [bx], rtol=0)
 
 
 def test_which_rotations_and_translations():

@@ -1,10 +1,13 @@
-"""Tests for screwsym.numeric: generated functions agree with the symbolic core."""
+"""Tests for screwsym.numeric.screws: generated functions agree with the symbolic core; their cache."""
 
 from __future__ import annotations
 
+import hashlib
 import inspect
+import json
 import os
 import random
+import shutil
 import subprocess
 import sys
 import textwrap
@@ -13,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import sympy
 from _backends import BACKENDS, HAS_NUMBA
 from sympy import Rational, symbols
 
@@ -208,3 +212,92 @@ def test_a_new_process_loads_the_compiled_functions_without_rebuilding_them(tmp_
         index.write_text('{"key": "../../evil"}')
     third = run("second")
     assert third.returncode != 0 and "rebuilt pitch" in third.stderr
+
+
+# --------------------------------------------------------------- the cache cannot go stale
+#: A fresh process on a copy of the package: which functions it built (rather than loaded
+#: from the numba index), the digest that tags the index, and the pitch of Example 1.4.
+_PROBE = textwrap.dedent("""
+    import json, sys
+    import numpy as np
+    from screwsym import numeric
+    built, definition = [], numeric.screws._definition
+    def spy(name):
+        built.append(name)
+        return definition(name)
+    numeric.screws._definition = spy
+    h = float(numeric.pitch(np.array([1.0, 1, 0, 1, 0, 0]))) if sys.argv[1] == "pitch" else None
+    print(json.dumps({"file": numeric.screws.__file__, "tag": numeric.screws._source_digest(),
+                      "built": built, "pitch": h}))
+""")
+
+#: An edited formula in a subfolder of the package: core/screw.py's pitch, doubled.
+_EDIT = """
+
+_book_pitch = pitch
+
+
+def pitch(s, **kwargs):  # an edited formula: twice the book's pitch
+    return 2 * _book_pitch(s, **kwargs)
+"""
+
+
+def _copy_package(dest: Path) -> Path:
+    package = dest / "screwsym"
+    shutil.copytree(Path(screwsym.__file__).parent, package,
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    return package
+
+
+def _probe(package: Path, cache: Path, what: str = "tag") -> dict:
+    env = dict(os.environ, SCREWSYM_CACHE_DIR=str(cache), PYTHONPATH=str(package.parent))
+    out = subprocess.run([sys.executable, "-c", _PROBE, what], env=env, cwd=package.parent,
+                         capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    result = json.loads(out.stdout.splitlines()[-1])
+    assert Path(result["file"]).resolve().parent.parent == package.resolve()  # the copy ran
+    return result
+
+
+def old_digest(package: Path) -> str:
+    """The rule before 0.2.0: the top-level modules and codegen's, keyed by file name."""
+    h = hashlib.sha256(sympy.__version__.encode())
+    for path in sorted([*package.glob("*.py"), *package.glob("codegen/*.py")]):
+        h.update(path.name.encode() + b"\0" + path.read_bytes())
+    return h.hexdigest()[:24]
+
+
+def test_the_digest_sees_every_file_by_its_path(tmp_path):
+    a, b = _copy_package(tmp_path / "a"), _copy_package(tmp_path / "b")
+    cache = tmp_path / "cache"
+    tag = _probe(a, cache)["tag"]
+    assert _probe(b, cache)["tag"] == tag  # the same source elsewhere: the same tag
+    # an edited formula in a subpackage changes the tag; the old rule did not see it
+    with open(b / "core" / "screw.py", "a", encoding="utf-8") as f:
+        f.write(_EDIT)
+    assert _probe(b, cache)["tag"] != tag
+    assert old_digest(b) == old_digest(a)
+    # the same bytes at another path (a module moved into a new subfolder) change it too
+    for package, folder in ((a, "here"), (b, "there")):
+        (package / "core" / folder).mkdir()
+        (package / "core" / folder / "__init__.py").write_text("")
+        (package / "core" / folder / "moved.py").write_text("def f():\n    return 1\n")
+    shutil.copyfile(a / "core" / "screw.py", b / "core" / "screw.py")  # undo the edit
+    assert _probe(a, cache)["tag"] != _probe(b, cache)["tag"]
+    assert old_digest(a) == old_digest(b)
+
+
+@pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
+def test_an_edited_formula_is_rebuilt_not_loaded_from_the_old_index(tmp_path):
+    package, cache = _copy_package(tmp_path), tmp_path / "cache"
+    first = _probe(package, cache, "pitch")
+    assert first["built"] == ["pitch"] and first["pitch"] == 0.5  # built, saved to the index
+    assert list((cache / "numba").glob("index-pitch-*.json"))
+    again = _probe(package, cache, "pitch")
+    assert again["built"] == [] and again["pitch"] == 0.5  # the same source: loaded
+    with open(package / "core" / "screw.py", "a", encoding="utf-8") as f:
+        f.write(_EDIT)
+    edited = _probe(package, cache, "pitch")
+    # rebuilt with the edit (a stale index would give the old formula's 0.5, building nothing)
+    assert (edited["built"], edited["pitch"]) == (["pitch"], 1.0)
+    assert edited["tag"] != first["tag"]

@@ -1,0 +1,25 @@
+"""The doctests of an optional floor are skipped where its extra is not installed.
+
+``testpaths`` collects the doctests of every module of ``screwsym``; those of
+``screwsym.plot`` draw with matplotlib (the ``plot`` extra), so without it they
+are skipped, as ``tests/plot`` skips itself with ``pytest.importorskip``.  This
+file imports nothing of screwsym (``tests/conftest.py`` must set the cache
+directory before screwsym loads).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+
+import pytest
+
+#: package folder (relative to the repository root) -> the module its doctests need
+OPTIONAL = {"screwsym/plot/": "matplotlib"}
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    for item in items:  # under screwsym/ every item is a doctest
+        path = item.path.resolve().relative_to(config.rootpath.resolve()).as_posix()
+        for folder, module in OPTIONAL.items():
+            if path.startswith(folder) and importlib.util.find_spec(module) is None:
+                item.add_marker(pytest.mark.skip(reason=f"{module} not installed"))
