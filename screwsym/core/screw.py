@@ -31,7 +31,7 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Chapter 1.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union, overload
+from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union, cast, overload
 
 import numpy as np
 from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
@@ -56,6 +56,10 @@ from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _va
 if TYPE_CHECKING:
     from numpy.typing import DTypeLike
     from typing_extensions import Self
+
+    # type-only: the line class is made in .line, which imports this module; at run time
+    # the axis is built through the registry of line classes (Screw._line_class)
+    from .line import LineVector
 
 __all__ = [
     "Screw",
@@ -326,7 +330,7 @@ class Screw(ScrewsymBasic):
         return _pitch(self)
 
     @property
-    def axis(self) -> Screw:
+    def axis(self) -> LineVector:
         """The axis line vector ``(S; S0 - h S)`` (1.36); see :func:`axis`."""
         return _axis(self)
 
@@ -643,13 +647,14 @@ def pitch(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> Expr:
     )
 
 
-def _axis(s: Screw, name: str | None = None, tidy: bool = True) -> Screw:
+def _axis(s: Screw, name: str | None = None, tidy: bool = True) -> LineVector:
     _require_axis(s, "axis", name)
+    line = cast("type[LineVector]", Screw._line_class())
     if s._pitch_is_zero:
-        return _finish(Screw._line_class()._rebuild(s.S, s.S0, name or "s"), tidy)
+        return _finish(line._rebuild(s.S, s.S0, name or "s"), tidy)
     if tidy:
-        return _known(Screw._line_class(), s.S, _axis_moment(s, True))
-    return Screw._line_class()(s.S, _axis_moment(s, False))
+        return _known(line, s.S, _axis_moment(s, True))
+    return line(s.S, _axis_moment(s, False))
 
 
 def _axis_moment(s: Screw, tidy: bool, h: Expr | None = None) -> ImmutableMatrix:
@@ -659,7 +664,7 @@ def _axis_moment(s: Screw, tidy: bool, h: Expr | None = None) -> ImmutableMatrix
     return _moment_minus(s.S0, h, s.S) if tidy else s.S0 - h * s.S
 
 
-def axis(s: ScrewLike, *, tidy: bool = True) -> Screw:
+def axis(s: ScrewLike, *, tidy: bool = True) -> LineVector:
     r"""The axis of a screw as a line vector ``(S; S0 - h S)`` (1.36, 1.37).
 
     The axis has the screw's direction and pitch 0.  A couple has no axis in

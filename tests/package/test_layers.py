@@ -42,13 +42,35 @@ def _resolve(module: str, is_package: bool, node: ast.ImportFrom) -> str:
     return ".".join(base + ([node.module] if node.module else []))
 
 
+def _is_type_checking(node: ast.AST) -> bool:
+    test = getattr(node, "test", None)
+    return isinstance(node, ast.If) and (
+        (isinstance(test, ast.Name) and test.id == "TYPE_CHECKING")
+        or (isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING")
+    )
+
+
+def runtime_nodes(tree: ast.AST):
+    """Every node of ``tree`` but those under ``if TYPE_CHECKING:``, which never run."""
+    stack = [tree]
+    while stack:
+        node = stack.pop()
+        yield node
+        if _is_type_checking(node):
+            stack.extend(node.orelse)  # type: ignore[attr-defined]
+        else:
+            stack.extend(ast.iter_child_nodes(node))
+
+
 def import_graph() -> dict[str, set[str]]:
-    """Edges ``module -> screwsym modules it imports`` (statements anywhere in the file)."""
+    """Edges ``module -> screwsym modules it imports`` when it runs (statements anywhere in the
+    file, in functions too, but not the type-only ones under ``if TYPE_CHECKING:``: a circle of
+    annotations is no circle of imports).  The floor rules below read every statement."""
     modules = _modules()
     graph: dict[str, set[str]] = {m: set() for m in modules}
     for module, path in modules.items():
         is_package = path.name == "__init__.py"
-        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        for node in runtime_nodes(ast.parse(path.read_text(), str(path))):
             targets: list[str] = []
             if isinstance(node, ast.Import):
                 targets = [a.name for a in node.names]
@@ -190,6 +212,20 @@ def test_the_rule_checker_rejects_what_it_should(statement, broken):
 )
 def test_the_cycle_finder_finds_cycles(graph, cycle):
     assert find_cycle(graph) == cycle
+
+
+def test_a_type_only_import_makes_no_cycle_but_a_lazy_one_does(tmp_path, monkeypatch):
+    pkg = tmp_path / "screwsym"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text("")
+    (pkg / "a.py").write_text("from .b import x\n")
+    (pkg / "b.py").write_text(
+        "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n    from .a import y\nelse:\n    pass\n"
+    )
+    monkeypatch.setattr(__import__(__name__), "ROOT", pkg)
+    assert find_cycle(import_graph()) is None
+    (pkg / "b.py").write_text("import typing\nif typing.TYPE_CHECKING:\n    pass\nelse:\n    from .a import y\n")
+    assert find_cycle(import_graph()) == ["screwsym.a", "screwsym.b", "screwsym.a"]
 
 
 def test_a_lazy_import_counts(tmp_path, monkeypatch):

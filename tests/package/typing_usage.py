@@ -52,6 +52,11 @@ def usage() -> None:
     for value, cls in [(s, Screw), (line, LineVector), (line2, LineVector), (t, Twist),
                        (t2, Twist), (w, Wrench), (c, Wrench)]:
         _exactly(value, cls)
+    # the axis of any screw is a line vector, to mypy as at run time
+    axes: list[LineVector] = [s.axis, t.axis, w.axis, axis(s)]
+    for ax in axes:
+        _exactly(ax, LineVector)
+    assert t.axis.contains(point) is True
 
     # the algebra of twists and wrenches closes; a sum of lines is a screw
     t_sum: Twist = t + t2 - 2 * t / 3
