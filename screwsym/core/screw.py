@@ -48,6 +48,7 @@ from .checks import (
     check_scalar,
     check_six,
     check_vector,
+    refusing_strings,
 )
 from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
 from .formulas import dual_part, foot_point, moved, pitch_ratio
@@ -478,7 +479,8 @@ class Screw(ScrewsymBasic):
         >>> Screw([cos(t)**2 + sin(t)**2, 0, 0], [0, 0, 0]).applyfunc(trigsimp)
         Screw([1, 0, 0], [0, 0, 0])
         """
-        return self._apply(lambda m: m.applyfunc(f))
+        g = refusing_strings(f, "applyfunc")  # a matrix would parse a string result
+        return self._apply(lambda m: m.applyfunc(g))
 
     # ------------------------------------------------------------ printing
     def _sympystr(self, printer: Any) -> str:
