@@ -59,8 +59,11 @@ if TYPE_CHECKING:
     from typing_extensions import Self
 
     # type-only: the line class is made in .line, which imports this module; at run time
-    # the axis is built through the registry of line classes (Screw._line_class)
+    # the axis is built through the registry of line classes (Screw._line_class).  Twist and
+    # Wrench (which import this module too) only type decompose_screw's overloads.
     from .line import LineVector
+    from .twist import Twist
+    from .wrench import Wrench
 
 __all__ = [
     "Screw",
@@ -820,6 +823,14 @@ def _decompose(s: Screw, name: str | None = None, tidy: bool = True) -> tuple[Sc
     moment = _axis_moment(s, tidy, h)
     line = _known(general._line_class(), s.S, moment) if tidy else general._line_class()(s.S, moment)
     return line, general(zeros(3, 1), h * s.S)
+
+
+@overload
+def decompose_screw(s: Twist, *, tidy: bool = True) -> tuple[Twist, Twist]: ...
+@overload
+def decompose_screw(s: Wrench, *, tidy: bool = True) -> tuple[Wrench, Wrench]: ...
+@overload
+def decompose_screw(s: ScrewLike, *, tidy: bool = True) -> tuple[Screw, Screw]: ...
 
 
 def decompose_screw(s: ScrewLike, *, tidy: bool = True) -> tuple[Screw, Screw]:
