@@ -166,8 +166,6 @@ class Screw(ScrewsymBasic):
     _combination: type[Screw] | None = None
     #: the class of the axis line of a decomposition, declared by ``line_of=`` below
     _line_classes: dict[type[Screw], type[Screw]] = {}
-    #: the root of the hierarchy (this class), for the checks, which cannot import it
-    _root: ClassVar[type[Screw]]
     #: whether the kind's invariant makes the pitch 0 (a line vector's does)
     _pitch_is_zero: bool = False
 
