@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from sympy import Basic, Integer, S, latex
+from sympy import Basic, S, latex, sympify
 from sympy.matrices import MatrixBase
 
 from ._verify import decide_nonzero, decide_zero, provably_nonnegative
@@ -244,6 +244,6 @@ def as_text(value: Any) -> str:
 def as_latex(value: Any) -> str:
     """A LaTeX form of a residual."""
     if isinstance(value, (Basic, MatrixBase, int)):
-        return latex(Integer(value) if isinstance(value, int) else value)
+        return latex(sympify(value, strict=True) if isinstance(value, int) else value)
     return str(value)
 

@@ -49,3 +49,10 @@ def test_the_scan_finds_parser_calls(tmp_path):
     f.write_text("sympify(x)\nsympy.sympify(x, strict=False)\nsympify(x, strict=True)\n"
                  "eval('1')\nparse_expr(s)\nexec(s)\n")
     assert [s.split(":")[1] for s in parser_calls(f, "m.py")] == ["1", "2", "4", "5", "6"]
+
+
+def test_a_book_residual_that_is_a_python_number_or_bool_keeps_its_latex():
+    # the strict sympify of an int (or bool) gives what the non-strict one gave
+    from screwsym.book._entry import as_latex
+
+    assert (as_latex(3), as_latex(True), as_latex(0)) == ("3", r"\text{True}", "0")
