@@ -445,6 +445,11 @@ class Screw(ScrewsymBasic):
     def _eval_simplify(self, **kwargs: Any) -> Self:
         return self._apply(lambda m: m.simplify(**kwargs))
 
+    if TYPE_CHECKING:
+        # ScrewsymBasic.diff gives what _eval_diff_parts gives: a screw (Twist and Wrench say
+        # their own kind)
+        def diff(self, *symbols: Any, **kwargs: Any) -> Screw: ...
+
     def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> Screw:
         """Differentiate both parts: ``d$/dt = (dS/dt; dS0/dt)``.
 

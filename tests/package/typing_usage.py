@@ -70,6 +70,11 @@ def usage() -> None:
     # a twist splits into two twists (rotation, translation), a wrench into two wrenches
     t_parts: tuple[Twist, Twist] = t2.decompose()
     w_parts: tuple[Wrench, Wrench] = decompose_screw(w)
+    # so does its derivative; a line's derivative is a screw
+    rate: Twist = Twist([h, 0, 0], [0, 0, h]).diff(h)
+    line_rate: Screw = LineVector([h, 0, 0], [0, 0, 0]).diff(h)
+    _exactly(rate, Twist)
+    _exactly(line_rate, Screw)
     for part in t_parts:
         _exactly(part, Twist)
     for part_w in w_parts:
