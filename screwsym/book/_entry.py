@@ -244,6 +244,6 @@ def as_text(value: Any) -> str:
 def as_latex(value: Any) -> str:
     """A LaTeX form of a residual."""
     if isinstance(value, (Basic, MatrixBase, int)):
-        return latex(sympify(value) if isinstance(value, int) else value)
+        return latex(sympify(value, strict=True) if isinstance(value, int) else value)
     return str(value)
 

@@ -18,6 +18,7 @@ Strings are never evaluated: components go through
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -78,6 +79,26 @@ def check_no_strings(value: Any, name: str) -> None:
             stack.extend(item.values())
         elif isinstance(item, (list, tuple, set, frozenset)):
             stack.extend(item)
+
+
+def refusing_strings(f: Callable[[Any], Any], name: str) -> Callable[[Any], Any]:
+    """``f``, raising ``TypeError`` when it returns a string (anywhere in its result).
+
+    For functions whose results SymPy sympifies without ``strict=True`` (a
+    matrix's ``applyfunc`` parses a string result as code).
+
+    >>> refusing_strings(lambda e: "x", "applyfunc")(1)
+    Traceback (most recent call last):
+    ...
+    TypeError: applyfunc: strings are never evaluated, got str 'x'
+    """
+
+    def checked(value: Any) -> Any:
+        result = f(value)
+        check_no_strings(result, name)
+        return result
+
+    return checked
 
 
 def _refuse_non_number(value: Any, name: str) -> None:

@@ -15,7 +15,7 @@ from sympy import Abs, Eq, Expr, Float, ImmutableMatrix, Rational, atan2, nan, s
 from sympy.core.evalf import prec_to_dps
 
 from .basic import ScrewsymBasic
-from .checks import check_choice, check_flag, check_vector
+from .checks import check_choice, check_flag, check_no_strings, check_vector
 from .decide import float_tau, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
 from .formulas import foot_point
 from .screw import (
@@ -210,6 +210,8 @@ class CommonNormal(ScrewsymBasic):
 
     def __new__(cls, a12: ScalarLike, normal: VectorLike, alpha12: ScalarLike,
                 foot1: VectorLike, foot2: VectorLike) -> Self:
+        # ImmutableMatrix sympifies its entries without strict=True: refuse text first
+        check_no_strings((a12, normal, alpha12, foot1, foot2), "CommonNormal")
         return ScrewsymBasic.__new__(
             cls, a12, ImmutableMatrix(normal), alpha12, ImmutableMatrix(foot1), ImmutableMatrix(foot2)
         )

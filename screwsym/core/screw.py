@@ -48,6 +48,7 @@ from .checks import (
     check_scalar,
     check_six,
     check_vector,
+    refusing_strings,
 )
 from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
 from .formulas import dual_part, foot_point, moved, pitch_ratio
@@ -58,8 +59,11 @@ if TYPE_CHECKING:
     from typing_extensions import Self
 
     # type-only: the line class is made in .line, which imports this module; at run time
-    # the axis is built through the registry of line classes (Screw._line_class)
+    # the axis is built through the registry of line classes (Screw._line_class).  Twist and
+    # Wrench (which import this module too) only type decompose_screw's overloads.
     from .line import LineVector
+    from .twist import Twist
+    from .wrench import Wrench
 
 __all__ = [
     "Screw",
@@ -162,8 +166,6 @@ class Screw(ScrewsymBasic):
     _combination: type[Screw] | None = None
     #: the class of the axis line of a decomposition, declared by ``line_of=`` below
     _line_classes: dict[type[Screw], type[Screw]] = {}
-    #: the root of the hierarchy (this class), for the checks, which cannot import it
-    _root: ClassVar[type[Screw]]
     #: whether the kind's invariant makes the pitch 0 (a line vector's does)
     _pitch_is_zero: bool = False
 
@@ -443,6 +445,11 @@ class Screw(ScrewsymBasic):
     def _eval_simplify(self, **kwargs: Any) -> Self:
         return self._apply(lambda m: m.simplify(**kwargs))
 
+    if TYPE_CHECKING:
+        # ScrewsymBasic.diff gives what _eval_diff_parts gives: a screw (Twist and Wrench say
+        # their own kind)
+        def diff(self, *symbols: Any, **kwargs: Any) -> Screw: ...
+
     def _eval_diff_parts(self, *symbols: Any, **kwargs: Any) -> Screw:
         """Differentiate both parts: ``d$/dt = (dS/dt; dS0/dt)``.
 
@@ -478,7 +485,8 @@ class Screw(ScrewsymBasic):
         >>> Screw([cos(t)**2 + sin(t)**2, 0, 0], [0, 0, 0]).applyfunc(trigsimp)
         Screw([1, 0, 0], [0, 0, 0])
         """
-        return self._apply(lambda m: m.applyfunc(f))
+        g = refusing_strings(f, "applyfunc")  # a matrix would parse a string result
+        return self._apply(lambda m: m.applyfunc(g))
 
     # ------------------------------------------------------------ printing
     def _sympystr(self, printer: Any) -> str:
@@ -818,6 +826,14 @@ def _decompose(s: Screw, name: str | None = None, tidy: bool = True) -> tuple[Sc
     moment = _axis_moment(s, tidy, h)
     line = _known(general._line_class(), s.S, moment) if tidy else general._line_class()(s.S, moment)
     return line, general(zeros(3, 1), h * s.S)
+
+
+@overload
+def decompose_screw(s: Twist, *, tidy: bool = True) -> tuple[Twist, Twist]: ...
+@overload
+def decompose_screw(s: Wrench, *, tidy: bool = True) -> tuple[Wrench, Wrench]: ...
+@overload
+def decompose_screw(s: ScrewLike, *, tidy: bool = True) -> tuple[Screw, Screw]: ...
 
 
 def decompose_screw(s: ScrewLike, *, tidy: bool = True) -> tuple[Screw, Screw]:

@@ -7,7 +7,7 @@ momentarily coincides with the origin O (1.51, 1.53).
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from sympy import ImmutableMatrix, zeros
 
@@ -56,6 +56,10 @@ class Twist(Screw):
         def __mul__(self, k: ScalarLike) -> Self: ...
         def __rmul__(self, k: ScalarLike) -> Self: ...
         def __truediv__(self, k: ScalarLike) -> Self: ...
+        # and it splits into two of its kind, a rotation and a translation (Screw.decompose)
+        def decompose(self, *, tidy: bool = True) -> tuple[Self, Self]: ...
+        # a derivative is a linear combination, of the same kind (Screw._combination)
+        def diff(self, *symbols: Any, **kwargs: Any) -> Self: ...
 
     @property
     def omega(self) -> ImmutableMatrix:

@@ -7,7 +7,7 @@ A wrench is written in the book's ray order ``(f; C_O)``: the resultant force
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from sympy import Expr, ImmutableMatrix
 
@@ -63,6 +63,10 @@ class Wrench(Screw):
         def __mul__(self, k: ScalarLike) -> Self: ...
         def __rmul__(self, k: ScalarLike) -> Self: ...
         def __truediv__(self, k: ScalarLike) -> Self: ...
+        # and it splits into two of its kind, a force and a couple (Screw.decompose)
+        def decompose(self, *, tidy: bool = True) -> tuple[Self, Self]: ...
+        # a derivative is a linear combination, of the same kind (Screw._combination)
+        def diff(self, *symbols: Any, **kwargs: Any) -> Self: ...
 
     @property
     def f(self) -> ImmutableMatrix:

@@ -219,7 +219,7 @@ class Chain(ScrewsymBasic):
                 columns.append(_carried_column(T, twist))
                 T = tidy(T @ exp6(twist, qi))
         else:
-            # J_b column i = Ad(exp(-B_n q_n) ... exp(-B_{i+1} q_{i+1})) B_i
+            # J_b column i = Ad(exp6(B_n, -q_n) ... exp6(B_{i+1}, -q_{i+1})) B_i
             for twist, qi in zip(reversed(self.body_twists()), reversed(q), strict=True):
                 columns.append(_carried_column(T, twist))
                 T = tidy(T @ exp6(twist, -qi))

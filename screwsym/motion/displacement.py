@@ -109,7 +109,7 @@ def exp6(twist: ScrewLike, theta: ScalarLike) -> Transform:
     See Also
     ========
 
-    log, se3_matrix, screwsym.motion.transform.Transform
+    log6, se3_matrix, screwsym.motion.transform.Transform
     """
     t = check_screw(twist, "twist", Twist)
     theta = check_scalar(theta, "theta")
@@ -201,7 +201,7 @@ def log6(T: Transform) -> tuple[Twist, Expr]:
     See Also
     ========
 
-    exp
+    exp6
     """
     check_instance(T, "T", Transform)
     R, p = T.R, T.p

@@ -44,6 +44,7 @@ from ..core.checks import (
     check_point_or_direction,
     check_scalar,
     check_vector,
+    refusing_strings,
 )
 from ..core.decide import is_zero, is_zero_scaled, is_zero_vector
 from ..core.formulas import moved
@@ -440,7 +441,8 @@ class Transform(ScrewsymBasic):
         >>> Transform.rotation([0, 0, 1], t).applyfunc(lambda e: e.subs(t, 0))
         Transform(R=[[1, 0, 0], [0, 1, 0], [0, 0, 1]], p=[0, 0, 0])
         """
-        return Transform(self.R.applyfunc(f), self.p.applyfunc(f))
+        g = refusing_strings(f, "applyfunc")  # a matrix would parse a string result
+        return Transform(self.R.applyfunc(g), self.p.applyfunc(g))
 
     def _eval_simplify(self, **kwargs: Any) -> Transform:
         return Transform._new(self.R.simplify(**kwargs), self.p.simplify(**kwargs))

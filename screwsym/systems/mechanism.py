@@ -93,7 +93,7 @@ class Limb(ScrewsymBasic):
 
     @property
     def constraints(self) -> ScrewSystem:
-        """The limb's constraint (wrench) system, the reciprocal of :meth:`twists`."""
+        """The limb's constraint (wrench) system, the reciprocal of :attr:`twists`."""
         return self.twists.reciprocal()
 
     @property
@@ -189,7 +189,7 @@ class ParallelMechanism(ScrewsymBasic):
 
     @property
     def twists(self) -> ScrewSystem:
-        """The platform's instantaneous motions: the reciprocal of :meth:`constraints`."""
+        """The platform's instantaneous motions: the reciprocal of :attr:`constraints`."""
         return self.constraints.reciprocal()
 
     def mobility(self) -> Mobility:
@@ -213,7 +213,7 @@ class ParallelMechanism(ScrewsymBasic):
         conditions of a case are the conjunction.  Every real value of the
         symbols satisfies at least one case.  Each case's mobility is the
         analysis of the mechanism with the case's substitution made, so
-        ``dof``, ``passive`` and the platform's twists are exact on the whole
+        ``mobility``, ``passive`` and the platform's twists are exact on the whole
         case, ``common`` and ``redundant`` generic within it.  A case whose
         rank could not be decided (a condition linear in no symbol) comes with
         ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond).

@@ -209,6 +209,29 @@ def test_strings_are_never_evaluated(obj, call, name):
     assert _untouched()
 
 
+@pytest.mark.parametrize(
+    "obj",
+    [Screw([x, 0, 0], [0, 0, 0]), LineVector([1, 0, 0], [0, x, 0]), Twist([0, 0, x], [0, 0, 0])],
+    ids=["Screw", "LineVector", "Twist"],
+)
+def test_applyfunc_never_evaluates_a_string_result(obj):
+    # Matrix.applyfunc sympifies what f returns without strict=True: the string was run
+    with pytest.raises(TypeError, match="applyfunc: strings are never evaluated"):
+        obj.applyfunc(lambda e: PAYLOAD)
+    assert _untouched()
+    assert obj.applyfunc(lambda e: 2 * e) == obj * 2
+
+
+@pytest.mark.parametrize("which", range(5))
+def test_the_common_normal_constructor_never_evaluates_strings(which):
+    # ImmutableMatrix(normal) and the foot points sympify their entries without strict=True
+    parts = [0, [0, 0, 1], 0, [0, 0, 0], [0, 0, 0]]
+    parts[which] = PAYLOAD if which in (0, 2) else [PAYLOAD, 0, 0]
+    with pytest.raises(TypeError, match="CommonNormal: strings are never evaluated"):
+        CommonNormal(*parts)
+    assert _untouched()
+
+
 def test_plot_subs_refuses_strings():
     pytest.importorskip("matplotlib")
     import matplotlib

@@ -53,6 +53,14 @@ def test_screw_is_basic_with_two_immutable_parts():
     assert s.S.shape == (3, 1) and isinstance(s.S, ImmutableMatrix)
 
 
+@pytest.mark.parametrize("cls", [Screw, LineVector, Twist, Wrench])
+def test_every_annotated_class_attribute_has_a_value(cls):
+    # an annotation without a value tells mypy of an attribute that raises AttributeError
+    for klass in (k for k in cls.__mro__ if k.__module__.startswith("screwsym.")):
+        for name in vars(klass).get("__annotations__", {}):
+            assert hasattr(cls, name), f"{klass.__name__}.{name} is annotated but never set"
+
+
 def test_as_matrix_and_from_matrix_round_trip():
     s = Screw([1, 2, 3], [4, 5, 6])
     M = s.matrix

@@ -224,6 +224,10 @@ def test_args_subs_pickle_diff_evalf_and_printing():
     assert pickle.loads(pickle.dumps(T)) == T
     with pytest.raises(TypeError, match="subs: strings are never evaluated"):
         T.subs(t, "0")
+    payload = "__import__('builtins').__setattr__('screwsym_was_here', 1)"
+    with pytest.raises(TypeError, match="applyfunc: strings are never evaluated"):
+        T.applyfunc(lambda e: payload)  # Matrix.applyfunc would parse the result as code
+    assert not hasattr(__import__("builtins"), "screwsym_was_here")
     d = T.diff(t)
     assert d.shape == (4, 4) and d[0, 0] == -Matrix([[__import__("sympy").sin(t)]])[0]
     n = Transform.rotation([0, 0, 1], 1).evalf(20)

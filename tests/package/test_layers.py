@@ -138,20 +138,61 @@ def floor(module: str) -> str:
 
 
 def import_statements() -> list[tuple[str, str, list[str]]]:
-    """``(module, target module, imported names)`` for every import of a screwsym module."""
+    """``(module, target module, imported names)`` for every use of a screwsym module.
+
+    An import names its module; ``from screwsym import core`` (or ``from .. import core``)
+    imports the module ``screwsym.core``, not a name of the package.  A module bound to a
+    name (``from ..core import screw as _core``, ``import screwsym as ss``) is used through
+    attributes, so ``_core._pitch`` and ``ss.core.screw.pitch`` count as imports of
+    ``_pitch`` from ``screwsym.core.screw`` and of ``pitch`` from ``screwsym.core.screw``.
+    """
     modules = _modules()
     out = []
     for module, path in modules.items():
         is_package = path.name == "__init__.py"
-        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        tree = ast.parse(path.read_text(), str(path))
+        bound: dict[str, str] = {}  # a local name -> the screwsym module it is bound to
+        for node in ast.walk(tree):
             if isinstance(node, ast.ImportFrom):
                 base = _resolve(module, is_package, node)
-                if base == "screwsym" or base.startswith("screwsym."):
-                    out.append((module, base, [a.name for a in node.names]))
+                if base != "screwsym" and not base.startswith("screwsym."):
+                    continue
+                names = []
+                for a in node.names:
+                    full = f"{base}.{a.name}"
+                    if full in modules:
+                        out.append((module, full, []))
+                        bound[a.asname or a.name] = full
+                    else:
+                        names.append(a.name)
+                if names or not node.names:
+                    out.append((module, base, names))
             elif isinstance(node, ast.Import):
                 for a in node.names:
                     if a.name == "screwsym" or a.name.startswith("screwsym."):
                         out.append((module, a.name, []))
+                        if a.asname:
+                            bound[a.asname] = a.name
+                        else:
+                            bound["screwsym"] = "screwsym"
+        for node in ast.walk(tree):
+            if not isinstance(node, ast.Attribute) or isinstance(
+                getattr(node, "_parent_attribute", None), ast.Attribute
+            ):
+                continue
+            chain: list[str] = []
+            value: ast.AST = node
+            while isinstance(value, ast.Attribute):
+                chain.append(value.attr)
+                value.value._parent_attribute = value  # type: ignore[attr-defined]
+                value = value.value
+            if not (isinstance(value, ast.Name) and value.id in bound):
+                continue
+            target, parts = bound[value.id], chain[::-1]
+            while parts and f"{target}.{parts[0]}" in modules:
+                target = f"{target}.{parts.pop(0)}"
+            if parts:
+                out.append((module, target, parts[:1]))
     return out
 
 
@@ -237,3 +278,33 @@ def test_a_lazy_import_counts(tmp_path, monkeypatch):
     (pkg / "b.py").write_text("def f():\n    from . import a\n")
     monkeypatch.setattr(__import__(__name__), "ROOT", pkg)
     assert find_cycle(import_graph()) == ["screwsym.a", "screwsym.b", "screwsym.a"]
+
+
+@pytest.mark.parametrize(
+    "where, source, broken",
+    [
+        ("book/x.py", "from .. import core\n", True),  # the book past the face, as a module
+        ("book/x.py", "from screwsym import core\n", True),
+        ("book/x.py", "import screwsym as ss\nss.core.screw.pitch\n", True),
+        ("book/x.py", "import screwsym as ss\nss.Screw\n", False),
+        ("numeric/y.py", "from ..core import screw as _core\n_core._pitch(1)\n", True),
+        ("numeric/y.py", "from ..core import screw as _core\n_core.pitch(1)\n", False),
+        ("numeric/y.py", "import screwsym.core.screw as m\nm._pitch\n", True),
+        ("numeric/y.py", "from .. import core\ncore.screw._pitch\n", True),
+        ("motion/z.py", "from .. import core\ncore.screw.pitch\n", False),  # core is allowed
+        ("motion/z.py", "from .. import systems\n", True),
+    ],
+)
+def test_the_rule_checker_reads_modules_imported_by_name(tmp_path, monkeypatch, where, source,
+                                                          broken):
+    # ``from screwsym import core`` imports the module screwsym.core, and a module bound to a
+    # name is used through its attributes: neither may carry a floor or a private name past
+    # the rules
+    pkg = tmp_path / "screwsym"
+    for sub in ("", "core", "book", "numeric", "motion", "systems"):
+        (pkg / sub).mkdir(exist_ok=True)
+        (pkg / sub / "__init__.py").write_text("")
+    (pkg / "core" / "screw.py").write_text("def pitch(s): ...\ndef _pitch(s): ...\n")
+    (pkg / where).write_text(source)
+    monkeypatch.setattr(__import__(__name__), "ROOT", pkg)
+    assert bool(layer_violations(import_statements())) is broken

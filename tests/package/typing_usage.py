@@ -23,6 +23,7 @@ from screwsym import (
     Wrench,
     axis,
     convert_from,
+    decompose_screw,
     exp6,
     pitch,
     shift_origin,
@@ -66,6 +67,18 @@ def usage() -> None:
     u: Twist = t.unit()
     u2: Wrench = unit(w)
     shifted2: Twist = shift_origin(t, [1, 0, 0])
+    # a twist splits into two twists (rotation, translation), a wrench into two wrenches
+    t_parts: tuple[Twist, Twist] = t2.decompose()
+    w_parts: tuple[Wrench, Wrench] = decompose_screw(w)
+    # so does its derivative; a line's derivative is a screw
+    rate: Twist = Twist([h, 0, 0], [0, 0, h]).diff(h)
+    line_rate: Screw = LineVector([h, 0, 0], [0, 0, 0]).diff(h)
+    _exactly(rate, Twist)
+    _exactly(line_rate, Screw)
+    for part in t_parts:
+        _exactly(part, Twist)
+    for part_w in w_parts:
+        _exactly(part_w, Wrench)
     for value, cls in [(t_sum, Twist), (w_sum, Wrench), (lines, Screw),
                        (shifted, LineVector), (u, Twist), (u2, Wrench), (shifted2, Twist)]:
         _exactly(value, cls)
