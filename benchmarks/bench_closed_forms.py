@@ -65,7 +65,7 @@ def corpus():
         ("(1.36) axis of from_axis(r, S, h)", lambda t: ss.axis(s, tidy=t)),
         ("(1.16) foot of from_axis(r, S, h)", lambda t: ss.foot(s, tidy=t)),
         ("(1.18) distance of from_axis(r, S, h)", lambda t: ss.distance_to_origin(s, tidy=t)),
-        ("(1.37) decompose from_axis(r, S, h)", lambda t: ss.decompose(s, tidy=t)),
+        ("(1.37) decompose from_axis(r, S, h)", lambda t: ss.decompose_screw(s, tidy=t)),
         ("(1.5) unit of from_axis(r, S, h)", lambda t: ss.unit(s, tidy=t)),
         ("(1.32) shift_origin(from_axis(r, S, h), A)", lambda t: ss.shift_origin(s, A, tidy=t)),
         ("(1.34) pitch of LineVector.through(p, q)", lambda t: ss.pitch(L, tidy=t)),
@@ -105,7 +105,7 @@ def corpus():
         ("(1.45) power of a twist and a wrench", lambda t: ss.power(T, W, tidy=t)),
         ("(1.32) moment of a force about A",
          lambda t: force.moment_about(A, tidy=t)),
-        ("(1.58) decompose a wrench from its axis", lambda t: ss.decompose(W, tidy=t)),
+        ("(1.58) decompose a wrench from its axis", lambda t: ss.decompose_screw(W, tidy=t)),
         ("(1.57) pitch of a wrench from its axis", lambda t: ss.pitch(W, tidy=t)),
     ]
 

@@ -113,7 +113,7 @@ def symengine_functions():
         return {}
     import symengine as se
 
-    defs = numeric._definitions()
+    defs = numeric.screws._definitions()
     s = screwsym.Screw(screwsym.vector("S"), screwsym.vector("S0"))
     defs["pitch"] = ([s], screwsym.pitch(s), ["s"])
     out = {}
@@ -162,7 +162,7 @@ def main() -> None:
     # ---------------------------------------------------- generation time
     print("Generation (fresh cache), seconds")
     codegen.clear_cache()
-    numeric._BUILT.clear()
+    numeric.screws._BUILT.clear()
     t0 = time.perf_counter()
     np_funcs = numeric.functions_for("numpy")
     t_np = time.perf_counter() - t0

@@ -31,7 +31,7 @@ import numpy as np
 from sympy import Rational, sqrt, symbols
 
 from screwsym import ScrewSystem, Twist, vector
-from screwsym import system as _system
+from screwsym.systems import screw_system as _system
 from screwsym.numeric.mobility import mobility_map
 from screwsym.systems.joints import P, R, S
 from screwsym.systems.mechanism import Limb, ParallelMechanism
@@ -86,10 +86,10 @@ def main(argv=None) -> None:
     h = symbols("h1:4", positive=True)
     mech = three_rps(rho, h)
     t, m = best(mech.mobility, args.repeat)
-    print(f"3-RPS, 6 symbols: mobility() {t:.3f} s -> dof {m.mobility}, {m.motion} (target < 5 s)")
+    print(f"3-RPS, 6 symbols: mobility() {t:.3f} s -> mobility {m.mobility}, {m.motion} (target < 5 s)")
     t, cases = best(mech.mobility_cases, max(1, args.repeat // 2))
     dofs = [mm.mobility for _, mm in cases]
-    print(f"  mobility_cases(): {len(cases)} cases, dof {dofs}, in {t:.2f} s (target < 5 s)")
+    print(f"  mobility_cases(): {len(cases)} cases, mobility {dofs}, in {t:.2f} s (target < 5 s)")
 
     rng = np.random.default_rng(0)
     n = args.n
@@ -110,7 +110,7 @@ def main(argv=None) -> None:
         print(
             f"3-RPS map, {n} poses, {backend}: {min(times):.3f} s "
             f"({1e6 * min(times) / n:.2f} us/pose; generation {gen:.2f} s, first call "
-            f"{first:.2f} s); dof counts {np.bincount(out.mobility).tolist()} (target < 1 s)"
+            f"{first:.2f} s); mobility counts {np.bincount(out.mobility).tolist()} (target < 1 s)"
         )
 
 
