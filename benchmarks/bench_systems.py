@@ -31,8 +31,8 @@ import numpy as np
 from sympy import Rational, sqrt, symbols
 
 from screwsym import ScrewSystem, Twist, vector
-from screwsym.systems import screw_system as _system
 from screwsym.numeric.mobility import mobility_map
+from screwsym.systems import screw_system as _system
 from screwsym.systems.joints import P, R, S
 from screwsym.systems.mechanism import Limb, ParallelMechanism
 
