@@ -314,7 +314,8 @@ class Screw(ScrewsymBasic):
         B = check_vector(B, "B")
         if is_zero_vector(B - A) is True:
             raise ValueError(f"A, B: expected two distinct points, got A = B = {list(A)}")
-        return cls._rebuild(B - A, A.cross(B - A), "A, B")
+        S_ = B - A
+        return cls._rebuild(S_, dual_part(A, S_), "A, B")
 
     @classmethod
     def couple(cls, C: VectorLike) -> Self:

@@ -25,6 +25,7 @@ if TYPE_CHECKING:
 
 __all__ = ["Joint", "Revolute", "Prismatic", "Helical", "Cylindrical", "Universal", "Spherical"]
 
+#: the unit axes x, y, z (a spherical joint's rotations; the mechanism's pure translations)
 _E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
 
 

@@ -49,15 +49,13 @@ from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count
 from ..core.twist import Twist
 from ..core.wrench import Wrench
-from .joints import Joint, check_joints
+from .joints import _E, Joint, check_joints
 from .screw_system import MAX_CASES, ScrewSystem, _analysis
 
 if TYPE_CHECKING:
     from typing_extensions import Self
 
 __all__ = ["Limb", "ParallelMechanism", "Mobility", "motion_type"]
-
-_E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
 
 
 class Limb(ScrewsymBasic):
