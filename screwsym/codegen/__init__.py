@@ -141,7 +141,13 @@ _HAS_NUMBA: bool | None = None
 
 
 def default_backend() -> str:
-    """``"numba"`` when numba is installed, else ``"numpy"``."""
+    """``"numba"`` when numba is installed, else ``"numpy"``: the back end ``backend=None`` means.
+
+    >>> default_backend() == ("numba" if importlib.util.find_spec("numba") else "numpy")
+    True
+    >>> resolve_backend(None) == default_backend()
+    True
+    """
     global _HAS_NUMBA
     if _HAS_NUMBA is None:
         _HAS_NUMBA = importlib.util.find_spec("numba") is not None
