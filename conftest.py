@@ -1,4 +1,4 @@
-"""The doctests of an optional floor are skipped where its extra is not installed.
+"""The tests marked ``slow`` run only with ``--slow``; the doctests of an optional floor are skipped where its extra is not installed.
 
 ``testpaths`` collects the doctests of every module of ``screwsym``; those of
 ``screwsym.plot`` draw with matplotlib (the ``plot`` extra), so without it they
@@ -17,7 +17,21 @@ import pytest
 OPTIONAL = {"screwsym/plot/": "matplotlib"}
 
 
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption(
+        "--slow",
+        action="store_true",
+        default=False,
+        help="also run the tests marked slow (CI does; the default run leaves them out)",
+    )
+
+
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    run_slow = config.getoption("--slow")
+    skip_slow = pytest.mark.skip(reason="slow: run with --slow (CI does)")
+    for item in items:
+        if not run_slow and "slow" in item.keywords:
+            item.add_marker(skip_slow)
     for item in items:  # under screwsym/ every item is a doctest
         path = item.path.resolve().relative_to(config.rootpath.resolve()).as_posix()
         for folder, module in OPTIONAL.items():
