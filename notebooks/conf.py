@@ -20,7 +20,6 @@ from sphinx.util.docutils import SphinxDirective
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
-os.environ.setdefault("MPLBACKEND", "Agg")
 
 import screwsym  # noqa: E402
 
@@ -35,6 +34,8 @@ extensions = [
     "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
     "sphinx.ext.viewcode",
+    # MathJax bundled into the site (_static/mathjax), so the maths renders with no network
+    "sphinx-mathjax-offline",
 ]
 exclude_patterns = ["_build", "figures/*.py", "make_readme_figure.py", "**.ipynb_checkpoints"]
 source_suffix = {".md": "myst-nb", ".ipynb": "myst-nb"}
@@ -50,6 +51,10 @@ nb_execution_timeout = 300
 nb_execution_raise_on_error = True
 nb_execution_show_tb = True
 nb_merge_streams = True
+# a notebook's Markdown outputs (tables with maths) are read as MyST, with the page's extensions
+nb_render_markdown_format = "myst"
+# a formula output is MathJax, not SymPy's PNG rendering of it (lower number = preferred)
+nb_mime_priority_overrides = [("html", "text/latex", 45)]
 
 autodoc_default_options = {"members": True, "undoc-members": False, "show-inheritance": True}
 autodoc_member_order = "bysource"
