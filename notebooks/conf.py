@@ -37,13 +37,16 @@ extensions = [
     # MathJax bundled into the site (_static/mathjax), so the maths renders with no network
     "sphinx-mathjax-offline",
 ]
-exclude_patterns = ["_build", "figures/*.py", "make_readme_figure.py", "**.ipynb_checkpoints"]
+exclude_patterns = ["_build", "figures/*.py", "make_readme_figure.py", "make_gallery.py",
+                    "**.ipynb_checkpoints", "**.nbconvert.ipynb"]
 source_suffix = {".md": "myst-nb", ".ipynb": "myst-nb"}
 myst_enable_extensions = ["dollarmath", "amsmath"]
 myst_heading_anchors = 3
 html_theme = "alabaster"
 html_title = f"screwsym {release}"
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_css_files = ["screwsym.css"]
+html_theme_options = {"page_width": "1100px", "body_max_width": "none"}
 
 # the notebooks are stored without outputs: run every one at build time, fail on an error
 nb_execution_mode = "force"
@@ -92,7 +95,10 @@ def _book_lines() -> list[str]:
 
     out: list[str] = []
     section = None
-    for e in entries():
+    # each section once: the registry lists the worked examples after the equations, so
+    # order by section (stable: within a section the registry's order stays)
+    by_section = sorted(entries(), key=lambda e: tuple(int(n) for n in e.section.split(".")))
+    for e in by_section:
         if e.section.split(".")[:2] != section:
             section = e.section.split(".")[:2]
             title = f"Section {'.'.join(section)}"
@@ -129,6 +135,43 @@ class BookRegistry(SphinxDirective):
         return container.children
 
 
+def _notebook_title(path: Path) -> str:
+    import json
+
+    for cell in json.loads(path.read_text(encoding="utf-8"))["cells"]:
+        if cell["cell_type"] == "markdown":
+            for line in "".join(cell["source"]).splitlines():
+                if line.startswith("# "):
+                    return line[2:].strip()
+    return path.stem
+
+
+class Gallery(SphinxDirective):
+    """``.. screwsym-gallery::``: a picture per notebook (``figures/gallery/<notebook>.png``,
+    written by ``make_gallery.py`` from the site's build), each linking to its page."""
+
+    def run(self) -> list[nodes.Node]:
+        here = Path(self.env.srcdir)
+        grid = nodes.container(classes=["screwsym-gallery"])
+        for path in sorted(here.glob("[0-9][0-9]-*.ipynb")):
+            if path.name.endswith(".nbconvert.ipynb"):  # left by jupyter nbconvert --execute
+                continue
+            thumb = f"figures/gallery/{path.stem}.png"
+            if not (here / thumb).exists():
+                raise self.error(f"no gallery picture {thumb}: run notebooks/make_gallery.py")
+            # the page of the notebook, as the html builder names it beside index.html
+            page = f"{path.stem}.html"
+            figure = nodes.figure()
+            link = nodes.reference("", "", refuri=page)
+            link += nodes.image(uri=thumb, alt=_notebook_title(path))
+            figure += link
+            caption = nodes.caption()
+            caption += nodes.reference(_notebook_title(path), _notebook_title(path), refuri=page)
+            figure += caption
+            grid += figure
+        return [grid]
+
+
 #: repository files that a page of the site includes: a notebook's link to the file goes there
 _INCLUDED = {str(ROOT / "benchmarks" / "README"): "benchmarks"}
 
@@ -145,5 +188,6 @@ def _links_to_included_files(app, doctree) -> None:
 def setup(app):
     app.connect("doctree-read", _links_to_included_files)
     app.add_directive("screwsym-book", BookRegistry)
+    app.add_directive("screwsym-gallery", Gallery)
     app.connect("autodoc-process-docstring", _plain_formulas)
     return {"parallel_read_safe": True}

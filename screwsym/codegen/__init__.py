@@ -55,7 +55,7 @@ Back ends
 =========
 
 ``backend=None`` (default)
-    ``"numba"`` when numba is installed (``pip install screwsym[fast]``),
+    ``"numba"`` when numba is installed (``pip install -e ".[fast]"`` from a clone),
     ``"numpy"`` otherwise.
 ``"numpy"``
     NumPy array expressions after common-subexpression elimination,
@@ -225,7 +225,7 @@ def lambdify(
         What to compute; its free symbols must be among ``args``.
     backend : {None, "numpy", "numba", "c"}
         None (default): numba when installed, else NumPy.  ``"numba"`` needs
-        ``pip install 'screwsym[fast]'``; ``"c"`` a C compiler.
+        ``pip install -e ".[fast]"`` from a clone; ``"c"`` a C compiler.
     cse : bool
         Common-subexpression elimination (default True).
     name : str, optional

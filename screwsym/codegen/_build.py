@@ -293,7 +293,8 @@ def load_index(tag: str, doc: str) -> Callable | None:
 def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
     if importlib.util.find_spec("numba") is None:
         raise ImportError(
-            "backend 'numba' needs numba: pip install 'screwsym[fast]' (or use backend='numpy')"
+            "backend 'numba' needs numba: pip install -e \".[fast]\" in a clone of screwsym"
+            " (or use backend='numpy')"
         )
     return _numba_function(_numba_module(plan, use_cse), plan, doc)
 

@@ -6,7 +6,7 @@ pivoted QR of their union, one configuration per iteration of a parallel loop.
 The same algorithm as the NumPy back end (``screwsym.numeric.mobility._qrcp``).
 Compiled with ``cache=True``: the first call on a machine compiles (seconds),
 later processes load the compiled code.  Imported only when the numba back
-end is asked for (``pip install "screwsym[fast]"``).
+end is asked for (``pip install -e ".[fast]"`` from a clone).
 """
 
 from typing import Any

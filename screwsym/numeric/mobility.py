@@ -29,7 +29,7 @@ where it matters, check a configuration with ``numpy.linalg.svd``.
 
 The NumPy back end (the default here) runs each step of the decomposition as
 a few array operations over all configurations; ``backend="numba"`` compiles
-the same algorithm as one parallel loop (``pip install "screwsym[fast]"``,
+the same algorithm as one parallel loop (``pip install -e ".[fast]"`` from a clone,
 module ``screwsym.numeric._mobility_numba``), cached on disk by numba: the first call
 on a machine compiles for seconds, later processes load it in under one.
 The default stays NumPy (unlike :func:`screwsym.lambdify`'s) because under

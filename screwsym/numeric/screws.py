@@ -24,7 +24,7 @@ symbolic one raises); the foot point of a couple, whose axis lies at
 infinity, is ``nan`` (the symbolic one raises).
 
 The functions here use the compiled (numba) back end when numba is installed
-(``pip install 'screwsym[fast]'``) and NumPy otherwise; each is generated on
+(``pip install -e ".[fast]"`` from a clone) and NumPy otherwise; each is generated on
 first use, and numba's on-disk cache (see :func:`screwsym.codegen.cache_dir`)
 spares a new process the compilation.  :func:`functions_for` gives the same set
 for a chosen back end, e.g. ``functions_for("numpy")`` or ``functions_for("c")``.

@@ -1,6 +1,6 @@
 r"""Pictures of lines, screws, twists and wrenches in matplotlib 3D axes.
 
-Needs matplotlib (``pip install "screwsym[plot]"``); see :mod:`screwsym.plot.figures`.
+Needs matplotlib (``pip install -e ".[plot]"`` from a clone); see :mod:`screwsym.plot.figures`.
 ``screwsym.plot`` is loaded on first use and is not part of ``from screwsym import *``
 (it would shadow SymPy's ``plot``).
 """

@@ -38,7 +38,7 @@ Every artist screwsym draws carries a ``gid`` ``"screwsym.<kind>"`` (kinds:
 ``frame``), so that a picture can be inspected or restyled afterwards with
 :func:`find_artists`.
 
-matplotlib is an optional dependency (``pip install screwsym[plot]``); it is
+matplotlib is an optional dependency (``pip install -e ".[plot]"`` from a clone); it is
 imported only when a function here is called.
 """
 
@@ -185,7 +185,7 @@ def _mpl():
         from mpl_toolkits.mplot3d import Axes3D  # noqa: F401  (registers the 3d projection)
     except ImportError as exc:  # pragma: no cover - exercised only without matplotlib
         raise ImportError(
-            "screwsym.plot needs matplotlib: pip install 'screwsym[plot]'"
+            "screwsym.plot needs matplotlib: pip install -e \".[plot]\" (from a clone of screwsym)"
         ) from exc
     return plt
 

@@ -28,9 +28,12 @@ def test_reference_pages_exist():
     assert "../benchmarks/README.md" in (NOTEBOOKS / "benchmarks.md").read_text(encoding="utf-8")
 
 
+_DOCS = "it reads the site's Sphinx configuration: needs the docs extra, pip install -e \".[docs]\""
+
+
 def test_book_page_has_every_entry_with_its_checks_and_errata():
-    pytest.importorskip("sphinx")
-    pytest.importorskip("myst_nb")
+    pytest.importorskip("sphinx", reason=_DOCS)
+    pytest.importorskip("myst_nb", reason=_DOCS)
     spec = importlib.util.spec_from_file_location("screwsym_docs_conf", NOTEBOOKS / "conf.py")
     conf = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(conf)
@@ -42,3 +45,7 @@ def test_book_page_has_every_entry_with_its_checks_and_errata():
         for c in e.construct().checks:
             assert f"``{c.label}``" in text, (e.id, c.label)
     assert text.count(".. math::") == len(entries())
+    lines = text.splitlines()
+    sections = [a for a, b in zip(lines, lines[1:], strict=False)
+                if a.startswith("Section ") and set(b) == {"-"}]
+    assert sections and len(sections) == len(set(sections)), sections  # each section once

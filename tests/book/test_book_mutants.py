@@ -41,6 +41,8 @@ from screwsym import LineVector, Screw, Twist, Wrench
 from screwsym.book import entries, entry
 from screwsym.core.screw import foot as _foot
 
+#: the mutation harness takes about a minute: CI runs it (--slow), the default run does not
+pytestmark = pytest.mark.slow
 
 def _m(v) -> ImmutableMatrix:
     return ImmutableMatrix(Matrix(v))

@@ -325,6 +325,7 @@ def test_c_build_leaves_no_temporary_directory(tmp_path, monkeypatch):
     assert leftovers() == before
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
 def test_numba_disk_cache_serves_a_new_process(tmp_path):
     script = textwrap.dedent("""

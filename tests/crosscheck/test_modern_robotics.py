@@ -170,6 +170,7 @@ def _mr_ur5():
     return M, Slist, Blist
 
 
+@pytest.mark.slow
 def test_ur5_kinematics_and_jacobians_agree_with_mr(ur5):
     _, functions = ur5
     M, Slist, Blist = _mr_ur5()
@@ -183,6 +184,7 @@ def test_ur5_kinematics_and_jacobians_agree_with_mr(ur5):
         np.testing.assert_allclose(jb[k], mr.JacobianBody(Blist, Q[k]), atol=1e-12)
 
 
+@pytest.mark.slow
 def test_ur5_exact_numbers_agree_with_mr(ur5):
     """The exact path with numbers for q (no symbols, no lambdify)."""
     chain, _ = ur5

@@ -94,6 +94,8 @@ def raw_markdown(html: str) -> list[str]:
             found.append(f"raw Markdown table: {line.strip()[:80]!r}")
         if re.search(r"\$\$|\$[^$\n]*\\[A-Za-z]+[^$\n]*\$|\$[^$\s]{1,40}\$", line):
             found.append(f"raw maths between dollars: {line.strip()[:80]!r}")
+        if re.search(r"\\(vert|frac|mathbf|times|cdot|alpha|theta|omega|sqrt)\b", line):
+            found.append(f"a TeX command outside the maths: {line.strip()[:80]!r}")
     return found
 
 
@@ -107,6 +109,13 @@ def css_network_imports(css: str) -> list[str]:
     return [f"imports {m!r} from the network"
             for m in re.findall(r"@import\s+(?:url\()?\s*['\"]?([^'\")\s;]+)", css)
             if _ABSOLUTE.match(m)]
+
+
+def notebook_paths(folder: Path) -> list[Path]:
+    """The teaching notebooks of a folder: ``NN-name.ipynb``, without the copies that
+    ``jupyter nbconvert --execute`` leaves beside them (``NN-name.nbconvert.ipynb``)."""
+    return sorted(p for p in folder.glob("[0-9][0-9]-*.ipynb")
+                  if not p.name.endswith(".nbconvert.ipynb"))
 
 
 def figure_outputs(notebook: dict) -> tuple[int, list[str]]:

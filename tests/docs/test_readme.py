@@ -9,6 +9,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 README = ROOT / "README.md"
+#: the module map of the docs, one row per public module
+MODULES = ROOT / "notebooks" / "modules.md"
 
 
 @pytest.fixture
@@ -37,8 +39,10 @@ def test_readme_python_snippets_run_and_match_their_output(restore_displayhook):
 
 def test_readme_quickstart_commands_are_what_ci_runs():
     text = README.read_text(encoding="utf-8")
-    commands = re.findall(r"```bash\n(.*?)```", text, flags=re.S)
-    assert commands[:2] == [
+    quickstart = text[text.index("## Quickstart"):]
+    quickstart = quickstart[:quickstart.index("\n## ", 3)]
+    commands = re.findall(r"```bash\n(.*?)```", quickstart, flags=re.S)
+    assert commands == [
         'pip install -e . && screwsym verify\n',
         'pip install -e ".[test]" && python -m pytest\n',
     ]
@@ -68,7 +72,7 @@ def test_readme_verify_output_is_what_the_cli_prints(capsys):
 _OWN_SECTION = ("screwsym.book", "screwsym.cli")
 
 
-def test_readme_module_table_lists_every_public_name():
+def test_module_map_lists_every_public_name():
     import importlib
     import pkgutil
 
@@ -76,7 +80,7 @@ def test_readme_module_table_lists_every_public_name():
 
     rows = {
         m.group(1): m.group(0)
-        for m in re.finditer(r"^\| \w+ \| `(screwsym\.[\w.]+)` \|.*$", README.read_text(), re.M)
+        for m in re.finditer(r"^\| \w+ \| `(screwsym\.[\w.]+)` \|.*$", MODULES.read_text(), re.M)
     }
     everything = "\n".join(rows.values())
     missing = {}
@@ -94,3 +98,20 @@ def test_readme_module_table_lists_every_public_name():
         if absent:
             missing[name] = absent
     assert missing == {}
+
+
+def test_readme_links_point_at_files_that_exist():
+    text = README.read_text(encoding="utf-8")
+    local = [t for t in re.findall(r"\]\(([^)]+)\)", text) if "://" not in t]
+    assert local
+    missing = [t for t in local if not (ROOT / t.split("#")[0]).exists()]
+    assert missing == []
+
+
+def test_readme_links_every_notebook_and_stays_a_front_door():
+    text = README.read_text(encoding="utf-8")
+    from _site import notebook_paths
+
+    for nb in notebook_paths(ROOT / "notebooks"):
+        assert f"(notebooks/{nb.name})" in text, f"the README does not link {nb.name}"
+    assert len(text.splitlines()) <= 250, "the README is a front door: detail goes to the docs"

@@ -26,7 +26,7 @@ import _site
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-NOTEBOOKS = sorted((ROOT / "notebooks").glob("[0-9][0-9]-*.ipynb"))
+NOTEBOOKS = _site.notebook_paths(ROOT / "notebooks")
 
 
 # --- each check rejects a wrong page (cheap: the default run) ---------------------------
@@ -35,6 +35,7 @@ def test_raw_markdown_is_found_outside_code():
     assert _site.raw_markdown("<p>| a | b |</p><p>|---|---|</p>")
     assert _site.raw_markdown("<p>the pitch $h = \\frac{1}{2}$ here</p>")
     assert _site.raw_markdown("<p>$$x$$</p>")
+    assert _site.raw_markdown("<td>the distance \\vert AB\\vert</td>")
     assert not _site.raw_markdown('<pre>rows = ["|---|---|", "$x$"]</pre>')
     assert not _site.raw_markdown('<table><tr><td>a</td></tr></table><p>costs $5 or more</p>')
     assert not _site.raw_markdown('<span class="math">\\(h = 1\\)</span>')
@@ -68,6 +69,21 @@ def test_missing_figures_are_found():
                                             "outputs": [formula]}]}) == (0, [])
     page = '<img src="_images/a.png"><img src="_static/logo.png">'
     assert _site.page_figures(page) == 1
+
+
+def test_nbconvert_copies_are_not_notebooks(tmp_path):
+    for name in ("01-a.ipynb", "01-a.nbconvert.ipynb", "conf.py", "02-b.ipynb"):
+        (tmp_path / name).write_text("{}")
+    assert [p.name for p in _site.notebook_paths(tmp_path)] == ["01-a.ipynb", "02-b.ipynb"]
+
+
+def test_every_notebook_has_its_picture_in_the_gallery():
+    gallery = ROOT / "notebooks" / "figures" / "gallery"
+    for path in NOTEBOOKS:
+        thumb = gallery / f"{path.stem}.png"
+        assert thumb.exists(), f"no gallery picture for {path.name}: run notebooks/make_gallery.py"
+        assert thumb.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "{screwsym-gallery}" in (ROOT / "notebooks" / "index.md").read_text(encoding="utf-8")
 
 
 def test_math_is_extracted_with_its_display_mode():

@@ -41,6 +41,7 @@ def rph():
     )
 
 
+@pytest.mark.slow
 def test_space_jacobian_columns_are_the_derivatives_of_the_motion(rph):
     """[J_s column i] = dT/dq_i T^-1, the definition of the space Jacobian."""
     T = rph.forward(q).matrix

@@ -74,6 +74,7 @@ def test_exp_turns_about_the_axis_and_slides_h_theta():
     assert is_exactly_zero(exp6(twist, t).apply(r) - (r + h * t * direction))
 
 
+@pytest.mark.slow
 def test_log_inverts_exp_exactly_on_random_motions():
     rng = np.random.default_rng(11)
     for _ in range(40):

@@ -52,6 +52,7 @@ def test_zero_matrix_checker_rejects_a_wrong_identity():
 
 
 # ------------------------------------------------------------------ constructors
+@pytest.mark.slow
 def test_symbolic_rotation_is_exactly_a_rotation():
     T = Transform.rotation([1, 2, 2], t, point=vector("c"))
     R = T.R

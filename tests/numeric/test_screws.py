@@ -183,6 +183,7 @@ def test_symbolic_and_numeric_share_the_formula():
     np.testing.assert_allclose(numeric.foot(s), np.cross(s[:3], s[3:]) / 14)
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
 def test_a_new_process_loads_the_compiled_functions_without_rebuilding_them(tmp_path):
     script = textwrap.dedent("""
@@ -267,6 +268,7 @@ def old_digest(package: Path) -> str:
     return h.hexdigest()[:24]
 
 
+@pytest.mark.slow
 def test_the_digest_sees_every_file_by_its_path(tmp_path):
     a, b = _copy_package(tmp_path / "a"), _copy_package(tmp_path / "b")
     cache = tmp_path / "cache"
@@ -287,6 +289,7 @@ def test_the_digest_sees_every_file_by_its_path(tmp_path):
     assert old_digest(a) == old_digest(b)
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
 def test_an_edited_formula_is_rebuilt_not_loaded_from_the_old_index(tmp_path):
     package, cache = _copy_package(tmp_path), tmp_path / "cache"

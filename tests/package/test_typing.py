@@ -25,6 +25,7 @@ def test_py_typed_ships():
     assert (ROOT / "screwsym" / "py.typed").is_file()
 
 
+@pytest.mark.slow
 def test_mypy_passes_on_the_package_and_the_typed_usage(tmp_path, monkeypatch):
     api = pytest.importorskip("mypy.api")
     monkeypatch.chdir(ROOT)  # the package checked is this checkout's, not an installed one

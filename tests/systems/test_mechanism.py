@@ -127,6 +127,7 @@ def test_three_rps():
     check_consistent(m, mech)
 
 
+@pytest.mark.slow
 def test_three_rps_symbolic_and_its_constraint_singularity():
     # generic: 3 DOF 2R1T.  Legs at one height with the three constraint forces concurrent
     # (here rho1 + rho2 + rho3 = -6 with base radius 2): the forces are coplanar and
