@@ -16,45 +16,52 @@ import importlib
 from typing import Any as _Any
 
 from ._version import __version__ as __version__
-from .core import (
-    CommonNormal,
-    LineVector,
-    Screw,
-    Twist,
-    Wrench,
-    axis,
-    classify,
-    common_normal,
-    contains,
-    decompose_screw,
-    direction_cosines,
-    distance_to_origin,
-    foot,
-    is_coplanar,
-    is_reciprocal,
-    mutual_moment,
-    pitch,
-    power,
-    reciprocal_product,
-    shift_origin,
-    tidy,
-    unit,
-    vector,
-)
-from .core.printing import init_printing as init_printing
-from .motion import Chain, Transform, convert, convert_from, exp6, log6
-from .systems import (
-    Cylindrical,
-    Helical,
-    Limb,
-    Mobility,
-    ParallelMechanism,
-    Prismatic,
-    Revolute,
-    ScrewSystem,
-    Spherical,
-    Universal,
-)
+
+try:  # the import takes most of the command line's first second: see screwsym._launch
+    from .core import (
+        CommonNormal,
+        LineVector,
+        Screw,
+        Twist,
+        Wrench,
+        axis,
+        classify,
+        common_normal,
+        contains,
+        decompose_screw,
+        direction_cosines,
+        distance_to_origin,
+        foot,
+        is_coplanar,
+        is_reciprocal,
+        mutual_moment,
+        pitch,
+        power,
+        reciprocal_product,
+        shift_origin,
+        tidy,
+        unit,
+        vector,
+    )
+    from .core.printing import init_printing as init_printing
+    from .motion import Chain, Transform, convert, convert_from, exp6, log6
+    from .systems import (
+        Cylindrical,
+        Helical,
+        Limb,
+        Mobility,
+        ParallelMechanism,
+        Prismatic,
+        Revolute,
+        ScrewSystem,
+        Spherical,
+        Universal,
+    )
+except KeyboardInterrupt:
+    from ._launch import exit_if_command_line
+
+    exit_if_command_line()
+    raise
 
 #: What ``from screwsym import *`` binds.  It names nothing that ``from sympy import *``
 #: binds too (tests/package/test_namespace.py checks it), so a notebook may star-import

@@ -47,6 +47,19 @@ def _normal(s: str) -> str:
     return re.sub(r"\s+", " ", s)
 
 
+_ABBREVIATIONS = (
+    (r"^(ex|exa|exam|exmp|example|eg)\.?\s*(?=\d)", "example "),
+    (r"^(th|thm|theo|theorem)\.?\s*(?=\d)", "theorem "),
+    (r"^(fig|figure)\.?\s*(?=\d)", "fig. "),
+)
+
+
+def _spelled_out(s: str) -> str:
+    for pattern, word in _ABBREVIATIONS:
+        s = re.sub(pattern, word, s)
+    return s
+
+
 def entry(id: str) -> Entry:
     """The entry with the given id: ``"1.34"``, ``"(1.34)"``, ``"Example 1.4"``, ...
 
@@ -57,6 +70,10 @@ def entry(id: str) -> Entry:
     Traceback (most recent call last):
     ...
     KeyError: "unknown entry id '1.99'; did you mean '1.9'? (screwsym list shows every id)"
+    >>> entry("ex1.4")
+    Traceback (most recent call last):
+    ...
+    KeyError: "unknown entry id 'ex1.4'; did you mean 'Example 1.4'? (screwsym list shows every id)"
     """
     if not isinstance(id, str):
         raise TypeError(f"id: expected a string such as '1.34', got {type(id).__name__}")
@@ -67,6 +84,9 @@ def entry(id: str) -> Entry:
     for key, e in _REGISTRY.items():
         if _normal(key) == wanted:
             return e
-    close = difflib.get_close_matches(id, list(_REGISTRY), n=1)
-    hint = f"; did you mean {close[0]!r}?" if close else ";"
+    # the suggestion reads abbreviations as the ids spell them ("ex1.4" -> "Example 1.4")
+    spelled = _spelled_out(wanted)
+    by_normal = {_normal(key): key for key in _REGISTRY}
+    close = difflib.get_close_matches(spelled, list(by_normal), n=1)
+    hint = f"; did you mean {by_normal[close[0]]!r}?" if close else ";"
     raise KeyError(f"unknown entry id {id!r}{hint} (screwsym list shows every id)")

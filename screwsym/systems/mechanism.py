@@ -43,10 +43,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from sympy import And, ImmutableMatrix, cancel, false, true
+from sympy import And, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
+from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
-from ..core.checks import check_count
+from ..core.checks import check_count, check_flag
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .joints import _E, Joint, check_joints
@@ -118,6 +119,25 @@ class Mobility(NamedTuple):
     freedoms: int  #: sum f_i
     rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
     translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
+
+    def __repr__(self) -> str:
+        """A short summary; every field stays an attribute (``m.twists``, ``m.links``, ...).
+
+        >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> ParallelMechanism(Limb(R([0, 0, 0], z), R([1, 2, 0], z)),
+        ...                   Limb(R([4, 0, 0], z), R([3, 3, 0], z))).mobility()
+        Mobility(mobility=1, motion='1R', common=3, redundant=0, passive=0, classical=-2)
+        """
+        return (f"Mobility(mobility={self.mobility}, motion={self.motion!r}, "
+                f"common={self.common}, redundant={self.redundant}, passive={self.passive}, "
+                f"classical={self.classical})")
+
+    def answer(self) -> tuple[int, int, int, int, int, int, str]:
+        """The numbers of the analysis, without the twists: what two cases compare."""
+        return (self.mobility, self.order, self.common, self.redundant, self.passive,
+                self.classical, self.motion)
 
 
 def motion_type(rotations: int, translations: int) -> str:
@@ -198,7 +218,9 @@ class ParallelMechanism(ScrewsymBasic):
         """
         return _mobility(self)
 
-    def mobility_cases(self, *, max_cases: int = MAX_CASES) -> list[tuple[Any, Mobility | None]]:
+    def mobility_cases(
+        self, *, max_cases: int = MAX_CASES, merge: bool = True
+    ) -> list[tuple[Any, Mobility | None]]:
         """The mobility in each case where the symbols change a rank: an exhaustive split.
 
         Explanation
@@ -215,6 +237,14 @@ class ParallelMechanism(ScrewsymBasic):
         case, ``common`` and ``redundant`` generic within it.  A case whose
         rank could not be decided (a condition linear in no symbol) comes with
         ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond).
+
+        With ``merge=True`` (the default) cases with the same answer (the same
+        mobility, order, common and redundant constraints, passive freedoms,
+        classical count and motion type: :meth:`Mobility.answer`) are given as
+        one, whose condition is the ``Or`` of theirs, in the place of the first;
+        its :class:`Mobility` is the first case's, so its ``twists`` (a basis
+        of the platform's twists) are those of that case: ``merge=False`` gives
+        each case with its own.
 
         Examples
         ========
@@ -250,7 +280,34 @@ class ParallelMechanism(ScrewsymBasic):
                     continue
                 out.append((condition, _mobility(self.xreplace(subs2) if subs2 else self)))
                 _check_cases(len(out), max_cases)
-        return out
+        return _merge_cases(out) if check_flag(merge, "merge") else out
+
+
+def _union(a: Any, b: Any) -> Any:
+    """``a | b`` in the fewest terms: SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq``
+    (the atoms are the rank conditions' equations; it gives up beyond 8 of them)."""
+    expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
+    expr = simplify_logic(expr)
+    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
+                        lambda x: Ne(*x.args[0].args))
+
+
+def _merge_cases(cases: list[tuple[Any, Mobility | None]]) -> list[tuple[Any, Mobility | None]]:
+    """Cases with the same answer as one, in the place of the first (undecided ones apart)."""
+    merged: list[tuple[Any, Mobility | None]] = []
+    where: dict[tuple[Any, ...], int] = {}
+    for condition, m in cases:
+        if m is None:
+            merged.append((condition, None))
+            continue
+        key = m.answer()
+        if key in where:
+            i = where[key]
+            merged[i] = (_union(merged[i][0], condition), merged[i][1])
+        else:
+            where[key] = len(merged)
+            merged.append((condition, m))
+    return merged
 
 
 def _check_cases(count: int, limit: int) -> None:

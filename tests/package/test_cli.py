@@ -174,3 +174,44 @@ def test_list(capsys):
 
 def test_usage_error():
     assert main(["frobnicate"]) == 2
+
+
+def test_ctrl_c_while_the_command_starts_ends_without_a_traceback():
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    landed = 0
+    for delay in (0.3, 0.6, 1.5):  # during SymPy's import, and once the verify run is going
+        proc = subprocess.Popen([sys.executable, "-m", "screwsym", "verify", "--jobs", "1"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(delay)
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=60)
+        if "init_import_site" in err:  # a loaded machine: still in Python's own start-up
+            continue
+        landed += 1
+        assert "Traceback" not in err, (delay, err)
+        # 130, or killed by the SIGINT itself, which a shell also reports as 130
+        assert proc.returncode in (130, -signal.SIGINT), (delay, proc.returncode, err)
+        assert err.strip().endswith("screwsym: interrupted"), (delay, err)
+    assert landed
+
+
+def test_the_quiet_exit_is_only_for_the_command(monkeypatch):
+    import pytest
+
+    from screwsym import _launch
+
+    monkeypatch.setattr("sys.argv", ["/usr/bin/screwsym", "verify"])
+    assert _launch.launched_as_command()
+    with pytest.raises(SystemExit) as exc:
+        _launch.exit_if_command_line()
+    assert exc.value.code == 130
+    monkeypatch.setattr("sys.argv", ["my_script.py"])
+    monkeypatch.setattr("sys.orig_argv", ["python", "my_script.py"], raising=False)
+    assert not _launch.launched_as_command()
+    _launch.exit_if_command_line()  # a user's script: nothing happens, the interrupt goes on
+    monkeypatch.setattr("sys.orig_argv", ["python", "-m", "screwsym", "list"], raising=False)
+    assert _launch.launched_as_command()

@@ -408,3 +408,34 @@ def test_an_unconstrained_platform_has_twists():
     mech = ParallelMechanism(*legs)
     assert mech.constraints.kind is Wrench and len(mech.constraints) == 0
     assert mech.twists.kind is Twist and mech.mobility().twists.kind is Twist
+
+
+def test_mobility_cases_with_the_same_answer_are_merged():
+    from sympy import Eq, Ne, symbols
+
+    b, c = symbols("b c", real=True)
+    z = [0, 0, 1]
+    fourbar = ParallelMechanism(Limb(R([0, 0, 0], z), R([1, b, 0], z)),
+                                Limb(R([4, 0, 0], z), R([3, c, 0], z)))
+    each = fourbar.mobility_cases(merge=False)
+    merged = fourbar.mobility_cases()
+    assert [m.answer() for _, m in each][:2] == [each[0][1].answer()] * 2 and len(each) == 3
+    assert [(cond, m.mobility, m.motion) for cond, m in merged] == [
+        (Ne(b, 0) | Ne(c, 0), 1, "1R"), (Eq(b, 0) & Eq(c, 0), 2, "1R1T")]
+    assert merged[0][1] == each[0][1]  # the first case's analysis, twists included
+    # the merged conditions still cover every point, the same answer at each
+    for point in ({b: 0, c: 0}, {b: 1, c: 0}, {b: 0, c: 2}, {b: 3, c: -1}):
+        hit = [m.answer() for cond, m in merged if cond.subs(point)]
+        want = [m.answer() for cond, m in each if cond.subs(point)]
+        assert hit == want
+    with pytest.raises(TypeError, match="merge: expected True or False"):
+        fourbar.mobility_cases(merge="no")
+
+
+def test_mobility_prints_as_a_short_summary_and_keeps_its_fields():
+    z = [0, 0, 1]
+    m = ParallelMechanism(Limb(R([0, 0, 0], z), R([1, 2, 0], z)),
+                          Limb(R([4, 0, 0], z), R([3, 3, 0], z))).mobility()
+    assert repr(m) == ("Mobility(mobility=1, motion='1R', common=3, redundant=0, passive=0, "
+                       "classical=-2)")
+    assert m.links == 4 and m.joints == 4 and m.twists.rank == 1 and len(m) == 15
