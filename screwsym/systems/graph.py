@@ -55,6 +55,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 from sympy import (
     QQ,
     Basic,
+    Dummy,
     ImmutableMatrix,
     Integer,
     Matrix,
@@ -79,7 +80,7 @@ from ..core.decide import is_zero
 from ..core.twist import Twist
 from .joints import Joint, Parallelogram, Spherical, Universal
 from .mechanism import ParallelMechanism, motion_type
-from .screw_system import ScrewSystem
+from .screw_system import ScrewSystem, _coefficient, _field
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -142,11 +143,21 @@ def lie_bracket(a: Twist, b: Twist) -> Twist:
 # ------------------------------------------------------ exact linear algebra
 
 
-def _domain(entries: list) -> Any:
-    """The field of the entries: QQ, an algebraic field, or rational functions over one."""
+def _dm(M: Matrix) -> DomainMatrix:
+    """``M`` over its field: QQ, an algebraic field, or rational functions over one.
+
+    The entries go through polynomial dictionaries and the cached algebraic
+    coefficients of :mod:`screwsym.systems.screw_system` (``K.from_sympy`` on an
+    algebraic field computes a minimal polynomial per entry: seconds).
+    """
+    entries = list(M)
+    if all(e.is_Rational for e in entries):  # the common case, at once
+        rows = [[QQ(int(e.p), int(e.q)) for e in entries[i * M.cols:(i + 1) * M.cols]]
+                for i in range(M.rows)]
+        return DomainMatrix(rows, (M.rows, M.cols), QQ)
     syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
+    parts = [p for e in entries for p in e.as_numer_denom()]
     numbers: list = []
-    parts = [p for e in entries for p in fraction(cancel(e))]
     if parts:
         _, found = parallel_dict_from_expr(parts)
         for g in found["gens"] if isinstance(found, dict) else found:
@@ -159,14 +170,20 @@ def _domain(entries: list) -> Any:
                 "joints: expected geometry that is rational functions of symbols with rational "
                 f"or algebraic coefficients, got {g} (write cos/sin as a rational parametrisation)"
             )
-    K = QQ.algebraic_field(*sorted(set(numbers), key=str)) if numbers else QQ
-    return K.frac_field(*syms) if syms else K
-
-
-def _dm(M: Matrix) -> DomainMatrix:
-    entries = list(M)
-    K = _domain(entries)
-    rows = [[K.from_sympy(M[i, j]) for j in range(M.cols)] for i in range(M.rows)]
+    K0 = _field(tuple(sorted(set(numbers), key=str)))
+    gens = tuple(syms) if syms else (Dummy("c"),)
+    R = K0[gens]
+    K = K0.frac_field(*syms) if syms else K0
+    dicts, _ = parallel_dict_from_expr(parts, gens=gens) if parts else ([], None)
+    polys = [R.ring.from_dict({m: _coefficient(K0, c) for m, c in d.items()}) for d in dicts]
+    values = []
+    for k in range(len(entries)):
+        num, den = polys[2 * k], polys[2 * k + 1]
+        if syms:
+            values.append(K.convert_from(num, R) / K.convert_from(den, R))
+        else:
+            values.append(num.LC / den.LC if num else K0.zero)
+    rows = [values[i * M.cols:(i + 1) * M.cols] for i in range(M.rows)]
     return DomainMatrix(rows, (M.rows, M.cols), K)
 
 
@@ -320,8 +337,8 @@ def _network(mech: Mechanism) -> _Network:
             for k, t in enumerate(twists[e]):
                 for r in range(6):
                     A[6 * i + r, g.offsets[e] + k] += s * t[r]
-    rank = _rank(A)
     null = _nullspace(A) if g.loops else Matrix.eye(F)
+    rank = F - null.cols
     return _Network(g, twists, accel, A, rank, null)
 
 
@@ -729,9 +746,10 @@ def _idle(net: _Network) -> Matrix:
         return zeros(N.rows, 0)
     rows: list[Matrix] = []
     carried: list[list[Matrix]] = [[] for _ in g.links]
-    for a, b, j in g.edges:
+    for e, (a, b, j) in enumerate(g.edges):
         for side, link in ((0, a), (1, b)):
-            carried[link].extend(_elements(j, side))
+            if g.degree[link] == 2:
+                carried[link].extend(_elements(j, net.twists[e], side))
     for link in range(1, len(g.links)):
         P = _path_matrix(net, link) * N
         if g.degree[link] != 2:
@@ -757,9 +775,8 @@ def _point_op(p: Any) -> Matrix:
     return Matrix.hstack(-_skew(list(p)), Matrix.eye(3))
 
 
-def _elements(j: Joint, side: int) -> list[Matrix]:
+def _elements(j: Joint, twists: tuple, side: int) -> list[Matrix]:
     """Operators on a link's twist that vanish when the joint's geometry in that link is at rest."""
-    twists = [list(t.matrix) for t in j._twists()]
     if isinstance(j, Spherical):
         return [_point_op(j.args[0])]
     if isinstance(j, Universal):
@@ -768,7 +785,7 @@ def _elements(j: Joint, side: int) -> list[Matrix]:
         p1, p2, q1 = j.args
         n = j.normal
         pts = (p1, p2) if side == 0 else (q1, q1 + p2 - p1)
-        return [_line_op(list(Twist.rotation(n, point=p).matrix)) for p in pts]
+        return [_line_op(list(n) + list(Matrix(p).cross(n))) for p in pts]
     ops = []
     for t in twists:
         if all(e == 0 for e in t[:3]):  # a direction (prismatic)
