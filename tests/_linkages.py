@@ -9,7 +9,7 @@ the remaining joints by Gauss-Newton.  Tests use it for a finite motion a small 
 from __future__ import annotations
 
 from collections import deque
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 from sympy import Matrix
@@ -77,7 +77,7 @@ def exp_twist(xi, t):
     return out
 
 
-@lru_cache(maxsize=None)
+@cache
 def _axes(j):
     """The joint's screws (omega; v_O) in axis order, from its own arguments."""
     a = j.args
@@ -101,7 +101,7 @@ def _axes(j):
     raise TypeError(type(j))
 
 
-@lru_cache(maxsize=None)
+@cache
 def _pa(j):
     p1, _, q1 = (_f(x) for x in j.args)
     return _f(j.normal), q1 - p1
@@ -247,7 +247,10 @@ def stephenson():
 DELTA_RADIAL = [[1, 0, 0], [Q(-3, 5), Q(4, 5), 0], [Q(-3, 5), Q(-4, 5), 0]]
 
 
-def delta_joints(i, e, platform="platform", radius=2, w=Q(1, 2)):
+HALF = Q(1, 2)
+
+
+def delta_joints(i, e, platform="platform", radius=2, w=HALF):
     """Leg i of the Delta, R-R-Pa-R: the arm on the base, the parallelogram's four revolutes."""
     u = [-e[1], e[0], 0]  # the arm's axis, tangent to the base circle
     b = scale(radius, e)

@@ -116,7 +116,7 @@ def lie_bracket(a: Twist, b: Twist) -> Twist:
 
     For twists ``a = (wa; va)`` and ``b = (wb; vb)`` (``v`` the velocity of
     the body point at the origin) this is ``ad_a b``, the derivative of ``b``
-    carried by the motion ``exp(a t)``: ``d/dt Ad_{exp(a t)} b`` at ``t = 0``
+    carried by the motion ``exp6(a t)``: ``d/dt Ad_{exp6(a t)} b`` at ``t = 0``
     (Murray, Li & Sastry 1994, §2.4, written here in the order ``(w; v)``).  It
     is what the second-order loop-closure condition of :meth:`Mechanism.second_order`
     uses; the tests check it against a finite motion.
@@ -446,7 +446,7 @@ class Mechanism(ScrewsymBasic):
     See Also
     ========
 
-    screwsym.systems.mechanism.ParallelMechanism : base, limbs, platform (:meth:`from_parallel`)
+    screwsym.systems.mechanism.ParallelMechanism
 
     References
     ==========

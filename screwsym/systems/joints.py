@@ -70,7 +70,7 @@ class Joint(ScrewsymBasic):
     def _accelerations(self) -> list[Twist | None]:
         """The second derivative of the joint's displacement, beyond its exponentials.
 
-        A lower pair moves by ``exp(X_1 q_1) ... exp(X_k q_k)`` (the axes in the
+        A lower pair moves by ``exp6(X_1 q_1) ... exp6(X_k q_k)`` (the axes in the
         order of :meth:`_twists`): nothing beyond, ``None`` per freedom.  A
         compound pair whose path is no exponential (:class:`Parallelogram`) gives
         the derivative of its spatial twist along the path, at rest.

@@ -13,9 +13,8 @@ import numpy as np
 import pytest
 from _linkages import (
     ISOGRAM,
-    Z,
     Closure,
-    add,
+    Z,
     bennett,
     cross,
     delta,
