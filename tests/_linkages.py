@@ -275,3 +275,26 @@ def delta():
     """Clavel's Delta robot, built link by link: 17 links, 21 revolutes, 5 loops."""
     return Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
                      base="base")
+
+
+def orthoglide():
+    """The Orthoglide (Wenger & Chablat 2000) at its isotropic pose, link by link: leg i a
+    prismatic along the axis e_i, then R-Pa-R, the rods along e_i, the revolutes' axis e_{i+1}."""
+    E3 = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    triples = []
+    for i in range(3):
+        e, u = E3[i], E3[(i + 1) % 3]
+        slider = scale(-3, e)  # the slider's pivot, on the axis e_i
+        attach = scale(Q(-1, 2), e)  # the platform's pivot of this leg
+        rod = sub(attach, slider)
+        n = cross(u, rod)
+        w = scale(Q(1, 2), u)
+        s, up, r1, r2, lo = (f"{k}{i + 1}" for k in ("slider", "upper", "rodA", "rodB", "lower"))
+        triples += [
+            ("base", s, Prismatic(e)),
+            (s, up, R(slider, u)),
+            (up, r1, R(add(slider, w), n)), (r1, lo, R(add(attach, w), n)),
+            (up, r2, R(sub(slider, w), n)), (r2, lo, R(sub(attach, w), n)),
+            (lo, "platform", R(attach, u)),
+        ]
+    return Mechanism(triples, base="base")

@@ -20,6 +20,7 @@ from _linkages import (
     delta,
     flat_parallelogram,
     four_r,
+    orthoglide,
     shaky_4r,
     stephenson,
     sub,
@@ -290,6 +291,22 @@ def test_delta_robot_built_link_by_link_is_3t():
     assert res < 1e-12
     D = c.poses(q)["platform"]
     assert np.abs(D[:3, :3] - np.eye(3)).max() < 1e-12 and np.linalg.norm(D[:3, 3]) > 1e-2
+
+
+def test_orthoglide_is_3t():
+    # the Orthoglide (Wenger & Chablat 2000, "Kinematic analysis of a new parallel machine
+    # tool: the Orthoglide", ARK 2000): three orthogonal prismatic legs P-R-Pa-R, three
+    # translations; here at its isotropic pose, the rods along the sliders' axes
+    m = orthoglide()
+    mo = m.mobility()
+    assert (mo.loops, mo.freedoms, mo.mobility, mo.idle) == (5, 21, 3, 0)
+    assert m.motion("platform") == "3T"
+    assert m.second_order()[:4] == (3, 3, 1, False)
+    c = Closure(m)
+    q, res = c.solve({0: 0.02, 7: -0.01, 14: 0.015})  # the three sliders
+    D = c.poses(q)["platform"]
+    assert res < 1e-12 and np.abs(D[:3, :3] - np.eye(3)).max() < 1e-12
+    assert np.allclose(D[:3, 3], [0.02, -0.01, 0.015], atol=1e-3)
 
 
 @pytest.mark.parametrize("build", [watt, stephenson], ids=["watt", "stephenson"])
