@@ -50,8 +50,12 @@ def best(fn, repeat: int) -> tuple[float, object]:
     return min(times), out
 
 
-def _v(op, a, b):
-    return [op(x, y) for x, y in zip(a, b, strict=True)]
+def _add(a, b):
+    return [x + y for x, y in zip(a, b, strict=True)]
+
+
+def _sub(a, b):
+    return [x - y for x, y in zip(a, b, strict=True)]
 
 
 def delta() -> Mechanism:
@@ -60,16 +64,14 @@ def delta() -> Mechanism:
     for i, e in enumerate([[1, 0, 0], [Q(-3, 5), Q(4, 5), 0], [Q(-3, 5), Q(-4, 5), 0]], 1):
         u = [-e[1], e[0], 0]
         b = [2 * x for x in e]
-        elbow = _v(lambda x, y: x + y, b, [e[0], e[1], -1])
+        elbow = _add(b, [e[0], e[1], -1])
         attach = [e[0], e[1], -3]
-        n = list(Matrix(u).cross(Matrix(_v(lambda x, y: x - y, attach, elbow))))
+        n = list(Matrix(u).cross(Matrix(_sub(attach, elbow))))
         w = [Q(x) / 2 for x in u]
-        plus = lambda p: _v(lambda x, y: x + y, p, w)  # noqa: E731
-        minus = lambda p: _v(lambda x, y: x - y, p, w)  # noqa: E731
         arm, up, r1, r2, lo = (f"{k}{i}" for k in ("arm", "upper", "rodA", "rodB", "lower"))
         triples += [("base", arm, R(b, u)), (arm, up, R(elbow, u)),
-                    (up, r1, R(plus(elbow), n)), (r1, lo, R(plus(attach), n)),
-                    (up, r2, R(minus(elbow), n)), (r2, lo, R(minus(attach), n)),
+                    (up, r1, R(_add(elbow, w), n)), (r1, lo, R(_add(attach, w), n)),
+                    (up, r2, R(_sub(elbow, w), n)), (r2, lo, R(_sub(attach, w), n)),
                     (lo, "platform", R(attach, u))]
     return Mechanism(triples, base="base")
 

@@ -957,6 +957,8 @@ def _second_order(mech: Mechanism) -> SecondOrder:
     except _Undecided:
         return SecondOrder(M, None, None, None, None, frozen)
     dims = [(kind, V, V.cols - (1 if kind == "quadric" else 0)) for kind, V in parts]
+    # the maximal components: drop a linear space inside another (the first of equal ones
+    # kept), and the point {0} wherever anything else is there (a quadric cone holds it too)
     maximal = []
     for i, (kind, V, d) in enumerate(dims):
         if kind == "space" and any(
@@ -964,7 +966,9 @@ def _second_order(mech: Mechanism) -> SecondOrder:
             for j, (k2, W, _) in enumerate(dims)
         ):
             continue
-        if kind == "space" and V.cols == 0 and len(dims) > 1:
+        if kind == "space" and V.cols == 0 and any(
+            k2 == "quadric" or W.cols > 0 for k2, W, _ in dims
+        ):
             continue
         maximal.append((kind, V, d))
     mobility = max(d for _, _, d in maximal)

@@ -142,6 +142,16 @@ def test_a_tree_has_no_loop_and_moves_freely():
     assert m.second_order().mobility == 3
 
 
+def test_a_rigid_triangle():
+    # three revolutes on parallel axes not on one line: a structure, to every order
+    m = Mechanism([("g", "a", R(O, Z)), ("a", "b", R([1, 0, 0], Z)), ("b", "g", R([0, 1, 0], Z))],
+                  base="g")
+    assert m.mobility().mobility == 0 and m.mobility().classical == -3
+    so = m.second_order()
+    assert (so.instantaneous, so.mobility, so.branches, so.several_branches) == (0, 0, 1, False)
+    assert m.motion("b") == "0" and len(m.twists("b")) == 0
+
+
 def test_idle_freedoms_are_found_not_declared():
     # S-P-S closed on the base: its one joint motion spins the leg about its own line
     m = Mechanism([("g", "lo", S(O)), ("lo", "up", P(Z)), ("up", "g", S([0, 0, 2]))], base="g")
