@@ -298,3 +298,15 @@ def orthoglide():
             (lo, "platform", R(attach, u)),
         ]
     return Mechanism(triples, base="base")
+
+
+def h4():
+    """The H4 (Pierrot & Company 1999), link by link: four Delta-like legs R-R-Pa-R, legs 1
+    and 2 on the side bar A of the travelling plate, legs 3 and 4 on B, and the central bar C
+    joined to A and to B by revolutes about z (the articulated plate)."""
+    radial = [[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]]
+    triples = []
+    for i, e in enumerate(radial, 1):
+        triples += delta_joints(i, e, platform="A" if i <= 2 else "B")
+    triples += [("A", "C", R([Q(1, 2), Q(1, 2), -3], Z)), ("C", "B", R([Q(-1, 2), Q(-1, 2), -3], Z))]
+    return Mechanism(triples, base="base")

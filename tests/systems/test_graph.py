@@ -20,6 +20,7 @@ from _linkages import (
     delta,
     flat_parallelogram,
     four_r,
+    h4,
     orthoglide,
     shaky_4r,
     stephenson,
@@ -311,12 +312,37 @@ def test_orthoglide_is_3t():
     mo = m.mobility()
     assert (mo.loops, mo.freedoms, mo.mobility, mo.idle) == (5, 21, 3, 0)
     assert m.motion("platform") == "3T"
-    assert m.second_order()[:4] == (3, 3, 1, False)
     c = Closure(m)
     q, res = c.solve({0: 0.02, 7: -0.01, 14: 0.015})  # the three sliders
     D = c.poses(q)["platform"]
     assert res < 1e-12 and np.abs(D[:3, :3] - np.eye(3)).max() < 1e-12
     assert np.allclose(D[:3, 3], [0.02, -0.01, 0.015], atol=1e-3)
+
+
+@pytest.mark.slow
+def test_h4_is_3t1r():
+    # the H4 (Pierrot & Company 1999, "H4: a new family of 4-dof parallel robots", AIM'99):
+    # four Delta-like legs, two on each side bar of an articulated travelling plate whose
+    # central bar turns about z relative to both: three translations and the rotation about z
+    # (Schoenflies motion); 24 links, 30 joints, 7 loops.  Slow: about 3 s
+    m = h4()
+    mo = m.mobility()
+    assert (mo.links, mo.joints, mo.loops, mo.mobility, mo.idle) == (24, 30, 7, 4, 0)
+    assert m.motion("C") == "1R3T" and m.motion("A") == "3T"
+    (w,) = [t.omega for t in m.twists("C") if t.omega != Matrix([0, 0, 0])]
+    assert w.cross(Matrix(Z)) == Matrix([0, 0, 0])  # the rotation is about z
+    c = Closure(m)
+    q, res = c.solve({0: 0.02, 7: -0.01, 14: 0.015, 21: 0.01})  # the four actuated arms
+    D = c.poses(q)["C"]
+    assert res < 1e-11
+    assert np.allclose(D[:3, 2], [0, 0, 1], atol=1e-12) and abs(D[0, 1]) > 1e-3  # turned about z
+
+
+@pytest.mark.slow
+def test_delta_and_orthoglide_translate_to_second_order():
+    # their three translations extend to second order (no shakiness); about 2 s
+    assert delta().second_order()[:4] == (3, 3, 1, False)
+    assert orthoglide().second_order()[:4] == (3, 3, 1, False)
 
 
 @pytest.mark.parametrize("build", [watt, stephenson], ids=["watt", "stephenson"])
