@@ -465,13 +465,24 @@ def numeric_acceleration_residual(mech, sign=1.0, h=1e-3):
     return np.linalg.norm(A @ qddot + sign * B), np.linalg.norm(B)
 
 
-@pytest.mark.parametrize("build", [bennett, lambda: parallelogram_legged(True)],
-                         ids=["bennett", "parallelogram_pair"])
+def rsur():
+    """A spatial R-S-U-R loop; the loop runs through the ball joint from coupler to crank,
+    against its order (its axes x, y, z reversed), and through the U from dir1 to dir2."""
+    return Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", S([1, 0, 1])),
+                      ("rocker", "coupler", U([3, 2, 1], [1, 0, 0], [0, 1, 1])),
+                      ("rocker", "ground", R([3, 2, 0], [0, 1, 0]))], base="ground")
+
+
+@pytest.mark.parametrize("build", [bennett, lambda: parallelogram_legged(True), rsur],
+                         ids=["bennett", "parallelogram_pair", "rsur"])
 def test_the_second_order_condition_holds_on_a_finite_motion(build):
     # A q'' + sum_{k<l} [$_k, $_l] q'_k q'_l (+ Y q'^2 for the parallelogram pair) = 0 along a
     # finite motion solved numerically: the bracket's order and sign and the pair's
     # acceleration term; with the sign flipped it fails (the check can fail)
     m = build()
+    assert m.mobility().mobility == 1
+    if build is rsur:
+        assert (1, -1) in m.loops[0] and (2, 1) in m.loops[0]  # S backward, U forward
     good, size = numeric_acceleration_residual(m)
     bad, _ = numeric_acceleration_residual(m, sign=-1.0)
     assert size > 0.1 and good < 1e-4 * size and bad > 0.1 * size
