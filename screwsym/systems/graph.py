@@ -566,7 +566,12 @@ class Mechanism(ScrewsymBasic):
         All figures are first order: they describe the joint rates (velocities)
         the loops allow here, not whether the mechanism can move a finite
         amount (see :meth:`second_order`).  With symbols in the geometry they
-        are generic (for all values outside a proper algebraic subset).
+        are generic (for all values outside a proper algebraic subset): the
+        rank is taken over the field of rational functions, with no case split
+        (unlike :meth:`ParallelMechanism.mobility_cases
+        <screwsym.systems.mechanism.ParallelMechanism.mobility_cases>`), and
+        many symbols make it slow (the 3-RPS with six symbols and ``sqrt(3)``
+        takes minutes): give the symbols values where you can.
 
         - ``mobility``: ``M = F - rank``, the dimension of the null space of the
           network matrix (the independent joint rates), found exactly;
