@@ -1,10 +1,20 @@
-r"""Screw systems, kinematic pairs and the mobility of parallel mechanisms.
+r"""Screw systems, kinematic pairs, and the mobility of parallel mechanisms and of any linkage.
 
 Built on :mod:`screwsym.core` alone (Huang, Li & Ding, Chapters 2 and 5).  A
 sibling of :mod:`screwsym.motion`: neither imports the other.
 """
 
-from .joints import Cylindrical, Helical, Joint, Prismatic, Revolute, Spherical, Universal
+from .graph import Mechanism, MechanismMobility, SecondOrder, lie_bracket
+from .joints import (
+    Cylindrical,
+    Helical,
+    Joint,
+    Parallelogram,
+    Prismatic,
+    Revolute,
+    Spherical,
+    Universal,
+)
 from .mechanism import Limb, Mobility, ParallelMechanism, motion_type
 from .screw_system import ScrewSystem
 
@@ -17,8 +27,13 @@ __all__ = [
     "Cylindrical",
     "Universal",
     "Spherical",
+    "Parallelogram",
     "Limb",
     "ParallelMechanism",
     "Mobility",
     "motion_type",
+    "Mechanism",
+    "MechanismMobility",
+    "SecondOrder",
+    "lie_bracket",
 ]

@@ -2,7 +2,8 @@ r"""Kinematic pairs: each joint is the screw system of the unit twists it allows
 
 The book's lower pairs and the two compound ones used in its examples:
 :class:`Revolute` (R), :class:`Prismatic` (P), :class:`Helical` (H),
-:class:`Cylindrical` (C), :class:`Universal` (U) and :class:`Spherical` (S).
+:class:`Cylindrical` (C), :class:`Universal` (U) and :class:`Spherical` (S), and the
+parallelogram four-bar as one compound pair, :class:`Parallelogram` (Pa).
 The one-letter names are aliases in this module (``from screwsym.systems.joints
 import R, P, S``); they are not exported by ``screwsym``, where ``S`` would
 shadow SymPy's ``S``.
@@ -16,6 +17,7 @@ from sympy import ImmutableMatrix
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_exact, check_nonzero_vector, check_scalar, check_vector
+from ..core.decide import is_zero_vector
 from ..core.screw import ScalarLike, VectorLike
 from ..core.twist import Twist
 from .screw_system import ScrewSystem
@@ -23,7 +25,10 @@ from .screw_system import ScrewSystem
 if TYPE_CHECKING:
     from typing_extensions import Self
 
-__all__ = ["Joint", "Revolute", "Prismatic", "Helical", "Cylindrical", "Universal", "Spherical"]
+__all__ = [
+    "Joint", "Revolute", "Prismatic", "Helical", "Cylindrical", "Universal", "Spherical",
+    "Parallelogram",
+]
 
 #: the unit axes x, y, z (a spherical joint's rotations; the mechanism's pure translations)
 _E = ([1, 0, 0], [0, 1, 0], [0, 0, 1])
@@ -61,6 +66,16 @@ class Joint(ScrewsymBasic):
 
     def _twists(self) -> list[Twist]:  # pragma: no cover - every subclass defines it
         raise NotImplementedError
+
+    def _accelerations(self) -> list[Twist | None]:
+        """The second derivative of the joint's displacement, beyond its exponentials.
+
+        A lower pair moves by ``exp6(X_1 q_1) ... exp6(X_k q_k)`` (the axes in the
+        order of :meth:`_twists`): nothing beyond, ``None`` per freedom.  A
+        compound pair whose path is no exponential (:class:`Parallelogram`) gives
+        the derivative of its spatial twist along the path, at rest.
+        """
+        return [None] * self.freedom
 
 
 class Revolute(Joint):
@@ -190,6 +205,77 @@ class Spherical(Joint):
         return [_rotation(self.args[0], ImmutableMatrix(e)) for e in _E]
 
 
+class Parallelogram(Joint):
+    r"""A four-bar parallelogram as one compound pair: its output bar translates (1 freedom).
+
+    Explanation
+    ===========
+
+    The input bar, fixed in the link nearer the base, carries the pivots
+    ``p1`` and ``p2``; two equal rods run from them to the output bar's pivots
+    ``q1`` and ``q2 = q1 + p2 - p1``.  The four revolute axes are normal to the
+    parallelogram's plane, along ``n = (p2 - p1) x (q1 - p1)``.  Turning the rods
+    about ``n`` at unit rate (an angular velocity ``n``, not a unit vector)
+    carries the output bar on a *circular translation*: its instantaneous twist
+    is the translation ``(0; n x (q1 - p1))``, and its displacement after the
+    angle ``phi`` is the translation by ``(Rot(n, |n| phi) - I)(q1 - p1)``,
+    whose second derivative at rest, ``n x (n x (q1 - p1))``, the second-order
+    analysis of :class:`~screwsym.systems.graph.Mechanism` uses.  The pair is
+    the loop of :func:`Parallelogram.links` closed on itself (the tests show
+    the same twist system both ways).
+
+    Examples
+    ========
+
+    >>> from screwsym.systems.joints import Parallelogram
+    >>> Parallelogram([0, 0, 0], [1, 0, 0], [0, 0, 2]).twists
+    ScrewSystem(Twist([0, 0, 0], [-4, 0, 0]))
+    """
+
+    __slots__ = ()
+    freedom = 1
+
+    def __new__(cls, p1: VectorLike, p2: VectorLike, q1: VectorLike) -> Self:
+        a, b, c = _point(p1, "p1"), _point(p2, "p2"), _point(q1, "q1")
+        if is_zero_vector(b - a) is True:
+            raise ValueError("p2: the input bar needs two distinct pivots, got p2 = p1")
+        if is_zero_vector((b - a).cross(c - a)) is True:
+            raise ValueError(
+                "q1: the rod must not be parallel to the bar (a flat parallelogram has no "
+                "plane; build it link by link with Mechanism), got q1 - p1 parallel to p2 - p1"
+            )
+        return ScrewsymBasic.__new__(cls, a, b, c)
+
+    @property
+    def normal(self) -> ImmutableMatrix:
+        """The axes' common direction ``n = (p2 - p1) x (q1 - p1)``."""
+        p1, p2, q1 = self.args
+        return ImmutableMatrix((p2 - p1).cross(q1 - p1))
+
+    def _twists(self) -> list[Twist]:
+        p1, _, q1 = self.args
+        return [Twist.translation(self.normal.cross(q1 - p1))]
+
+    def _accelerations(self) -> list[Twist | None]:
+        p1, _, q1 = self.args
+        n = self.normal
+        return [Twist.translation(n.cross(n.cross(q1 - p1)))]
+
+    def links(self, a: Any = "a", b: Any = "b", rods: tuple[Any, Any] = ("rod1", "rod2")) -> list:
+        """The same loop as ``(link_a, link_b, joint)`` triples of four revolutes, for
+        :class:`~screwsym.systems.graph.Mechanism`: ``a`` holds the input bar, ``b`` the output.
+
+        >>> from screwsym.systems.joints import Parallelogram
+        >>> [(x, y) for x, y, _ in Parallelogram([0, 0, 0], [1, 0, 0], [0, 0, 2]).links()]
+        [('a', 'rod1'), ('rod1', 'b'), ('a', 'rod2'), ('rod2', 'b')]
+        """
+        p1, p2, q1 = self.args
+        n, q2 = self.normal, q1 + p2 - p1
+        r1, r2 = rods
+        return [(a, r1, Revolute(p1, n)), (r1, b, Revolute(q1, n)),
+                (a, r2, Revolute(p2, n)), (r2, b, Revolute(q2, n))]
+
+
 def check_joints(joints: tuple[Any, ...], name: str) -> tuple[Joint, ...]:
     if not joints:
         raise ValueError(f"{name}: expected at least one joint, got none")
@@ -209,3 +295,4 @@ H = Helical
 C = Cylindrical
 U = Universal
 S = Spherical
+Pa = Parallelogram

@@ -104,7 +104,7 @@ class Limb(ScrewsymBasic):
 class Mobility(NamedTuple):
     """The result of :meth:`ParallelMechanism.mobility` (see the module docstring)."""
 
-    mobility: int  #: M, by the modified Grübler–Kutzbach criterion
+    mobility: int  #: M, by the modified Grübler–Kutzbach criterion: instantaneous (first order)
     order: int  #: d = 6 - lambda
     common: int  #: lambda, common constraints
     redundant: int  #: nu, redundant constraints
@@ -211,9 +211,12 @@ class ParallelMechanism(ScrewsymBasic):
         return self.constraints.reciprocal()
 
     def mobility(self) -> Mobility:
-        """The mobility by the modified Grübler–Kutzbach criterion, generic in the symbols.
+        """The instantaneous mobility by the modified Grübler–Kutzbach criterion, generic in the symbols.
 
-        See the module docstring for how ``common`` (lambda), ``redundant``
+        Instantaneous: the first-order motions at the configuration given, which
+        a finite motion need not have (a shaky linkage); for the second order,
+        write the mechanism as a graph (:meth:`screwsym.systems.graph.Mechanism.from_parallel`)
+        and call its ``second_order()``.  See the module docstring for how ``common`` (lambda), ``redundant``
         (nu) and ``passive`` (zeta) come from the screw systems.
         """
         return _mobility(self)
