@@ -41,12 +41,13 @@ planar 3-RRR platform need the actuated joints and are not in its scope.
 
 from __future__ import annotations
 
+import sys
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from sympy import And, ImmutableMatrix, cancel, false, true
+from sympy import And, Basic, ImmutableMatrix, cancel, false, true
 
 from ..core.basic import ScrewsymBasic
-from ..core.checks import check_count
+from ..core.checks import check_count, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .joints import _E, Joint, check_joints
@@ -118,6 +119,41 @@ class Mobility(NamedTuple):
     freedoms: int  #: sum f_i
     rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
     translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
+
+    # a tuple compares its items with ==, and a SymPy matrix's == parses the strings inside
+    # a tuple or dict: these compare without handing a string to SymPy (screwsym.core.basic)
+    def __eq__(self, other: object) -> bool:
+        return (
+            isinstance(other, tuple)
+            and len(other) == len(self)
+            and all(_same(a, b) for a, b in zip(self, other))
+        )
+
+    def __ne__(self, other: object) -> bool:
+        return not self == other
+
+    __hash__ = tuple.__hash__
+
+    def __contains__(self, value: object) -> bool:
+        return any(_same(a, value) for a in self)
+
+    def count(self, value: Any) -> int:
+        """How many fields equal ``value`` (strings in ``value`` never reach SymPy)."""
+        return sum(_same(a, value) for a in self)
+
+    def index(self, value: Any, start: int = 0, stop: int = sys.maxsize) -> int:
+        """The first field equal to ``value`` (strings in ``value`` never reach SymPy)."""
+        for i in range(*slice(start, stop).indices(len(self))):
+            if _same(self[i], value):
+                return i
+        raise ValueError("Mobility.index(value): value not found")
+
+
+def _same(field: Any, value: Any) -> bool:
+    """``field == value``, ``False`` where a SymPy ``field`` would meet a string in ``value``."""
+    if isinstance(field, Basic) and not isinstance(value, Basic) and find_string(value) is not None:
+        return False
+    return bool(field == value)
 
 
 def motion_type(rotations: int, translations: int) -> str:
