@@ -35,7 +35,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, NoReturn, TypeVar, overload
 
-from sympy import Expr, ImmutableMatrix, S, cos, sin, sqrt, trigsimp, zeros
+from sympy import Expr, ImmutableMatrix, S, cancel, cos, sin, sqrt, trigsimp, zeros
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
@@ -102,6 +102,8 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
     entries with the exact decision of
     :func:`screwsym.core.decide.is_zero` when they are no larger than
     ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
+    A matrix rational in its symbols whose determinant cancels to -1 is a
+    reflection for every value of them, and is refused.
 
     >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
     (3, 3)
@@ -121,10 +123,21 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
             f"{name}: expected an orthonormal matrix (R^T R = I), got R^T R - I = "
             f"Matrix({gram.tolist()})"
         )
-    # R^T R = I leaves det R = +-1; the sign is decided for numeric entries only
-    det = R.det(method="berkowitz") if all(e.is_number for e in R) else None
-    if det is not None and _decide_small(det - 1) is False:
-        raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
+    # R^T R = I leaves det R = +-1: numbers are decided; entries rational in the symbols are
+    # refused where the determinant cancels to -1 (a reflection for every value of them)
+    if all(e.is_number for e in R):
+        det = R.det(method="berkowitz")
+        if _decide_small(det - 1) is False:
+            raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
+    elif (
+        all(e.is_rational_function() for e in R)
+        and sum(e.count_ops() for e in R) <= ROTATION_CHECK_OPS
+    ):
+        if is_zero(cancel(R.det(method="berkowitz") + 1)) is True:
+            raise ValueError(
+                f"{name}: expected a rotation (det R = 1), got det R = -1 (a reflection for "
+                "every value of its symbols)"
+            )
     return R
 
 

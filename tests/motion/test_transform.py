@@ -329,3 +329,22 @@ def test_lambdify_takes_a_transform():
     for k, (tv, dv) in enumerate([(0.3, 2.0), (-1.2, 0.5)]):
         want = np.array(T.matrix.subs({t: tv, d: dv}).evalf(), dtype=float)
         np.testing.assert_allclose(got[k], want, rtol=1e-13, atol=1e-15)
+
+
+def test_a_provable_symbolic_reflection_is_refused_as_a_rotation():
+    # issue 20: entries (1-u^2)/(1+u^2), 2u/(1+u^2) are orthonormal for every u, and det = -1
+    # by cancel: it was accepted, and a Chain built on it mirrored
+    from sympy import Symbol
+
+    from screwsym import Chain, Twist
+
+    u = Symbol("u", real=True)
+    a, b = (1 - u**2) / (1 + u**2), 2 * u / (1 + u**2)
+    mirror = [[a, b, 0], [b, -a, 0], [0, 0, 1]]
+    with pytest.raises(ValueError, match=r"R: expected a rotation \(det R = 1\), got det R = -1"):
+        Transform(mirror, [0, 0, 0])
+    with pytest.raises(ValueError, match="got det R = -1"):
+        Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])], home=Transform(mirror, [0, 0, 0]))
+    # the same entries as a rotation (det = +1 by cancel) are accepted
+    turn = Transform([[a, -b, 0], [b, a, 0], [0, 0, 1]], [0, 0, 0])
+    assert turn.R[1, 0] == b
