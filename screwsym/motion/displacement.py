@@ -41,7 +41,7 @@ from ..core.formulas import dual_part, foot_point, pitch_ratio
 from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
-from .transform import Transform, rodrigues, skew
+from .transform import Transform, rotation_minus_identity, skew
 
 __all__ = ["exp6", "log6", "se3_matrix"]
 
@@ -117,10 +117,11 @@ def exp6(twist: ScrewLike, theta: ScalarLike) -> Transform:
     if is_zero_vector(omega) is True:
         return Transform._new(ImmutableMatrix.eye(3), theta * v)
     ww = omega.dot(omega)
-    R = rodrigues(omega, theta, sqrt(ww))
+    turn = rotation_minus_identity(omega, theta, sqrt(ww))  # R - I, digits kept for floats
+    R = ImmutableMatrix.eye(3) + turn
     r = foot_point(omega, v)
     h = pitch_ratio(omega, v)
-    p = (ImmutableMatrix.eye(3) - R) * r + (h * theta) * omega
+    p = -turn * r + (h * theta) * omega
     if all(e.is_number for e in p) or is_zero(ww - 1) is True:
         p = p.applyfunc(lambda e: e.expand())
     return tidy(Transform._new(R, p))

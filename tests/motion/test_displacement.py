@@ -238,3 +238,19 @@ def test_log6_of_an_exact_float_half_turn_is_pi_with_the_sign_convention():
     twist, angle = log6(T)
     assert angle == Float(pi, 16) or abs(float(angle) - float(pi)) < 1e-15
     assert [float(w) for w in twist.omega] == [0, 0, 1]
+
+
+@pytest.mark.parametrize("angle", [1e-3, 1e-6, 1e-9, 1e-12])
+def test_exp6_at_a_small_float_angle_keeps_the_digits_of_one_minus_cos(angle):
+    # issue 20: 1 - cos(theta) lost its digits (a relative error of 9e-5 in p at 1e-6 rad,
+    # the whole term at 1e-9); 2 sin^2(theta/2) keeps them.  Reference: Rodrigues in mpmath
+    import mpmath
+
+    mpmath.mp.dps = 40
+    point = [1.0, -2.0, 0.5]
+    Rm, a = _mp_rotation([1, 2, 2], mpmath.mpf(angle))
+    twist = Twist.rotation([1 / 3, 2 / 3, 2 / 3], point=point)
+    T = exp6(twist, angle)
+    want = (mpmath.eye(3) - Rm) * mpmath.matrix(point)  # p = (I - R) r, pitch 0
+    for got, ref in zip(T.p, want):
+        assert abs(mpmath.mpf(got) - ref) <= 4e-16 * angle * 3, (got, ref)
