@@ -39,6 +39,7 @@ from sympy import Expr, ImmutableMatrix, S, cancel, cos, sin, sqrt, trigsimp, ze
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
+    check_flag,
     check_instance,
     check_matrix,
     check_point_or_direction,
@@ -46,7 +47,14 @@ from ..core.checks import (
     check_vector,
     refusing_strings,
 )
-from ..core.decide import float_tau, is_zero, is_zero_scaled, is_zero_vector
+from ..core.decide import (
+    float_tau,
+    is_zero,
+    is_zero_scaled,
+    is_zero_vector,
+    is_zero_vector_scaled,
+    norm,
+)
 from ..core.formulas import moved
 from ..core.screw import MatrixLike, ScalarLike, Screw, VectorLike
 from ..core.tidy import tidy
@@ -179,6 +187,11 @@ def rotation_minus_identity(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One
     else:
         versine = 1 - cos(angle)
     return ImmutableMatrix((sin(angle) / w) * K + (versine / w**2) * (K * K))
+
+
+def _both(a: bool | None, b: bool | None) -> bool | None:
+    """Three-valued ``and``: False if either is False, True if both are True, else None."""
+    return False if False in (a, b) else True if a is True and b is True else None
 
 
 def _tidy(e: Expr) -> Expr:
@@ -446,6 +459,7 @@ class Transform(ScrewsymBasic):
         ...
         TypeError: obj: expected a point or direction (3-vector), a screw or a Transform, got list [1, 0, 0, 0, 0, 0]; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix or Wrench.from_matrix
         """
+        check_flag(direction, "direction")
         if isinstance(obj, Transform):
             return self @ obj
         if isinstance(obj, Screw):
@@ -456,15 +470,26 @@ class Transform(ScrewsymBasic):
     def equals(self, other: Transform) -> bool | None:
         """Whether the two motions are equal mathematically: True, False or None.
 
-        ``==`` compares structure, as everywhere in SymPy.
+        ``==`` compares structure, as everywhere in SymPy.  Floats follow the
+        float policy (:func:`screwsym.core.decide.is_zero_scaled`): ``R``
+        against 1, ``p`` against ``1 + |p1| + |p2|``.
 
         >>> from sympy import pi
         >>> Transform.rotation([0, 0, 1], 2*pi).equals(Transform.identity())
         True
+        >>> T = Transform.rotation([1, 2, 2], 0.7, point=[1.0, -2.0, 3.0])
+        >>> T.inverse().inverse().equals(T)
+        True
         """
         check_instance(other, "other", Transform)
         diff = (self.matrix - other.matrix).applyfunc(_tidy)
-        return is_zero_vector(diff)
+        if float_tau(*diff) is None:
+            return is_zero_vector(diff)
+        # floats: the float policy (screwsym.core.decide), R against 1, p against its size
+        dR = (self.R - other.R).applyfunc(_tidy).reshape(9, 1)
+        dp = (self.p - other.p).applyfunc(_tidy)
+        size = S.One + norm(self.p) + norm(other.p)
+        return _both(is_zero_vector_scaled(dR, S.One), is_zero_vector_scaled(dp, size))
 
     # ------------------------------------------------------- SymPy integration
     def applyfunc(self, f: Callable[[Expr], Any]) -> Transform:

@@ -348,3 +348,23 @@ def test_a_provable_symbolic_reflection_is_refused_as_a_rotation():
     # the same entries as a rotation (det = +1 by cancel) are accepted
     turn = Transform([[a, -b, 0], [b, a, 0], [0, 0, 1]], [0, 0, 0])
     assert turn.R[1, 0] == b
+
+
+def test_equals_of_float_motions_follows_the_float_policy():
+    # issue 20: T.inverse().inverse().equals(T) was False for a float transform
+    T = Transform.rotation([1, 2, 2], 0.7, point=[1.0, -2.0, 3.0])
+    assert T.inverse().inverse() != T  # rounding: not the same floats ...
+    assert T.inverse().inverse().equals(T) is True  # ... but the same motion
+    assert T.equals(Transform.rotation([1, 2, 2], 0.7 + 1e-9, point=[1.0, -2.0, 3.0])) is False
+    big = Transform.translation([1e12, 0, 0]) @ T
+    assert big.inverse().inverse().equals(big) is True
+    assert big.equals(Transform.translation([1e12 + 1e3, 0, 0]) @ T) is False  # tau = 2^-40
+
+
+@pytest.mark.parametrize("flag", ["no", 1, None, 0.0])
+def test_apply_direction_is_a_boolean(flag):
+    # issue 20: direction="no" was taken as direction=True
+    T = Transform.translation([1, 0, 0])
+    with pytest.raises(TypeError, match=r"direction: expected True or False, got"):
+        T.apply([1, 0, 0], direction=flag)
+    assert T.apply([1, 0, 0], direction=False) == Matrix([2, 0, 0])
