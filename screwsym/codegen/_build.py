@@ -32,7 +32,7 @@ import numpy as np
 from . import _emit
 from ._plan import Out, Plan, with_cse
 from ._printers import PY_HELPERS
-from ._runtime import Arg, prepare
+from ._runtime import Arg, Trailings, prepare
 
 #: rows per block in the NumPy back end: 16384 rows of float64 temporaries
 #: (128 KiB each) stay in the L2 cache; measured best between 4096 and 65536.
@@ -259,7 +259,7 @@ def _namespace(plan: Plan) -> dict:
         "_errstate": np.errstate,
         "_prepare": prepare,
         "_SPECS": tuple(plan.specs),
-        "_OUTS": tuple(out.trailing for out in plan.outs),
+        "_OUTS": Trailings((out.trailing for out in plan.outs), plan.is_tuple),
         "_BLOCK": BLOCK,
     }
     exec(compile(PY_HELPERS, "<screwsym-codegen-helpers>", "exec"), ns)  # noqa: S102 - ours
@@ -318,7 +318,7 @@ def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
 
 def _numba_function(mod, plan: Plan, doc: str) -> Callable:
     mod._SPECS = tuple(plan.specs)
-    mod._OUTS = tuple(out.trailing for out in plan.outs)
+    mod._OUTS = Trailings((out.trailing for out in plan.outs), plan.is_tuple)
     # a fresh function object per plan: the user's names are set on it, not on the module's
     base = mod._fn
     fn = type(base)(base.__code__, mod.__dict__, "_fn", None, base.__closure__)
