@@ -368,3 +368,20 @@ def test_apply_direction_is_a_boolean(flag):
     with pytest.raises(TypeError, match=r"direction: expected True or False, got"):
         T.apply([1, 0, 0], direction=flag)
     assert T.apply([1, 0, 0], direction=False) == Matrix([2, 0, 0])
+
+
+def test_an_axis_such_as_1_over_y_is_normalised_not_refused_with_an_internal_name():
+    # issue 20: unit() and Transform.rotation() refused [1/y, 1, 0] with "S[0]" / "v[0]": the
+    # normalised entry 1/(y sqrt(1 + y^-2)) is real wherever it is defined
+    from sympy import Symbol, cancel
+
+    from screwsym import Screw, unit
+
+    y = Symbol("y", real=True)
+    u = unit(Screw([1 / y, 1, 0], [0, 0, 0])).S
+    assert cancel(u.dot(u) - 1) == 0
+    R = Transform.rotation([1 / y, 1, 0], t).R
+    assert zero_matrix(R * Matrix([1 / y, 1, 0]) - Matrix([1 / y, 1, 0]))
+    # a direction that is not real is refused under the user's name
+    with pytest.raises(ValueError, match=r"direction\[0\]: expected a real value, got sqrt\(y\)"):
+        Transform.rotation([sqrt(y), 1, 0], t)
