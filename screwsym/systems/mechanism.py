@@ -41,8 +41,9 @@ planar 3-RRR platform need the actuated joints and are not in its scope.
 
 from __future__ import annotations
 
+import operator
 import sys
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, SupportsIndex
 
 from sympy import And, Basic, ImmutableMatrix, cancel, false, true
 
@@ -51,7 +52,7 @@ from ..core.checks import check_count, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .joints import _E, Joint, check_joints
-from .screw_system import MAX_CASES, ScrewSystem, _analysis
+from .screw_system import BUDGET, MAX_CASES, ScrewSystem, _analysis, case_budget
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -126,13 +127,14 @@ class Mobility(NamedTuple):
         return (
             isinstance(other, tuple)
             and len(other) == len(self)
-            and all(_same(a, b) for a, b in zip(self, other))
+            and all(_same(a, b) for a, b in zip(self, other, strict=True))
         )
 
     def __ne__(self, other: object) -> bool:
         return not self == other
 
-    __hash__ = tuple.__hash__
+    def __hash__(self) -> int:
+        return tuple.__hash__(self)
 
     def __contains__(self, value: object) -> bool:
         return any(_same(a, value) for a in self)
@@ -141,9 +143,9 @@ class Mobility(NamedTuple):
         """How many fields equal ``value`` (strings in ``value`` never reach SymPy)."""
         return sum(_same(a, value) for a in self)
 
-    def index(self, value: Any, start: int = 0, stop: int = sys.maxsize) -> int:
+    def index(self, value: Any, start: SupportsIndex = 0, stop: SupportsIndex = sys.maxsize) -> int:
         """The first field equal to ``value`` (strings in ``value`` never reach SymPy)."""
-        for i in range(*slice(start, stop).indices(len(self))):
+        for i in range(*slice(operator.index(start), operator.index(stop)).indices(len(self))):
             if _same(self[i], value):
                 return i
         raise ValueError("Mobility.index(value): value not found")
@@ -234,7 +236,9 @@ class ParallelMechanism(ScrewsymBasic):
         """
         return _mobility(self)
 
-    def mobility_cases(self, *, max_cases: int = MAX_CASES) -> list[tuple[Any, Mobility | None]]:
+    def mobility_cases(
+        self, *, max_cases: int = MAX_CASES, budget: int = BUDGET
+    ) -> list[tuple[Any, Mobility | None]]:
         """The mobility in each case where the symbols change a rank: an exhaustive split.
 
         Explanation
@@ -250,7 +254,9 @@ class ParallelMechanism(ScrewsymBasic):
         ``mobility``, ``passive`` and the platform's twists are exact on the whole
         case, ``common`` and ``redundant`` generic within it.  A case whose
         rank could not be decided (a condition linear in no symbol) comes with
-        ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond).
+        ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond), and
+        at most ``budget`` units of polynomial arithmetic for the whole split
+        (:meth:`ScrewSystem.rank_conditions`; a ``ValueError`` naming it beyond).
 
         Examples
         ========
@@ -266,6 +272,10 @@ class ParallelMechanism(ScrewsymBasic):
         [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1R1T')]
         """
         max_cases = check_count(max_cases, "max_cases")
+        with case_budget(budget, "mobility_cases"):
+            return self._mobility_cases(max_cases)
+
+    def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | None]]:
         leaves: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = [((), {})]
         for i in range(len(self.args)):
             grown = []

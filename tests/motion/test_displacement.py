@@ -228,9 +228,9 @@ def test_log6_near_a_half_turn_is_decided_by_the_rotation_not_a_tolerance(bits):
         twist, angle = log6(T)
         assert isinstance(angle, Float), (k, angle)
         assert abs(mpmath.mpf(angle) - theta) < 8 * eps, k
-        assert max(abs(mpmath.mpf(w) - c) for w, c in zip(twist.omega, a)) < 8 * eps, k
+        assert max(abs(mpmath.mpf(w) - c) for w, c in zip(twist.omega, a, strict=True)) < 8 * eps, k
         back = exp6(twist, angle)
-        assert max(abs(float(u - v)) for u, v in zip([*back.R, *back.p], [*T.R, *T.p])) < 32 * eps
+        assert max(abs(float(u - v)) for u, v in zip([*back.R, *back.p], [*T.R, *T.p], strict=True)) < 32 * eps
 
 
 def test_log6_of_an_exact_float_half_turn_is_pi_with_the_sign_convention():
@@ -252,5 +252,5 @@ def test_exp6_at_a_small_float_angle_keeps_the_digits_of_one_minus_cos(angle):
     twist = Twist.rotation([1 / 3, 2 / 3, 2 / 3], point=point)
     T = exp6(twist, angle)
     want = (mpmath.eye(3) - Rm) * mpmath.matrix(point)  # p = (I - R) r, pitch 0
-    for got, ref in zip(T.p, want):
+    for got, ref in zip(T.p, want, strict=True):
         assert abs(mpmath.mpf(got) - ref) <= 4e-16 * angle * 3, (got, ref)

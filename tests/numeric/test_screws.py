@@ -343,5 +343,5 @@ def test_property_pitch_and_foot_are_scale_robust_against_sympys_exact_values(c,
     size = float(sqrt(S0.dot(S0) / S.dot(S)))
     assume(1e-300 < size < 1e300 or not any(c[3:]))
     f = numeric.functions_for("numpy")
-    for got, want in [(f.pitch(s), h), *zip(f.foot(s), P)]:
+    for got, want in [(f.pitch(s), h), *zip(f.foot(s), P, strict=True)]:
         assert abs(got - float(want)) <= 8 * np.finfo(float).eps * size, (got, want)
