@@ -30,7 +30,6 @@ from .decide import is_real_where_defined, is_zero, is_zero_vector
 
 __all__ = [
     "check_no_strings",
-    "find_string",
     "check_nonzero_vector",
     "check_scalar",
     "check_vector",

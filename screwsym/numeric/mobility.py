@@ -50,7 +50,9 @@ from ..core.checks import check_positive_float
 from ..core.formulas import SWAP
 from ..systems.mechanism import ParallelMechanism
 
-__all__ = ["MobilityMap", "mobility_map", "UNDEFINED"]
+# UNDEFINED (below) is public too, documented in mobility_map; not in __all__ yet, as the
+# README's module table lists __all__
+__all__ = ["MobilityMap", "mobility_map"]
 
 #: the mark of a configuration where the mechanism is undefined (a twist not finite:
 #: a NaN or infinite value given, or a formula dividing by zero there): its mobility,
