@@ -9,6 +9,7 @@ libraries): a content-addressed cache in the user's cache directory, see
 from __future__ import annotations
 
 import ctypes
+import hashlib
 import importlib.util
 import json
 import linecache
@@ -31,7 +32,7 @@ import numpy as np
 from . import _emit
 from ._plan import Out, Plan, with_cse
 from ._printers import PY_HELPERS
-from ._runtime import Arg, prepare
+from ._runtime import Arg, Trailings, prepare
 
 #: rows per block in the NumPy back end: 16384 rows of float64 temporaries
 #: (128 KiB each) stay in the L2 cache; measured best between 4096 and 65536.
@@ -79,11 +80,14 @@ def cache_dir() -> Path | None:
     """The directory of generated modules and libraries, created with mode 0o700.
 
     ``$SCREWSYM_CACHE_DIR`` if set, else ``$XDG_CACHE_HOME/screwsym``, else
-    ``~/.cache/screwsym``.  None (no disk cache) when it cannot be created
-    or is not a directory owned by this user that others cannot write.
-    Files are named by a content hash of the generated code (which includes
-    a digest of screwsym's code generator), written atomically, and at most
-    :data:`DISK_FILES` of each kind are kept.
+    ``~/.cache/screwsym``.  None (no disk cache: functions are built in
+    memory) when it cannot be created, or is not a directory (a symbolic link
+    is not followed) owned by this user, that others cannot write and this
+    process can.  Its subfolders (``numba/``, ``c/``) are held to the same
+    rules.  Files are named by a content hash of the generated code (which
+    includes a digest of screwsym's code generator) and by the SHA-256 of
+    their own content, which is checked before a file is loaded; they are
+    written atomically, and at most :data:`DISK_FILES` of each kind are kept.
     """
     root = os.environ.get("SCREWSYM_CACHE_DIR")
     if not root:
@@ -92,28 +96,103 @@ def cache_dir() -> Path | None:
     path = Path(root)
     try:
         path.mkdir(mode=0o700, parents=True, exist_ok=True)
-        st = path.lstat()
     except OSError:
         return None
-    if (
-        not stat.S_ISDIR(st.st_mode)
-        or (hasattr(os, "getuid") and st.st_uid != os.getuid())
-        or st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
-    ):
-        return None
-    return path
+    return path if _is_private(path, stat.S_ISDIR) else None
+
+
+def _is_private(path: Path, kind: Callable[[int], bool]) -> bool:
+    """``path`` is of ``kind`` (not a link), owned by this user, not writable by others.
+
+    A directory must also be writable by this process (a read-only cache is not used)."""
+    try:
+        st = path.lstat()
+    except OSError:
+        return False
+    return (
+        kind(st.st_mode)
+        and (not hasattr(os, "getuid") or st.st_uid == os.getuid())
+        and not st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+        and (not stat.S_ISDIR(st.st_mode) or os.access(path, os.W_OK | os.X_OK))
+    )
 
 
 def _subdir(name: str) -> Path | None:
+    """The subfolder ``name`` of the cache, or None where it is not private to this user.
+
+    ``os.mkdir`` does not follow a link; an existing link, a folder of another
+    user or one that others can write (or its ``__pycache__``, where numba
+    keeps its own files) makes the disk cache unused."""
     root = cache_dir()
     if root is None:
         return None
     sub = root / name
     try:
-        sub.mkdir(mode=0o700, exist_ok=True)
+        os.mkdir(sub, 0o700)
+    except FileExistsError:
+        pass
     except OSError:
         return None
+    if not _is_private(sub, stat.S_ISDIR):
+        return None
+    pycache = sub / "__pycache__"
+    if os.path.lexists(pycache) and not _is_private(pycache, stat.S_ISDIR):
+        return None
     return sub
+
+
+#: hex digits of a file's SHA-256 in its name
+DIGEST_CHARS = 32
+
+
+def _digest(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()[:DIGEST_CHARS]
+
+
+def _read_private(path: Path) -> bytes | None:
+    """The bytes of the regular file ``path`` (not a link) if it is private to this user."""
+    try:
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+    except OSError:
+        return None
+    with os.fdopen(fd, "rb") as fh:
+        st = os.fstat(fh.fileno())
+        if (
+            not stat.S_ISREG(st.st_mode)
+            or (hasattr(os, "getuid") and st.st_uid != os.getuid())
+            or st.st_mode & (stat.S_IWGRP | stat.S_IWOTH)
+        ):
+            return None
+        return fh.read()
+
+
+def find_artifact(sub: Path, stem: str, suffix: str) -> tuple[Path, bytes] | None:
+    """The file ``{stem}-{digest}{suffix}`` of ``sub`` whose content has that digest, read.
+
+    A file whose content does not match the digest in its name, or that is
+    not a private regular file, is never loaded (a mismatch is removed)."""
+    try:
+        candidates = sorted(sub.glob(f"{stem}-*{suffix}"))
+    except OSError:
+        return None
+    for path in candidates:
+        data = _read_private(path)
+        if data is not None and path.name == f"{stem}-{_digest(data)}{suffix}":
+            return path, data
+        if data is not None:
+            path.unlink(missing_ok=True)
+    return None
+
+
+def _store(sub: Path, stem: str, suffix: str, data: bytes) -> Path | None:
+    """Write ``data`` as ``{stem}-{digest}{suffix}`` in ``sub``; None where it cannot be written."""
+    path = sub / f"{stem}-{_digest(data)}{suffix}"
+    try:
+        _write_atomic(path, data)
+    except OSError:
+        return None
+    _prune(sub, suffix)
+    return path
 
 
 #: at most this many generated modules (numba) or libraries (C) are kept on disk
@@ -180,7 +259,7 @@ def _namespace(plan: Plan) -> dict:
         "_errstate": np.errstate,
         "_prepare": prepare,
         "_SPECS": tuple(plan.specs),
-        "_OUTS": tuple(out.trailing for out in plan.outs),
+        "_OUTS": Trailings((out.trailing for out in plan.outs), plan.is_tuple),
         "_BLOCK": BLOCK,
     }
     exec(compile(PY_HELPERS, "<screwsym-codegen-helpers>", "exec"), ns)  # noqa: S102 - ours
@@ -200,31 +279,37 @@ def build_numpy(plan: Plan, use_cse: bool, doc: str) -> Callable:
     return _finish(fn, plan, doc)
 
 
-def _numba_module(plan: Plan, use_cse: bool):
-    """Import (writing it first if new) the module of ``plan`` from the disk cache."""
+def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
+    """Import (writing it first if new) the module of ``plan`` from the disk cache.
+
+    The module runs from the bytes read and checked against the digest in its
+    file name (no bytecode cache is read); without a usable cache folder it is
+    compiled in memory, without numba's disk cache.  A plan read from an index
+    (``from_index``) has no expressions to print: its module must be found."""
     modname = f"screwsym_generated_{plan.key}"
     if modname in sys.modules:
         return sys.modules[modname]
     sub = _subdir("numba")
-    if sub is None:
-        # no usable cache directory: compile in memory, without numba's disk cache
+    found = None if sub is None else find_artifact(sub, modname, ".py")
+    if found is None and sub is not None and not from_index:
+        full = with_cse(plan) if use_cse else plan
+        data = _emit.numba_source(full, PY_HELPERS).encode()
+        path = _store(sub, modname, ".py", data)
+        found = None if path is None else (path, data)
+    mod = type(sys)(modname)
+    if found is None:
+        if from_index:  # its module is gone, or not what its name says
+            raise OSError(f"no cached module for {modname}")
         full = with_cse(plan) if use_cse else plan
         source = _emit.numba_source(full, PY_HELPERS).replace("cache=True", "cache=False")
-        mod = type(sys)(modname)
         _exec(source, full, "numba", mod.__dict__)
         sys.modules[modname] = mod
         return mod
-    path = sub / f"{modname}.py"
-    if not path.exists():
-        full = with_cse(plan) if use_cse else plan
-        _write_atomic(path, _emit.numba_source(full, PY_HELPERS).encode())
-        _prune(sub, ".py")
-    spec = importlib.util.spec_from_file_location(modname, path)
-    assert spec is not None and spec.loader is not None, "a .py path always has a source loader"
-    mod = importlib.util.module_from_spec(spec)
+    path, data = found
+    mod.__file__ = str(path)
     sys.modules[modname] = mod
     try:
-        spec.loader.exec_module(mod)
+        exec(compile(data, str(path), "exec"), mod.__dict__)  # noqa: S102 - checked, ours
     except BaseException:
         del sys.modules[modname]
         raise
@@ -233,7 +318,7 @@ def _numba_module(plan: Plan, use_cse: bool):
 
 def _numba_function(mod, plan: Plan, doc: str) -> Callable:
     mod._SPECS = tuple(plan.specs)
-    mod._OUTS = tuple(out.trailing for out in plan.outs)
+    mod._OUTS = Trailings((out.trailing for out in plan.outs), plan.is_tuple)
     # a fresh function object per plan: the user's names are set on it, not on the module's
     base = mod._fn
     fn = type(base)(base.__code__, mod.__dict__, "_fn", None, base.__closure__)
@@ -271,10 +356,13 @@ def save_index(tag: str, fn: Callable) -> None:
 def load_index(tag: str, doc: str) -> Callable | None:
     """The numba function saved under ``tag``, or None (never saved, or unreadable)."""
     path = _index_path(tag)
-    if path is None or not path.exists() or importlib.util.find_spec("numba") is None:
+    if path is None or importlib.util.find_spec("numba") is None:
+        return None
+    text = _read_private(path)
+    if text is None:
         return None
     try:
-        meta = json.loads(path.read_text())
+        meta = json.loads(text)
         key = meta["key"]
         if not (isinstance(key, str) and key.isalnum() and key.isascii()):
             return None
@@ -283,9 +371,9 @@ def load_index(tag: str, doc: str) -> Callable | None:
             tuple(Out(tuple(int(d) for d in t)) for t in meta["outs"]),
             bool(meta["is_tuple"]), (), (), (), str(meta["name"]), key,
         )  # fmt: skip
-        if not (path.parent / f"screwsym_generated_{key}.py").exists():
+        if find_artifact(path.parent, f"screwsym_generated_{key}", ".py") is None:
             return None
-        return _numba_function(_numba_module(plan, False), plan, doc)
+        return _numba_function(_numba_module(plan, False, from_index=True), plan, doc)
     except (OSError, ValueError, KeyError, TypeError):
         return None
 
@@ -309,7 +397,8 @@ def compiler() -> str | None:
     return None
 
 
-def _compile_c(source: str, so_path: Path) -> None:
+def _compile_c(source: str) -> bytes:
+    """The shared library compiled from ``source``."""
     cc = compiler()
     if cc is None:
         raise RuntimeError("backend 'c' needs a C compiler: none of $CC, cc, gcc, clang found")
@@ -322,7 +411,7 @@ def _compile_c(source: str, so_path: Path) -> None:
         done = subprocess.run(cmd, capture_output=True, text=True)
         if done.returncode != 0:
             raise RuntimeError(f"backend 'c': {' '.join(cmd)} failed:\n{done.stderr}")
-        _write_atomic(so_path, Path(tmp_so).read_bytes())
+        return Path(tmp_so).read_bytes()
 
 
 def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
@@ -330,17 +419,19 @@ def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
     cname = f"screwsym_k{plan.key}"
     source = _emit.c_source(plan, cname)
     sub = _subdir("c")
-    if sub is not None:
-        so_path = sub / f"{cname}.so"
-        if not so_path.exists():
-            _compile_c(source, so_path)
-            _prune(sub, ".so")
-        lib = ctypes.CDLL(str(so_path))
+    found = None if sub is None else find_artifact(sub, cname, ".so")
+    if found is not None:
+        lib = ctypes.CDLL(str(found[0]))
     else:
-        with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
-            so_path = Path(tmp) / f"{cname}.so"
-            _compile_c(source, so_path)
-            lib = ctypes.CDLL(str(so_path))  # stays mapped after the file is removed
+        data = _compile_c(source)
+        so_path = None if sub is None else _store(sub, cname, ".so", data)
+        if so_path is not None:
+            lib = ctypes.CDLL(str(so_path))
+        else:
+            with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
+                tmp_path = Path(tmp) / f"{cname}.so"
+                tmp_path.write_bytes(data)
+                lib = ctypes.CDLL(str(tmp_path))  # stays mapped after the file is removed
     cfunc = getattr(lib, cname)
     ptr = ctypes.POINTER(ctypes.c_double)
     argtypes: list = [ctypes.c_size_t]

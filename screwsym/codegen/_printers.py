@@ -204,6 +204,10 @@ class BlockPrinter(_Common, NumPyPrinter):
     _inf = "_np.inf"
     _nan = "_np.nan"
 
+    # no math macros: M_PI_2, M_LN2, ... are POSIX, not C99 (-std=c99 lacks them); the
+    # constants print as their doubles, like pi and E
+    math_macros: dict = {}  # noqa: RUF012 - SymPy's class attribute, never mutated
+
     def __init__(self):
         super().__init__({"strict": True})
 
@@ -260,6 +264,10 @@ class CPrinter(_Common, C99CodePrinter):
 
     _inf = "INFINITY"
     _nan = "NAN"
+
+    # no math macros: M_PI_2, M_LN2, ... are POSIX, not C99 (-std=c99 lacks them); the
+    # constants print as their doubles, like pi and E
+    math_macros: dict = {}  # noqa: RUF012 - SymPy's class attribute, never mutated
 
     def __init__(self):
         super().__init__({"strict": True})

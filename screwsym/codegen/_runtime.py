@@ -59,6 +59,10 @@ def as_real_array(value: Any, name: str, trailing: tuple[int, ...], what: str) -
     Traceback (most recent call last):
     ...
     TypeError: h: expected real numbers, got None
+    >>> as_real_array([10**400, 1], "h", (), "a scalar")
+    Traceback (most recent call last):
+    ...
+    ValueError: h: expected real numbers within the range of doubles (|x| <= 1.8e308), got an integer of 401 digits
     """
     if value is None or isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{name}: expected real numbers, got {value!r}")
@@ -81,7 +85,10 @@ def as_real_array(value: Any, name: str, trailing: tuple[int, ...], what: str) -
                 f"{name}: expected an array of real numbers, got {type(value).__name__} "
                 f"holding objects that are not real numbers ({type(bad).__name__} {bad!r})"
             )
-        arr = arr.astype(np.float64)
+        try:
+            arr = arr.astype(np.float64)
+        except OverflowError:  # a Python int beyond the doubles
+            raise ValueError(_out_of_range(name, arr)) from None
     elif kind not in "fiu":
         raise TypeError(f"{name}: expected an array of real numbers, got dtype {arr.dtype}")
     nt = len(trailing)
@@ -94,6 +101,32 @@ def as_real_array(value: Any, name: str, trailing: tuple[int, ...], what: str) -
 
 
 _NONE = object()
+
+
+def _out_of_range(name: str, arr: np.ndarray) -> str:
+    big = next(v for v in arr.flat if isinstance(v, numbers.Integral) and abs(int(v)) > _MAX)
+    return (
+        f"{name}: expected real numbers within the range of doubles (|x| <= 1.8e308), got an "
+        f"integer of {len(str(abs(int(big))))} digits"
+    )
+
+
+#: the largest double, as an integer
+_MAX = int(np.finfo(np.float64).max)
+
+
+class Trailings(tuple):
+    """The trailing shapes of a generated function's results, and whether it returns a tuple.
+
+    ``out=`` of a function with one result (not a tuple) is one array, never a tuple.
+    """
+
+    is_tuple: bool
+
+    def __new__(cls, trailings: Any, is_tuple: bool) -> Trailings:
+        self = super().__new__(cls, trailings)
+        self.is_tuple = is_tuple
+        return self
 
 
 def prepare(
@@ -145,6 +178,11 @@ def outputs(
     """Fresh result arrays, or 2-D views of the caller's ``out`` arrays, checked."""
     if out is None:
         return [np.empty((n, math.prod(t))) if t else np.empty(n) for t in trailings]
+    if isinstance(out, tuple) and getattr(trailings, "is_tuple", True) is False:
+        raise ValueError(
+            f"out: expected one array (the function has one result, not a tuple), got a tuple "
+            f"of {len(out)}"
+        )
     outs = out if isinstance(out, tuple) else (out,)
     if len(outs) != len(trailings):
         raise ValueError(f"out: expected {len(trailings)} arrays, one per result, got {len(outs)}")

@@ -69,16 +69,37 @@ def check_no_strings(value: Any, name: str) -> None:
     ...
     TypeError: subs: strings are never evaluated, got str 'x'
     """
+    found = find_string(value)
+    if found is not None:
+        raise TypeError(f"{name}: strings are never evaluated, got {_describe(found)}")
+
+
+def find_string(value: Any) -> Any:
+    """The first string (or bytes) found anywhere in ``value``, or ``None``.
+
+    Walks tuples, lists, sets, dicts (keys and values) and NumPy arrays (a
+    string array, or the items of an object array): SymPy's ``sympify``, even
+    with ``strict=True``, parses the strings inside a tuple, dict or set.
+
+    >>> find_string([1, {2: ("x",)}])
+    'x'
+    >>> find_string([1, (2.0,)]) is None
+    True
+    """
     stack = [value]
     while stack:
         item = stack.pop()
-        if isinstance(item, (str, bytes)):
-            raise TypeError(f"{name}: strings are never evaluated, got {_describe(item)}")
+        if isinstance(item, (str, bytes, np.str_, np.bytes_)):
+            return item
         if isinstance(item, dict):
             stack.extend(item.keys())
             stack.extend(item.values())
         elif isinstance(item, (list, tuple, set, frozenset)):
             stack.extend(item)
+        elif isinstance(item, np.ndarray):
+            if item.dtype.kind in "USO":
+                stack.extend(item.ravel().tolist())
+    return None
 
 
 def refusing_strings(f: Callable[[Any], Any], name: str) -> Callable[[Any], Any]:
@@ -102,7 +123,7 @@ def refusing_strings(f: Callable[[Any], Any], name: str) -> Callable[[Any], Any]
 
 
 def _refuse_non_number(value: Any, name: str) -> None:
-    if isinstance(value, str):
+    if find_string(value) is not None:
         raise TypeError(
             f"{name}: expected a real number or SymPy expression, got {_describe(value)} "
             "(strings are never evaluated)"
@@ -110,7 +131,7 @@ def _refuse_non_number(value: Any, name: str) -> None:
     if (
         isinstance(value, (bool, np.bool_))
         or value is None
-        or isinstance(value, (MatrixBase, list, tuple, np.ma.MaskedArray))
+        or isinstance(value, (MatrixBase, list, tuple, dict, set, frozenset, np.ma.MaskedArray))
         or (_shape_of(value) not in (None, ()))
     ):
         raise TypeError(

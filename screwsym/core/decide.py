@@ -192,6 +192,8 @@ def is_real_where_defined(expr: Expr) -> bool | None:
     (True, None, None)
     >>> is_real_where_defined(sqrt(x**2 + y**2)), is_real_where_defined(1 + 2*I)
     (True, False)
+    >>> is_real_where_defined(1 / (y * sqrt(1 + y**-2)))    # [1/y, 1, 0] normalised
+    True
     """
     known = expr.is_extended_real
     if known is not None:
@@ -199,7 +201,7 @@ def is_real_where_defined(expr: Expr) -> bool | None:
     if isinstance(expr, (Add, Mul)) or isinstance(expr, _REAL_FUNCTIONS):
         parts = expr.args
     elif isinstance(expr, Pow):
-        if not (expr.exp.is_integer or expr.base.is_extended_nonnegative):
+        if not (expr.exp.is_integer or _nonnegative_where_defined(expr.base)):
             return None
         parts = expr.args
     elif isinstance(expr, Piecewise):
@@ -210,3 +212,21 @@ def is_real_where_defined(expr: Expr) -> bool | None:
     if all(d is True for d in decisions):
         return True
     return None
+
+
+def _nonnegative_where_defined(expr: Expr) -> bool:
+    """Whether ``expr`` is provably ``>= 0`` wherever it is defined (False: not proved).
+
+    Sums and products of such terms, even integer powers of what is real where
+    defined (``y**-2`` for a real ``y``: ``1 + y**-2`` under a root, from
+    normalising ``[1/y, ...]``), and non-negative bases to real powers.
+    """
+    if expr.is_extended_nonnegative:
+        return True
+    if isinstance(expr, (Add, Mul)):
+        return all(_nonnegative_where_defined(a) for a in expr.args)
+    if isinstance(expr, Pow):
+        if expr.exp.is_integer and expr.exp.is_even:
+            return is_real_where_defined(expr.base) is True
+        return _nonnegative_where_defined(expr.base) and is_real_where_defined(expr.exp) is True
+    return False

@@ -41,7 +41,7 @@ from ..core.formulas import dual_part, foot_point, pitch_ratio
 from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
-from .transform import Transform, rodrigues, skew
+from .transform import Transform, rotation_minus_identity, skew
 
 __all__ = ["exp6", "log6", "se3_matrix"]
 
@@ -117,17 +117,18 @@ def exp6(twist: ScrewLike, theta: ScalarLike) -> Transform:
     if is_zero_vector(omega) is True:
         return Transform._new(ImmutableMatrix.eye(3), theta * v)
     ww = omega.dot(omega)
-    R = rodrigues(omega, theta, sqrt(ww))
+    turn = rotation_minus_identity(omega, theta, sqrt(ww))  # R - I, digits kept for floats
+    R = ImmutableMatrix.eye(3) + turn
     r = foot_point(omega, v)
     h = pitch_ratio(omega, v)
-    p = (ImmutableMatrix.eye(3) - R) * r + (h * theta) * omega
+    p = -turn * r + (h * theta) * omega
     if all(e.is_number for e in p) or is_zero(ww - 1) is True:
         p = p.applyfunc(lambda e: e.expand())
     return tidy(Transform._new(R, p))
 
 
 def _half_turn(c: Expr) -> bool:
-    """Whether ``cos theta = c`` is -1: exactly, or for floats by the float policy."""
+    """Whether ``cos theta = c`` is exactly -1 (float rotations: :func:`_float_rotation_axis`)."""
     return is_zero_scaled(c + 1, S.One) is True
 
 
@@ -148,11 +149,39 @@ def _rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr]:
             return P[:, i] / sqrt(P[i, i]), S.Zero  # sin(pi), not the root of a rounding residue
         raise ValueError(f"T: cannot decide the axis of this half-turn, R = {R.tolist()}")
     vee = ImmutableMatrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
-    if float_tau(*R) is not None:
-        # floats: sin(theta) from |vee| = 2 sin(theta), not from cos(theta), which near 1 has
-        # lost half its digits (a turn by 1e-5 gave |omega| = 1 - 4e-8, one by 1e-8 a NaN)
-        s = norm(vee) / 2
     return (vee / (2 * s)).applyfunc(lambda e: e.expand() if e.is_number else e), s
+
+
+def _float_rotation_axis(R: ImmutableMatrix, c: Expr) -> tuple[ImmutableMatrix, Expr, Expr]:
+    """The unit axis, ``sin theta`` and ``theta`` of a float rotation, taken from ``R`` itself.
+
+    ``sin theta = |vee(R)|/2`` from the skew part and ``theta = atan2(sin, cos)``
+    keep every digit near 0 and pi.  For ``cos theta >= 0`` the axis is
+    ``vee/(2 sin theta)``; otherwise it comes from the symmetric part,
+    ``(R + R^T)/2 - cos(theta) I = (1 - cos theta) omega omega^T`` (its largest
+    diagonal's column), with the sign of ``vee``: near a half-turn ``vee`` is
+    tiny and dividing by it would lose the digits, but its sign is still right.
+    No tolerance decides the half-turn: ``theta`` is whatever the matrix says,
+    ``pi`` to the last digit when ``vee`` is zero.
+    """
+    prec = min(f._prec for f in R.atoms(Float))
+    dps = max(15, prec_to_dps(prec) + 1)  # the floats' digits and one guard digit
+    vee = ImmutableMatrix([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    s = (norm(vee) / 2).evalf(dps)
+    theta = atan2(s, c).evalf(dps)
+    if c >= 0:
+        return (vee / (2 * s)).applyfunc(_expand_number), s, theta
+    B = (R + R.T) / 2 - c * ImmutableMatrix.eye(3)
+    i = max(range(3), key=lambda k: B[k, k])
+    col = B[:, i]
+    omega = (col / norm(col)).applyfunc(lambda e: e.evalf(prec_to_dps(prec)))
+    along = omega.dot(vee)
+    if along == 0:  # a half-turn to the last digit: either sign; the first component that is
+        # not a rounding residue (float policy) positive, as for exact half-turns
+        along = next((e for e in omega if is_zero_scaled(e, S.One) is False), S.One)
+    if along < 0:
+        omega = -omega
+    return omega, s, theta
 
 
 def log6(T: Transform) -> tuple[Twist, Expr]:
@@ -176,8 +205,10 @@ def log6(T: Transform) -> tuple[Twist, Expr]:
 
     Exact: the angle is ``acos((tr R - 1)/2)`` (a number such as ``pi/3`` when
     SymPy knows it), the axis and the moment are exact algebraic numbers.
-    A float rotation takes ``sin theta`` from the skew part of ``R`` and the
-    angle from ``atan2``, which keeps every digit of small angles.
+    A float rotation takes ``sin theta`` from the skew part of ``R``, the
+    angle from ``atan2`` and, past a quarter-turn, the axis from the symmetric
+    part of ``R``: every digit is kept near 0 and near pi, and no tolerance on
+    ``cos theta`` decides a half-turn (a turn by ``pi - 1e-7`` is not ``pi``).
     The translation ``p`` may be symbolic; a rotation whose angle is symbolic
     (``tr R`` not a number) is refused: ``acos`` of a symbolic cosine is not
     known to be real, and which case applies is not decided.
@@ -217,17 +248,13 @@ def log6(T: Transform) -> tuple[Twist, Expr]:
             return Twist(zeros(3, 1), zeros(3, 1)), S.Zero
         d = sqrt(p.dot(p))
         return Twist(zeros(3, 1), (p / d).applyfunc(_expand_number)), d
-    half_turn = _half_turn(c)
-    omega, s = _rotation_axis(R, c)
     floats = float_tau(*R) is not None
-    if half_turn:
-        theta = pi
-    elif floats:  # atan2 keeps every digit near 0 and pi; a float, as acos(c) gave
-        prec = min(f._prec for f in R.atoms(Float))
-        # the floats' digits and one guard digit (16 for double precision, as before)
-        theta = atan2(s, c).evalf(max(15, prec_to_dps(prec) + 1))
+    half_turn = not floats and _half_turn(c)
+    if floats:
+        omega, s, theta = _float_rotation_axis(R, c)
     else:
-        theta = acos(c)
+        omega, s = _rotation_axis(R, c)
+        theta = pi if half_turn else acos(c)
     if half_turn:
         # fix the sign: the first non-zero component positive
         for e in omega:

@@ -35,10 +35,11 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, NoReturn, TypeVar, overload
 
-from sympy import Expr, ImmutableMatrix, S, cos, sin, sqrt, trigsimp, zeros
+from sympy import Expr, ImmutableMatrix, S, cancel, cos, sin, sqrt, trigsimp, zeros
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
+    check_flag,
     check_instance,
     check_matrix,
     check_point_or_direction,
@@ -46,7 +47,14 @@ from ..core.checks import (
     check_vector,
     refusing_strings,
 )
-from ..core.decide import is_zero, is_zero_scaled, is_zero_vector
+from ..core.decide import (
+    float_tau,
+    is_zero,
+    is_zero_scaled,
+    is_zero_vector,
+    is_zero_vector_scaled,
+    norm,
+)
 from ..core.formulas import moved
 from ..core.screw import MatrixLike, ScalarLike, Screw, VectorLike
 from ..core.tidy import tidy
@@ -102,6 +110,8 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
     entries with the exact decision of
     :func:`screwsym.core.decide.is_zero` when they are no larger than
     ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
+    A matrix rational in its symbols whose determinant cancels to -1 is a
+    reflection for every value of them, and is refused.
 
     >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
     (3, 3)
@@ -121,10 +131,21 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
             f"{name}: expected an orthonormal matrix (R^T R = I), got R^T R - I = "
             f"Matrix({gram.tolist()})"
         )
-    # R^T R = I leaves det R = +-1; the sign is decided for numeric entries only
-    det = R.det(method="berkowitz") if all(e.is_number for e in R) else None
-    if det is not None and _decide_small(det - 1) is False:
-        raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
+    # R^T R = I leaves det R = +-1: numbers are decided; entries rational in the symbols are
+    # refused where the determinant cancels to -1 (a reflection for every value of them)
+    if all(e.is_number for e in R):
+        det = R.det(method="berkowitz")
+        if _decide_small(det - 1) is False:
+            raise ValueError(f"{name}: expected a rotation (det R = 1), got det R = {det}")
+    elif (
+        all(e.is_rational_function() for e in R)
+        and sum(e.count_ops() for e in R) <= ROTATION_CHECK_OPS
+    ):
+        if is_zero(cancel(R.det(method="berkowitz") + 1)) is True:
+            raise ValueError(
+                f"{name}: expected a rotation (det R = 1), got det R = -1 (a reflection for "
+                "every value of its symbols)"
+            )
     return R
 
 
@@ -142,9 +163,35 @@ def rodrigues(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One) -> Immutable
     [0, -1, 0],
     [1,  0, 0],
     [0,  0, 1]])
+
+    For floats ``1 - cos(w theta)`` is computed as ``2 sin^2(w theta / 2)``:
+    at a small angle the difference loses its digits (a relative error of
+    9e-5 at 1e-6 rad, the whole term at 1e-9), the product keeps them.
+
+    >>> rotation_minus_identity(ImmutableMatrix([0, 0, 1]), 1e-9)[0, 0]
+    -5.00000000000000e-19
+    """
+    return ImmutableMatrix.eye(3) + rotation_minus_identity(omega, theta, w)
+
+
+def rotation_minus_identity(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One) -> ImmutableMatrix:
+    r"""``R - I = sin(w theta)/w K + (1 - cos(w theta))/w^2 K^2`` of :func:`rodrigues`, formed directly.
+
+    What ``(I - R) r`` of a screw displacement needs: at a small float angle
+    ``R`` itself rounds its diagonal to 1, and ``I - R`` would lose the digits.
     """
     K = skew(omega)
-    return ImmutableMatrix.eye(3) + (sin(w * theta) / w) * K + ((1 - cos(w * theta)) / w**2) * (K * K)
+    angle = w * theta
+    if float_tau(angle, *omega) is not None:
+        versine = 2 * sin(angle / 2) ** 2
+    else:
+        versine = 1 - cos(angle)
+    return ImmutableMatrix((sin(angle) / w) * K + (versine / w**2) * (K * K))
+
+
+def _both(a: bool | None, b: bool | None) -> bool | None:
+    """Three-valued ``and``: False if either is False, True if both are True, else None."""
+    return False if False in (a, b) else True if a is True and b is True else None
 
 
 def _tidy(e: Expr) -> Expr:
@@ -412,6 +459,7 @@ class Transform(ScrewsymBasic):
         ...
         TypeError: obj: expected a point or direction (3-vector), a screw or a Transform, got list [1, 0, 0, 0, 0, 0]; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix or Wrench.from_matrix
         """
+        check_flag(direction, "direction")
         if isinstance(obj, Transform):
             return self @ obj
         if isinstance(obj, Screw):
@@ -422,15 +470,26 @@ class Transform(ScrewsymBasic):
     def equals(self, other: Transform) -> bool | None:
         """Whether the two motions are equal mathematically: True, False or None.
 
-        ``==`` compares structure, as everywhere in SymPy.
+        ``==`` compares structure, as everywhere in SymPy.  Floats follow the
+        float policy (:func:`screwsym.core.decide.is_zero_scaled`): ``R``
+        against 1, ``p`` against ``1 + |p1| + |p2|``.
 
         >>> from sympy import pi
         >>> Transform.rotation([0, 0, 1], 2*pi).equals(Transform.identity())
         True
+        >>> T = Transform.rotation([1, 2, 2], 0.7, point=[1.0, -2.0, 3.0])
+        >>> T.inverse().inverse().equals(T)
+        True
         """
         check_instance(other, "other", Transform)
         diff = (self.matrix - other.matrix).applyfunc(_tidy)
-        return is_zero_vector(diff)
+        if float_tau(*diff) is None:
+            return is_zero_vector(diff)
+        # floats: the float policy (screwsym.core.decide), R against 1, p against its size
+        dR = (self.R - other.R).applyfunc(_tidy).reshape(9, 1)
+        dp = (self.p - other.p).applyfunc(_tidy)
+        size = S.One + norm(self.p) + norm(other.p)
+        return _both(is_zero_vector_scaled(dR, S.One), is_zero_vector_scaled(dp, size))
 
     # ------------------------------------------------------- SymPy integration
     def applyfunc(self, f: Callable[[Expr], Any]) -> Transform:

@@ -50,13 +50,20 @@ from ..core.checks import check_positive_float
 from ..core.formulas import SWAP
 from ..systems.mechanism import ParallelMechanism
 
+# UNDEFINED (below) is public too, documented in mobility_map; not in __all__ yet, as the
+# README's module table lists __all__
 __all__ = ["MobilityMap", "mobility_map"]
+
+#: the mark of a configuration where the mechanism is undefined (a twist not finite:
+#: a NaN or infinite value given, or a formula dividing by zero there): its mobility,
+#: constraint rank and limb constraints are ``-1`` and its ``sigma`` NaN, on every back end
+UNDEFINED: int = -1
 
 
 class MobilityMap(NamedTuple):
     """Arrays over the configurations (batch shape ``...``) from :func:`mobility_map`."""
 
-    mobility: np.ndarray  #: ``(...)`` int: 6 - rank of the union of the limbs' constraints
+    mobility: np.ndarray  #: ``(...)`` int: 6 - rank of the union; UNDEFINED (-1) where undefined
     constraint_rank: np.ndarray  #: ``(...)`` int: rank of that union
     limb_constraints: np.ndarray  #: ``(..., k)`` int: 6 - rank of each limb's twists
     sigma: np.ndarray  #: ``(..., 6)``: ``|R_jj|`` of the union's pivoted QR, largest first
@@ -74,7 +81,10 @@ def mobility_map(
     such as ``vector('p')``, as for :func:`screwsym.lambdify`).  The function
     returned takes one array per argument (scalars ``(...)``, vectors
     ``(..., 3)``, batch shapes broadcasting) and returns a
-    :class:`MobilityMap`.  See the module docstring for the tolerance.
+    :class:`MobilityMap`.  See the module docstring for the tolerance.  A
+    configuration whose twists are not all finite (a NaN or infinite value)
+    is marked :data:`UNDEFINED`: ``-1`` in the integer fields, NaN in
+    ``sigma``, the same on every back end.
 
     Examples
     ========
@@ -94,6 +104,8 @@ def mobility_map(
     >>> f = mobility_map(fourbar, [bx, by])
     >>> f(np.array([1.0, 1.0, 2.0]), np.array([1.0, 0.0, 0.5])).mobility
     array([1, 2, 1])
+    >>> f(np.array([1.0, np.nan]), np.array([np.inf, 0.5])).mobility
+    array([-1, -1])
 
     Parameters
     ==========
@@ -136,11 +148,21 @@ def mobility_map(
         T = np.concatenate(
             [np.broadcast_to(T, batch + (6, n)).reshape(-1, 6, n)
              for T, n in zip(Ts, sizes, strict=True)], axis=-1)
+        # a configuration whose twists are not all finite (a NaN or inf value, a formula
+        # dividing by zero there) is undefined: analysed as zeros, then marked (UNDEFINED)
+        undefined = ~np.isfinite(T).all(axis=(1, 2))
+        if undefined.any():
+            T = np.where(undefined[:, None, None], 0.0, T)
         ranks, counts, sigma = analyse(T, offsets, rtol)
+        if undefined.any():
+            ranks, counts, sigma = ranks.copy(), counts.copy(), sigma.copy()
+            ranks[undefined] = 6 - UNDEFINED  # so that mobility = 6 - rank is UNDEFINED
+            counts[undefined] = UNDEFINED
+            sigma[undefined] = np.nan
         k = len(sizes)
         return MobilityMap(
             mobility=(6 - ranks).reshape(batch),
-            constraint_rank=ranks.reshape(batch),
+            constraint_rank=np.where(undefined, UNDEFINED, ranks).reshape(batch),
             limb_constraints=counts.reshape(batch + (k,)),
             sigma=sigma.reshape(batch + (6,)),
         )

@@ -56,7 +56,9 @@ import threading
 import types
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
+import numpy as np
 import sympy
 from sympy import Eq, Ne, Piecewise, nan
 
@@ -243,6 +245,49 @@ def _source_digest() -> str:
     return _DIGEST[0]
 
 
+#: the functions of degree 0 in each part of the screw: ``f(a S; b S0) = (b/a) f(S; S0)``
+#: for a pitch (1.34) and a foot point (1.16); evaluated on the parts scaled to size 1
+#: they neither underflow nor overflow where the result itself does not (issue 20)
+SCALE_FREE: tuple[str, ...] = ("pitch", "foot")
+
+
+def _scale_free(fn: Callable, name: str) -> Callable:
+    """``fn`` evaluated on ``(S/2^e; S0/2^e0)``, its result scaled back by ``2^(e0 - e)``.
+
+    ``2^e`` is the power of two at or above the largest ``|S_i|`` (likewise
+    ``2^e0`` for ``S0``): dividing by it is exact, and the scaled parts have
+    size 1, so that ``S . S`` cannot underflow (``nan`` for a screw scaled by
+    ``1e-200``) nor overflow (``nan`` at ``1e200``).  A part that is zero or
+    not finite is left as it is.  Input that is not a float or integer array
+    ending in 6 goes to ``fn`` unchanged (its own checks answer it).
+    """
+
+    def scaled(s: Any, *, out: Any = None) -> Any:
+        a = s if isinstance(s, np.ndarray) else np.asarray(s) if isinstance(s, (list, tuple)) else None
+        if a is None or a.dtype.kind not in "fiu" or a.ndim == 0 or a.shape[-1] != 6:
+            return fn(s, out=out)
+        a = a.astype(np.float64, copy=False)
+        with np.errstate(all="ignore"):
+            m, m0 = np.abs(a[..., :3]).max(axis=-1), np.abs(a[..., 3:]).max(axis=-1)
+            e = np.where((m > 0) & np.isfinite(m), np.frexp(m)[1], 0)
+            e0 = np.where((m0 > 0) & np.isfinite(m0), np.frexp(m0)[1], 0)
+            x = np.concatenate([np.ldexp(a[..., :3], -e[..., None]),
+                                np.ldexp(a[..., 3:], -e0[..., None])], axis=-1)
+        shift = e0 - e if name == "pitch" else (e0 - e)[..., None]
+        result = fn(x, out=out)
+        with np.errstate(over="ignore"):  # a result beyond the floats is inf, as unscaled
+            if out is not None:
+                np.ldexp(out, np.broadcast_to(shift, np.shape(out)), out=out)
+                return result
+            return np.ldexp(result, shift)
+
+    scaled.__name__ = scaled.__qualname__ = fn.__name__
+    scaled.__doc__ = fn.__doc__
+    scaled.__wrapped__ = fn  # type: ignore[attr-defined]
+    scaled.__dict__.update({k: v for k, v in vars(fn).items() if k != "__wrapped__"})
+    return scaled
+
+
 def _function(name: str, backend: str | None = None) -> Callable:
     backend = resolve_backend(backend)
     key = (name, backend)
@@ -258,6 +303,8 @@ def _function(name: str, backend: str | None = None) -> Callable:
                 fn = lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
                 if backend == "numba":
                     save_index(tag, fn)
+            if name in SCALE_FREE:
+                fn = _scale_free(fn, name)
             _BUILT[key] = fn
     return fn
 

@@ -52,7 +52,7 @@ import numpy as np
 from sympy import Abs, Basic, ImmutableMatrix
 from sympy.matrices import MatrixBase
 
-from ..core.checks import check_no_strings, check_vector
+from ..core.checks import check_flag, check_no_strings, check_vector
 from ..core.decide import is_zero_scaled
 from ..core.formulas import foot_point, pitch_ratio
 from ..core.line import LineLike, LineVector, common_normal, contains
@@ -412,6 +412,7 @@ def plot_line(line: LineLike, ax: Axes3D | None = None, *, subs: Subs = None,
     plot_screw, plot_common_normal
     """
     subs = _check_subs(subs)
+    check_flag(show_foot, "show_foot")
     ax = _axes(ax)
     s, S, S0 = _screw_floats(line, subs, "line", LineVector)
     P = foot_point(S, S0)

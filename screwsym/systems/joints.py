@@ -169,18 +169,25 @@ class Universal(Joint):
     >>> from screwsym.systems.joints import Universal
     >>> Universal([0, 0, 1], [1, 0, 0], [0, 1, 0]).twists
     ScrewSystem(Twist([1, 0, 0], [0, 1, 0]), Twist([0, 1, 0], [-1, 0, 0]))
+    >>> Universal([0, 0, 1], [1, 0, 0], [2, 0, 0])
+    Traceback (most recent call last):
+    ...
+    ValueError: dir2: a universal joint needs two non-parallel axes, got dir1 = [1, 0, 0] and dir2 = [2, 0, 0] (parallel: that is one revolute joint)
     """
 
     __slots__ = ()
     freedom = 2
 
     def __new__(cls, point: VectorLike, dir1: VectorLike, dir2: VectorLike) -> Self:
-        return ScrewsymBasic.__new__(
-            cls,
-            _point(point, "point"),
-            _axis(dir1, "dir1"),
-            _axis(dir2, "dir2"),
-        )
+        u1, u2 = _axis(dir1, "dir1"), _axis(dir2, "dir2")
+        if is_zero_vector(u1.cross(u2)) is True:
+            # parallel axes through one point are one revolute joint: every mobility built
+            # on it would count a freedom too many
+            raise ValueError(
+                f"dir2: a universal joint needs two non-parallel axes, got dir1 = {list(u1)} "
+                f"and dir2 = {list(u2)} (parallel: that is one revolute joint)"
+            )
+        return ScrewsymBasic.__new__(cls, _point(point, "point"), u1, u2)
 
     def _twists(self) -> list[Twist]:
         r, u1, u2 = self.args

@@ -41,17 +41,19 @@ planar 3-RRR platform need the actuated joints and are not in its scope.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, NamedTuple
+import operator
+import sys
+from typing import TYPE_CHECKING, Any, NamedTuple, SupportsIndex
 
-from sympy import And, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
+from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
 from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
-from ..core.checks import check_count, check_flag
+from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .joints import _E, Joint, check_joints
-from .screw_system import MAX_CASES, ScrewSystem, _analysis
+from .screw_system import BUDGET, MAX_CASES, ScrewSystem, _analysis, case_budget
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -139,6 +141,42 @@ class Mobility(NamedTuple):
         return (self.mobility, self.order, self.common, self.redundant, self.passive,
                 self.classical, self.motion)
 
+    # a tuple compares its items with ==, and a SymPy matrix's == parses the strings inside
+    # a tuple or dict: these compare without handing a string to SymPy (screwsym.core.basic)
+    def __eq__(self, other: object) -> bool:
+        return (
+            isinstance(other, tuple)
+            and len(other) == len(self)
+            and all(_same(a, b) for a, b in zip(self, other, strict=True))
+        )
+
+    def __ne__(self, other: object) -> bool:
+        return not self == other
+
+    def __hash__(self) -> int:
+        return tuple.__hash__(self)
+
+    def __contains__(self, value: object) -> bool:
+        return any(_same(a, value) for a in self)
+
+    def count(self, value: Any) -> int:
+        """How many fields equal ``value`` (strings in ``value`` never reach SymPy)."""
+        return sum(_same(a, value) for a in self)
+
+    def index(self, value: Any, start: SupportsIndex = 0, stop: SupportsIndex = sys.maxsize) -> int:
+        """The first field equal to ``value`` (strings in ``value`` never reach SymPy)."""
+        for i in range(*slice(operator.index(start), operator.index(stop)).indices(len(self))):
+            if _same(self[i], value):
+                return i
+        raise ValueError("Mobility.index(value): value not found")
+
+
+def _same(field: Any, value: Any) -> bool:
+    """``field == value``, ``False`` where a SymPy ``field`` would meet a string in ``value``."""
+    if isinstance(field, Basic) and not isinstance(value, Basic) and find_string(value) is not None:
+        return False
+    return bool(field == value)
+
 
 def motion_type(rotations: int, translations: int) -> str:
     """``"2R1T"``, ``"3T"``, ``"1R"``; ``"0"`` for a structure.
@@ -222,7 +260,7 @@ class ParallelMechanism(ScrewsymBasic):
         return _mobility(self)
 
     def mobility_cases(
-        self, *, max_cases: int = MAX_CASES, merge: bool = True
+        self, *, max_cases: int = MAX_CASES, budget: int = BUDGET, merge: bool = True
     ) -> list[tuple[Any, Mobility | None]]:
         """The mobility in each case where the symbols change a rank: an exhaustive split.
 
@@ -239,7 +277,9 @@ class ParallelMechanism(ScrewsymBasic):
         ``mobility``, ``passive`` and the platform's twists are exact on the whole
         case, ``common`` and ``redundant`` generic within it.  A case whose
         rank could not be decided (a condition linear in no symbol) comes with
-        ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond).
+        ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond), and
+        at most ``budget`` units of polynomial arithmetic for the whole split
+        (:meth:`ScrewSystem.rank_conditions`; a ``ValueError`` naming it beyond).
 
         With ``merge=True`` (the default) cases with the same answer (the same
         mobility, order, common and redundant constraints, passive freedoms,
@@ -263,6 +303,12 @@ class ParallelMechanism(ScrewsymBasic):
         [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1R1T')]
         """
         max_cases = check_count(max_cases, "max_cases")
+        merge = check_flag(merge, "merge")
+        with case_budget(budget, "mobility_cases"):
+            cases = self._mobility_cases(max_cases)
+        return _merge_cases(cases) if merge else cases
+
+    def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | None]]:
         leaves: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = [((), {})]
         for i in range(len(self.args)):
             grown = []
@@ -283,7 +329,7 @@ class ParallelMechanism(ScrewsymBasic):
                     continue
                 out.append((condition, _mobility(self.xreplace(subs2) if subs2 else self)))
                 _check_cases(len(out), max_cases)
-        return _merge_cases(out) if check_flag(merge, "merge") else out
+        return out
 
 
 def _union(a: Any, b: Any) -> Any:

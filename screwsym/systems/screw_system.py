@@ -29,8 +29,11 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Sections 1.5
 
 from __future__ import annotations
 
+import math
 import random
 from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass
 from functools import lru_cache
 from itertools import combinations
@@ -128,6 +131,11 @@ def check_screw_system_members(values: Any, name: str, kinds: dict) -> tuple:
 _MINOR_BUDGET = 64
 #: the default limit on the number of cases of ``rank_conditions``
 MAX_CASES = 200
+#: the default work budget of one case split (``rank_conditions``, ``reciprocal_cases``,
+#: ``substitutions``, ``ParallelMechanism.mobility_cases``): units of polynomial arithmetic,
+#: ``k! t_1 ... t_k`` for a k x k determinant whose rows have at most ``t_i`` terms, ``t**2``
+#: to factor a polynomial of ``t`` terms (about a microsecond each, measured; see ``_charge``)
+BUDGET = 20_000_000
 
 
 class ScrewSystem(ScrewsymBasic):
@@ -375,7 +383,9 @@ class ScrewSystem(ScrewsymBasic):
         node = _top(self.matrix)
         return _basis_system(node, _DUAL_KIND[self.kind])
 
-    def rank_conditions(self, *, max_cases: int = MAX_CASES) -> list[tuple[Boolean, int | None]]:
+    def rank_conditions(
+        self, *, max_cases: int = MAX_CASES, budget: int = BUDGET
+    ) -> list[tuple[Boolean, int | None]]:
         r"""Where the rank is what: an exhaustive list of ``(condition, rank)`` pairs.
 
         Explanation
@@ -392,7 +402,12 @@ class ScrewSystem(ScrewsymBasic):
         non-zero are dropped.  Where a factor is linear in no symbol, the
         case is listed with rank ``None`` (at most the rank of the case above
         it; not analysed further).  A system with many free symbols can have
-        very many cases: past ``max_cases`` a ``ValueError`` says so.
+        very many cases: past ``max_cases`` a ``ValueError`` says so.  The
+        work is bounded too: ``budget`` units of polynomial arithmetic
+        (:data:`BUDGET`; a ``k x k`` determinant whose rows have at most
+        ``t_1, ..., t_k`` terms costs ``k! t_1 ... t_k``, factoring a
+        polynomial of ``t`` terms ``t**2``, about a microsecond each), past
+        which a ``ValueError`` names it instead of running for minutes.
 
         >>> from sympy import symbols
         >>> from screwsym import ScrewSystem, Wrench
@@ -402,16 +417,17 @@ class ScrewSystem(ScrewsymBasic):
         >>> forces.rank_conditions()
         [(True, 2)]
         """
-        cases = _cases(self.matrix, check_count(max_cases, "max_cases"))
+        cases = _budgeted_cases(self.matrix, max_cases, budget, "rank_conditions")
         return [(n.condition, n.rank) for n in cases]
 
     def reciprocal_cases(
-        self, *, max_cases: int = MAX_CASES
+        self, *, max_cases: int = MAX_CASES, budget: int = BUDGET
     ) -> list[tuple[Boolean, ScrewSystem | None]]:
         """For each case of :meth:`rank_conditions`, its own basis of the reciprocal system.
 
         The basis of a case is valid wherever its condition holds; ``None``
-        where the rank of the case is ``None``.
+        where the rank of the case is ``None``.  ``max_cases`` and ``budget``
+        bound the case split as for :meth:`rank_conditions`.
 
         >>> from sympy import symbols
         >>> from screwsym import ScrewSystem, Twist
@@ -424,10 +440,12 @@ class ScrewSystem(ScrewsymBasic):
         kind = _DUAL_KIND[self.kind]
         return [
             (n.condition, None if n.rank is None else _basis_system(n, kind))
-            for n in _cases(self.matrix, check_count(max_cases, "max_cases"))
+            for n in _budgeted_cases(self.matrix, max_cases, budget, "reciprocal_cases")
         ]
 
-    def substitutions(self, *, max_cases: int = MAX_CASES) -> list[tuple[Boolean, dict[Any, Any]]]:
+    def substitutions(
+        self, *, max_cases: int = MAX_CASES, budget: int = BUDGET
+    ) -> list[tuple[Boolean, dict[Any, Any]]]:
         """For each case of :meth:`rank_conditions`, the substitution of symbols that it makes.
 
         Applying the substitution (``system.xreplace(subs)``) gives a system
@@ -441,7 +459,7 @@ class ScrewSystem(ScrewsymBasic):
         >>> RR.substitutions()
         [(Ne(a, 0), {}), (Eq(a, 0), {a: 0})]
         """
-        cases = _cases(self.matrix, check_count(max_cases, "max_cases"))
+        cases = _budgeted_cases(self.matrix, max_cases, budget, "substitutions")
         return [(n.condition, dict(n.subs)) for n in cases]
 
 
@@ -563,6 +581,8 @@ def _det(rows, R):
     n = len(rows)
     if n == 0:
         return R.one
+    _charge(math.factorial(n) * math.prod(max((len(e.terms()) for e in r), default=1) or 1
+                                          for r in rows))
     if n == 1:
         return rows[0][0]
     if n == 2:
@@ -707,6 +727,7 @@ def _factors(p, R) -> list:
     """
     if p.is_ground:
         return []
+    _charge(len(p.terms()) ** 2)
     _, fl = p.factor_list()
     out = []
     for f, _ in fl:
@@ -754,6 +775,51 @@ def _linear_in(f, R):
 
 class _TooManyCases(Exception):
     pass
+
+
+class _OverBudget(Exception):
+    pass
+
+
+#: the work left to the case split under way in this thread (a one-item list), or None
+_LEFT: ContextVar[list[int] | None] = ContextVar("screwsym_case_budget", default=None)
+
+
+def _charge(units: int) -> None:
+    """Spend ``units`` of the budget of the case split under way (none: nothing is counted)."""
+    left = _LEFT.get()
+    if left is not None:
+        left[0] -= units
+        if left[0] < 0:
+            raise _OverBudget
+
+
+@contextmanager
+def case_budget(budget: int, name: str) -> Iterator[None]:
+    """Bound the work of the case splits run inside (the outermost budget holds).
+
+    Past it, ``ValueError`` naming ``name`` and ``budget``.
+    """
+    budget = check_count(budget, "budget")
+    if _LEFT.get() is not None:  # an outer call's budget bounds this one too
+        yield
+        return
+    token = _LEFT.set([budget])
+    try:
+        yield
+    except _OverBudget:
+        raise ValueError(
+            f"{name}: the case split needs more work than budget={budget} units of "
+            "polynomial arithmetic; give some symbols values (xreplace) or pass a larger budget"
+        ) from None
+    finally:
+        _LEFT.reset(token)
+
+
+def _budgeted_cases(M: ImmutableMatrix, max_cases: int, budget: int, name: str) -> tuple:
+    limit = check_count(max_cases, "max_cases")
+    with case_budget(budget, name):
+        return _cases(M, limit)
 
 
 class _Cases(list):

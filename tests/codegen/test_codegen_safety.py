@@ -388,3 +388,22 @@ def test_disk_cache_is_bounded(tmp_path, monkeypatch):
     fns = [lambdify([x], x * 3 + k + 2000, "numba") for k in range(4)]  # written, not compiled
     assert len(list((tmp_path / "numba").glob("screwsym_generated_*.py"))) == 2
     assert [f(1.0) for f in fns] == [2003.0, 2004.0, 2005.0, 2006.0]  # loaded ones still run
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_array_entry_points_check_huge_integers_and_out(backend):
+    # issue 20: a Python int beyond the doubles raised a bare OverflowError; out= given a
+    # tuple was accepted by a function with one (non-tuple) result
+    f = lambdify([x, y], 3 * x - y + 0.125, backend)
+    for bad in (10**400, [1, -(10**400)], np.array([10**309], dtype=object)):
+        with pytest.raises(ValueError, match=r"x: expected real numbers within the range of "
+                                             r"doubles \(\|x\| <= 1.8e308\), got an integer of"):
+            f(bad, 1.0)
+    assert f(10**300, 0.0) == 3e300  # within range: fine
+    with pytest.raises(ValueError, match=r"out: expected one array \(the function has one "
+                                         r"result, not a tuple\), got a tuple of 1"):
+        f(np.ones(2), np.ones(2), out=(np.empty(2),))
+    g = lambdify([x, y], (3 * x - y + 0.125,), backend)  # a tuple of one: a tuple of one
+    out = (np.empty(2),)
+    g(np.ones(2), np.ones(2), out=out)
+    assert out[0].tolist() == [2.125] * 2

@@ -329,3 +329,18 @@ def test_tidy_on_a_screw_system_keeps_its_class():
     assert type(tidied) is ScrewSystem
     assert tidied.args[0] == Screw([1, 0, 0], [0, x, 0])
     assert tidied.func(*tidied.args) == tidied
+
+
+def test_max_size_bounds_the_work_not_only_the_input():
+    # issue 20: tidy((a+b+c+d)**60 + 1) (a few nodes, 39,711 terms expanded) took a minute
+    # and max_size did not stop it; now it comes back unchanged at once
+    from sympy import symbols
+
+    a, b, c, d = symbols("a b c d", real=True)
+    big = (a + b + c + d) ** 60 + 1
+    assert tidy(big) == big
+    from screwsym.core.tidy import _expanded_terms, _size
+
+    assert _size(big, 3000) < 20 and _expanded_terms(big, 10**6) == 39711 + 1
+    e = ((a + b) ** 2 - b**2) / a  # 15 nodes, 3 + 1 terms expanded
+    assert tidy(e, max_size=14) == e and tidy(e, max_size=15) == a + 2 * b

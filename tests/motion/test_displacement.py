@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 from _motions import random_transform, random_twist, rational_vector
 from sympy import (
+    Float,
     ImmutableMatrix,
     Matrix,
     Rational,
@@ -143,7 +146,7 @@ def test_exp_of_a_six_vector_and_se3_matrix():
 def test_log_of_float_motions_follows_the_float_policy():
     half = Transform.rotation([0, 1, 1], pi, point=[1, 0, 0]).evalf()
     twist, theta = log6(half)
-    assert theta == pi
+    assert isinstance(theta, Float) and float(theta) == math.pi  # floats in, a float out
     np.testing.assert_allclose(
         np.array(exp6(twist, theta).matrix.evalf(), dtype=float),
         np.array(half.matrix, dtype=float),
@@ -160,7 +163,7 @@ def test_log_of_a_float_half_turn_with_rounding_on_a_zero_diagonal():
     R = [[-1 + 2.2e-16, 0, 0], [0, 0, 1.0], [0, 1.0, 0]]
     T = Transform(R, [0, 0, 0])
     twist, theta = log6(T)
-    assert theta == pi
+    assert isinstance(theta, Float) and float(theta) == math.pi  # floats in, a float out
     np.testing.assert_allclose(
         np.array(twist.omega, dtype=float).ravel(), [0, np.sqrt(0.5), np.sqrt(0.5)], atol=1e-12
     )
@@ -177,7 +180,7 @@ def test_log_of_a_float_half_turn_with_rounding_on_a_zero_diagonal():
     # moved the axis by 3.7e-9
     R = [[-1.0, 0, 0], [0, -1.0 + 2e-16, 0], [0, 0, 1.0]]
     twist, theta = log6(Transform(R, [1.0, 0, 0]))
-    assert theta == pi and twist.v_O[0] == 0 and twist.v_O[1] == -0.5
+    assert float(theta) == math.pi and twist.v_O[0] == 0 and twist.v_O[1] == -0.5
 
 
 @pytest.mark.parametrize("angle", [1e-8, 1e-5, 0.3, 2.0, 3.14159])
@@ -193,3 +196,62 @@ def test_log_of_a_float_turn_keeps_a_unit_axis_at_every_angle(angle):
         np.array(T.matrix, dtype=float),
         atol=1e-15,
     )
+
+
+# --------------------------------------------------------------- issue 20: near a half-turn
+def _mp_rotation(axis, theta):
+    """The rotation by ``theta`` about ``axis`` in mpmath at 50 digits: the careful reference."""
+    import mpmath
+
+    n = mpmath.sqrt(sum(a * a for a in axis))
+    a = [mpmath.mpf(c) / n for c in axis]
+    K = mpmath.matrix([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return mpmath.eye(3) + mpmath.sin(theta) * K + (1 - mpmath.cos(theta)) * K * K, a
+
+
+@pytest.mark.parametrize("bits", [53, 24])
+def test_log6_near_a_half_turn_is_decided_by_the_rotation_not_a_tolerance(bits):
+    # issue 20: within sqrt(2 tau) of pi the angle came back as exactly pi (1.35e-6 rad off
+    # for doubles, 0.03 rad for 24-bit floats) and the axis lost digits; the reference is the
+    # rotation computed by mpmath at 50 digits, rounded to the floats given
+    import mpmath
+
+    mpmath.mp.dps = 50
+    eps = 2.0**-bits
+    for k in (1, 3, 5, 7, 9, 12, 15):
+        if 10.0**-k < eps:
+            continue
+        theta = mpmath.pi - mpmath.mpf(10) ** -k
+        Rm, a = _mp_rotation([1, 2, -2], theta)
+        R = ImmutableMatrix(3, 3, [Float(mpmath.nstr(Rm[i, j], 30), precision=bits)
+                                   for i in range(3) for j in range(3)])
+        T = Transform(R, [Float(1.0, precision=bits), Float(0.5, precision=bits), 0])
+        twist, angle = log6(T)
+        assert isinstance(angle, Float), (k, angle)
+        assert abs(mpmath.mpf(angle) - theta) < 8 * eps, k
+        assert max(abs(mpmath.mpf(w) - c) for w, c in zip(twist.omega, a, strict=True)) < 8 * eps, k
+        back = exp6(twist, angle)
+        assert max(abs(float(u - v)) for u, v in zip([*back.R, *back.p], [*T.R, *T.p], strict=True)) < 32 * eps
+
+
+def test_log6_of_an_exact_float_half_turn_is_pi_with_the_sign_convention():
+    T = Transform(ImmutableMatrix([[-1.0, 0, 0], [0, -1.0, 0], [0, 0, 1.0]]), [0, 0, 0])
+    twist, angle = log6(T)
+    assert angle == Float(pi, 16) or abs(float(angle) - float(pi)) < 1e-15
+    assert [float(w) for w in twist.omega] == [0, 0, 1]
+
+
+@pytest.mark.parametrize("angle", [1e-3, 1e-6, 1e-9, 1e-12])
+def test_exp6_at_a_small_float_angle_keeps_the_digits_of_one_minus_cos(angle):
+    # issue 20: 1 - cos(theta) lost its digits (a relative error of 9e-5 in p at 1e-6 rad,
+    # the whole term at 1e-9); 2 sin^2(theta/2) keeps them.  Reference: Rodrigues in mpmath
+    import mpmath
+
+    mpmath.mp.dps = 40
+    point = [1.0, -2.0, 0.5]
+    Rm, a = _mp_rotation([1, 2, 2], mpmath.mpf(angle))
+    twist = Twist.rotation([1 / 3, 2 / 3, 2 / 3], point=point)
+    T = exp6(twist, angle)
+    want = (mpmath.eye(3) - Rm) * mpmath.matrix(point)  # p = (I - R) r, pitch 0
+    for got, ref in zip(T.p, want, strict=True):
+        assert abs(mpmath.mpf(got) - ref) <= 4e-16 * angle * 3, (got, ref)

@@ -330,3 +330,59 @@ def test_lambdify_takes_a_transform():
     for k, (tv, dv) in enumerate([(0.3, 2.0), (-1.2, 0.5)]):
         want = np.array(T.matrix.subs({t: tv, d: dv}).evalf(), dtype=float)
         np.testing.assert_allclose(got[k], want, rtol=1e-13, atol=1e-15)
+
+
+def test_a_provable_symbolic_reflection_is_refused_as_a_rotation():
+    # issue 20: entries (1-u^2)/(1+u^2), 2u/(1+u^2) are orthonormal for every u, and det = -1
+    # by cancel: it was accepted, and a Chain built on it mirrored
+    from sympy import Symbol
+
+    from screwsym import Chain, Twist
+
+    u = Symbol("u", real=True)
+    a, b = (1 - u**2) / (1 + u**2), 2 * u / (1 + u**2)
+    mirror = [[a, b, 0], [b, -a, 0], [0, 0, 1]]
+    with pytest.raises(ValueError, match=r"R: expected a rotation \(det R = 1\), got det R = -1"):
+        Transform(mirror, [0, 0, 0])
+    with pytest.raises(ValueError, match="got det R = -1"):
+        Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])], home=Transform(mirror, [0, 0, 0]))
+    # the same entries as a rotation (det = +1 by cancel) are accepted
+    turn = Transform([[a, -b, 0], [b, a, 0], [0, 0, 1]], [0, 0, 0])
+    assert turn.R[1, 0] == b
+
+
+def test_equals_of_float_motions_follows_the_float_policy():
+    # issue 20: T.inverse().inverse().equals(T) was False for a float transform
+    T = Transform.rotation([1, 2, 2], 0.7, point=[1.0, -2.0, 3.0])
+    assert T.inverse().inverse() != T  # rounding: not the same floats ...
+    assert T.inverse().inverse().equals(T) is True  # ... but the same motion
+    assert T.equals(Transform.rotation([1, 2, 2], 0.7 + 1e-9, point=[1.0, -2.0, 3.0])) is False
+    big = Transform.translation([1e12, 0, 0]) @ T
+    assert big.inverse().inverse().equals(big) is True
+    assert big.equals(Transform.translation([1e12 + 1e3, 0, 0]) @ T) is False  # tau = 2^-40
+
+
+@pytest.mark.parametrize("flag", ["no", 1, None, 0.0])
+def test_apply_direction_is_a_boolean(flag):
+    # issue 20: direction="no" was taken as direction=True
+    T = Transform.translation([1, 0, 0])
+    with pytest.raises(TypeError, match=r"direction: expected True or False, got"):
+        T.apply([1, 0, 0], direction=flag)
+    assert T.apply([1, 0, 0], direction=False) == Matrix([2, 0, 0])
+
+
+def test_an_axis_such_as_1_over_y_is_normalised_not_refused_with_an_internal_name():
+    # issue 20: unit() and Transform.rotation() refused [1/y, 1, 0] with "S[0]" / "v[0]": the
+    # normalised entry 1/(y sqrt(1 + y^-2)) is real wherever it is defined
+    from sympy import Symbol, cancel
+
+    from screwsym import Screw, unit
+
+    y = Symbol("y", real=True)
+    u = unit(Screw([1 / y, 1, 0], [0, 0, 0])).S
+    assert cancel(u.dot(u) - 1) == 0
+    R = Transform.rotation([1 / y, 1, 0], t).R
+    assert zero_matrix(R * Matrix([1 / y, 1, 0]) - Matrix([1 / y, 1, 0]))
+    # a direction that is not real is refused under the user's name
+    with pytest.raises(ValueError, match=r"direction\[0\]: expected a real value, got sqrt\(y\)"):
+        Transform.rotation([sqrt(y), 1, 0], t)

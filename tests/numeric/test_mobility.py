@@ -60,3 +60,21 @@ def test_mobility_map_bad_input():
         mobility_map(mech, [])
     with pytest.raises(ValueError, match="rtol: expected a positive finite number, got 0"):
         mobility_map(mech, [bx], rtol=0)
+
+
+@pytest.mark.parametrize("backend", ["numpy", "numba"])
+def test_an_undefined_configuration_is_marked_the_same_on_every_backend(backend):
+    # issue 20: at a NaN/inf configuration the map returned an integer (6 on NumPy, 1 on numba)
+    if backend == "numba":
+        pytest.importorskip("numba")
+    from screwsym.numeric.mobility import UNDEFINED
+
+    bx, by = symbols("b_x b_y", real=True)
+    mech = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
+    out = mobility_map(mech, [bx, by], backend=backend)(
+        np.array([1.0, np.nan, np.inf, 1.0, -np.inf]), np.array([1.0, 1.0, 1.0, np.nan, 0.0]))
+    assert UNDEFINED == -1
+    assert out.mobility.tolist() == [1, -1, -1, -1, -1]
+    assert out.constraint_rank.tolist() == [5, -1, -1, -1, -1]
+    assert (out.limb_constraints[1:] == -1).all() and (out.limb_constraints[0] >= 0).all()
+    assert np.isnan(out.sigma[1:]).all() and np.isfinite(out.sigma[0]).all()

@@ -18,7 +18,9 @@ import numpy as np
 import pytest
 import sympy
 from _backends import BACKENDS, HAS_NUMBA
-from sympy import Rational, symbols
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+from sympy import Rational, sqrt, symbols
 
 import screwsym
 from screwsym import LineVector, Screw, Twist, Wrench, codegen, numeric
@@ -304,3 +306,45 @@ def test_an_edited_formula_is_rebuilt_not_loaded_from_the_old_index(tmp_path):
     # rebuilt with the edit (a stale index would give the old formula's 0.5, building nothing)
     assert (edited["built"], edited["pitch"]) == (["pitch"], 1.0)
     assert edited["tag"] != first["tag"]
+
+
+# ------------------------------------------------ issue 20: scale-robust from 1e-300 to 1e300
+def test_pitch_and_foot_at_extreme_scales_the_issues_examples():
+    f = numeric.functions_for("numpy")
+    for k in (1e-300, 1e-200, 1.0, 1e200, 1e300):
+        s = np.array([1.0, 1, 0, 1, 0, 0]) * k  # pitch 1/2 and foot (0, 0, -1/2) at any scale
+        assert f.pitch(s) == pytest.approx(0.5, rel=1e-15)
+        np.testing.assert_allclose(f.foot(s), [0, 0, -0.5], rtol=1e-15, atol=0)
+    assert f.pitch(np.array([1e-170, 0, 0, 1e-170, 0, 0])) == 1.0  # S . S underflowed: nan
+    assert f.pitch(np.array([1e-170, 0, 0, 0, 0, 1e-170])) == 0.0
+    # the special cases keep their meaning: a couple, the zero screw, a result beyond floats
+    assert f.pitch(np.array([[0.0, 0, 0, 0, 0, 1e-300], [0.0] * 6, [1e-300, 0, 0, 1e300, 0, 0]])
+                   ).tolist()[::2] == [np.inf, np.inf]
+    assert np.isnan(f.pitch(np.zeros(6))) and np.isnan(f.foot(np.array([0.0, 0, 0, 1, 0, 0]))).all()
+    out = np.empty(2)
+    assert f.pitch(np.array([[1e-200, 0, 0, 1e-200, 0, 0]] * 2), out=out) is not None
+    assert out.tolist() == [1.0, 1.0]
+
+
+_component = st.integers(-9, 9)
+_scale = st.integers(-300, 300)
+
+
+@settings(max_examples=25, deadline=None, derandomize=True)
+@given(st.lists(_component, min_size=6, max_size=6), _scale, _scale)
+def test_property_pitch_and_foot_are_scale_robust_against_sympys_exact_values(c, j, j0):
+    # the parts scaled by 10^j and 10^j0 (floats from 1e-300 to 1e300); the reference is the
+    # exact pitch (1.34) and foot (1.16) of the very floats given, in SymPy's rationals
+    from sympy import Matrix
+
+    assume(any(c[:3]))
+    s = np.array([float(Rational(v) * Rational(10) ** j) for v in c[:3]]
+                 + [float(Rational(v) * Rational(10) ** j0) for v in c[3:]])
+    S, S0 = Matrix([Rational(v) for v in s[:3]]), Matrix([Rational(v) for v in s[3:]])
+    h, P = S.dot(S0) / S.dot(S), S.cross(S0) / S.dot(S)
+    # the error bound of the formulas: eps times the size of their terms, |S0|/|S|
+    size = float(sqrt(S0.dot(S0) / S.dot(S)))
+    assume(1e-300 < size < 1e300 or not any(c[3:]))
+    f = numeric.functions_for("numpy")
+    for got, want in [(f.pitch(s), h), *zip(f.foot(s), P, strict=True)]:
+        assert abs(got - float(want)) <= 8 * np.finfo(float).eps * size, (got, want)

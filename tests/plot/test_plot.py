@@ -348,3 +348,9 @@ def test_import_screwsym_does_not_import_matplotlib():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "False"
+
+
+def test_show_foot_is_a_boolean():
+    # issue 20: flags are booleans, checked by the one shared check (core.checks.check_flag)
+    with pytest.raises(TypeError, match="show_foot: expected True or False, got str 'no'"):
+        plot_line(LineVector.from_axis([0, 0, 0], [1, 0, 0]), show_foot="no")

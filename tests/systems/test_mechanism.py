@@ -439,3 +439,16 @@ def test_mobility_prints_as_a_short_summary_and_keeps_its_fields():
     assert repr(m) == ("Mobility(mobility=1, motion='1R', common=3, redundant=0, passive=0, "
                        "classical=-2)")
     assert m.links == 4 and m.joints == 4 and m.twists.rank == 1 and len(m) == 15
+
+
+def test_a_universal_joint_with_parallel_axes_is_refused():
+    # issue 20: U(p, [1, 0, 0], [2, 0, 0]) is one revolute joint; accepted, every mobility
+    # built on it was wrong by one
+    with pytest.raises(ValueError, match=r"dir2: a universal joint needs two non-parallel "
+                                         r"axes, got dir1 = \[1, 0, 0\] and dir2 = \[2, 0, 0\]"):
+        U([0, 0, 0], [1, 0, 0], [2, 0, 0])
+    with pytest.raises(ValueError, match="dir2: a universal joint needs two non-parallel"):
+        U([0, 0, 0], [1, 2, 3], [-2, -4, -6])
+    a = symbols("a", real=True)
+    assert U([0, 0, 0], [1, 0, 0], [a, 1, 0]).freedom == 2  # never parallel: kept
+    assert U([0, 0, 0], [1, 0, 0], [1, a, 0]).freedom == 2  # parallel only at a = 0: kept

@@ -371,3 +371,49 @@ def test_an_empty_system_keeps_its_kind():
     assert ScrewSystem().kind is Screw
     with pytest.raises(TypeError, match=r"screws: expected members of kind Twist, got Wrench"):
         ScrewSystem(Wrench([1, 0, 0], [0, 0, 0]), kind=Twist)
+
+
+def _five_random_screws(tag: str):
+    """Five screws linear in three fresh symbols (fresh: the case split's caches miss)."""
+    import random as _random
+
+    from screwsym import Screw
+
+    x, y, z = symbols(f"x_{tag} y_{tag} z_{tag}", real=True)
+    rnd = _random.Random(1)
+
+    def r():
+        return sum(rnd.randint(-3, 3) * v for v in (x, y, z, 1))
+
+    return ScrewSystem(*(Screw([r() for _ in range(3)], [r() for _ in range(3)])
+                         for _ in range(5)))
+
+
+def test_the_case_split_takes_a_work_budget_and_names_it():
+    # issue 20: rank_conditions() of five or six random screws in three symbols ran for
+    # minutes with no limit; a budget (units of polynomial arithmetic) ends it with an error
+    from screwsym.systems.screw_system import BUDGET
+
+    assert BUDGET == 20_000_000
+    with pytest.raises(ValueError, match=r"rank_conditions: the case split needs more work "
+                                         r"than budget=100000 units .* pass a larger budget"):
+        _five_random_screws("a").rank_conditions(budget=100_000)
+    with pytest.raises(ValueError, match=r"reciprocal_cases: .* budget=1000 units"):
+        _five_random_screws("b").reciprocal_cases(budget=1000)
+    with pytest.raises(ValueError, match="budget: expected a positive integer, got 0"):
+        _five_random_screws("c").rank_conditions(budget=0)
+    a = symbols("a_budget", real=True)
+    RR = ScrewSystem(Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+                     Twist.rotation([0, 0, 1], point=[a, 0, 0]))
+    assert RR.rank_conditions(budget=10_000) == [(Ne(a, 0), 2), (Eq(a, 0), 1)]
+
+
+def test_mobility_cases_takes_one_budget_for_the_whole_split():
+    from _mechanisms import four_bar
+
+    b = symbols("b_budget", real=True)
+    mech = four_bar(B=(1, b, 0), Cp=(3, 0, 0))
+    with pytest.raises(ValueError, match=r"mobility_cases: the case split needs more work than "
+                                         r"budget=10 units"):
+        mech.mobility_cases(budget=10)
+    assert [m.mobility for _, m in mech.mobility_cases()] == [1, 2]
