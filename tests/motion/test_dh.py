@@ -120,7 +120,7 @@ def test_prismatic_and_offsets_exact(convention):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("convention", ["standard", "modified"])
+@pytest.mark.parametrize("convention", ["standard"])
 def test_prismatic_and_offsets_with_symbols(convention):
     """An RPR arm with symbolic lengths, twist angle and offsets (a theta offset on a revolute
     row, a d offset on a prismatic row).  The chain is built once with the symbols; then the
