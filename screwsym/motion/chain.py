@@ -57,8 +57,10 @@ from ..core.formulas import moved
 from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from .dh import dh_twists_and_home
 from .displacement import exp6
 from .transform import Transform
+from .urdf import urdf_twists_and_home
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -149,37 +151,35 @@ class Chain(ScrewsymBasic):
     @classmethod
     def from_dh(cls, rows: Sequence[Sequence[ScalarLike]], convention: str = "standard",
                 joints: str | Sequence[str] | None = None, *,
-                base: Transform | None = None, tool: Transform | None = None) -> Self:
+                base: Transform | None = None, tool: Transform | None = None) -> Chain:
         r"""The chain of a Denavit–Hartenberg table of rows ``(a, alpha, d, theta)``.
 
         ``convention`` is ``"standard"`` (Denavit & Hartenberg 1955) or
         ``"modified"`` (Craig 1986/2005); ``joints`` is a string such as
         ``"RRPRRR"`` saying per row which entry is the variable (``R``: theta,
         ``P``: d; default all revolute).  Exact: see
-        :func:`screwsym.motion.dh.chain_from_dh` for the conventions' table.
+        :func:`screwsym.motion.dh.dh_twists_and_home` for the conventions' table.
 
         >>> from sympy import pi
         >>> Chain.from_dh([(1, 0, 0, 0), (1, 0, 0, 0)]).home.p.T
         Matrix([[2, 0, 0]])
         """
-        from .dh import chain_from_dh
-
-        return chain_from_dh(rows, convention, joints, base=base, tool=tool, cls=cls)
+        twists, home = dh_twists_and_home(rows, convention, joints, base=base, tool=tool)
+        return cls(twists, home)
 
     @classmethod
     def from_urdf(cls, source: Any, base: str | None = None, tip: str | None = None, *,
-                  angles: str = "exact", angle_tol: ScalarLike = Rational(1, 10**9)) -> Self:
+                  angles: str = "exact", angle_tol: ScalarLike | None = None) -> Chain:
         r"""The chain of the serial path from link ``base`` to link ``tip`` of a URDF robot.
 
         ``source`` is a file path or the XML text.  Numbers are read exactly
         from their decimal text; ``angles="pi/12"`` (opt-in) snaps ``rpy``
-        angles within ``angle_tol`` of a multiple of pi/12 to that multiple.
+        angles within ``angle_tol`` (default ``10**-9``) of a multiple of pi/12 to that multiple.
         Needs ``defusedxml`` (``pip install -e ".[urdf]"``).  See
-        :func:`screwsym.motion.urdf.chain_from_urdf` for the rules and the errors.
+        :func:`screwsym.motion.urdf.urdf_twists_and_home` for the rules and the errors.
         """
-        from .urdf import chain_from_urdf
-
-        return chain_from_urdf(source, base, tip, angles=angles, angle_tol=angle_tol, cls=cls)
+        twists, home = urdf_twists_and_home(source, base, tip, angles=angles, angle_tol=angle_tol)
+        return cls(twists, home)
 
     @property
     def twists(self) -> tuple[Twist, ...]:

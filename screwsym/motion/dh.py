@@ -54,7 +54,7 @@ of exponentials from them).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from sympy import Expr, ImmutableMatrix, cos, sin
 
@@ -64,10 +64,7 @@ from ..core.tidy import tidy
 from ..core.twist import Twist
 from .transform import Transform
 
-if TYPE_CHECKING:
-    from .chain import Chain
-
-__all__ = ["chain_from_dh", "dh_row_transform"]
+__all__ = ["dh_twists_and_home", "dh_row_transform"]
 
 #: the conventions and their aliases
 _CONVENTIONS = ("standard", "modified")
@@ -140,11 +137,11 @@ def _check_joints(joints: Any, n: int) -> tuple[str, ...]:
     return tuple(out)
 
 
-def chain_from_dh(rows: Sequence[Sequence[ScalarLike]], convention: str = "standard",
-                  joints: str | Sequence[str] | None = None, *,
-                  base: Transform | None = None, tool: Transform | None = None,
-                  cls: type[Chain] | None = None) -> Chain:
-    r"""The product-of-exponentials :class:`~screwsym.motion.chain.Chain` of a Denavit–Hartenberg table.
+def dh_twists_and_home(rows: Sequence[Sequence[ScalarLike]], convention: str = "standard",
+                       joints: str | Sequence[str] | None = None, *,
+                       base: Transform | None = None,
+                       tool: Transform | None = None) -> tuple[list[Twist], Transform]:
+    r"""The joint twists and home pose of a Denavit–Hartenberg table: ``Chain.from_dh``'s work.
 
     Explanation
     ===========
@@ -160,7 +157,8 @@ def chain_from_dh(rows: Sequence[Sequence[ScalarLike]], convention: str = "stand
     (default the identity), for a robot's base frame or flange.  The module
     docstring tables the two conventions and gives the derivation.
 
-    Use it as :meth:`Chain.from_dh <screwsym.motion.chain.Chain.from_dh>`.
+    Use it as :meth:`Chain.from_dh <screwsym.motion.chain.Chain.from_dh>`, which
+    makes the :class:`~screwsym.motion.chain.Chain` of these parts.
 
     Examples
     ========
@@ -190,8 +188,6 @@ def chain_from_dh(rows: Sequence[Sequence[ScalarLike]], convention: str = "stand
 
     Denavit & Hartenberg 1955; Craig 2005, (3.6); Lynch & Park 2017, Appendix C.
     """
-    from .chain import Chain
-
     rows = check_sequence(rows, "rows", "DH rows (a, alpha, d, theta)")
     if len(rows) == 0:
         raise ValueError("rows: expected at least one DH row (a, alpha, d, theta), got none")
@@ -210,5 +206,4 @@ def chain_from_dh(rows: Sequence[Sequence[ScalarLike]], convention: str = "stand
         twists.append(Twist.rotation(z, point=T.p) if kind == "R" else Twist.translation(z))
         if convention == "standard":
             T = tidy(T @ A)
-    home = tidy(T @ tool)
-    return (Chain if cls is None else cls)(twists, home)
+    return twists, tidy(T @ tool)

@@ -3,7 +3,7 @@ r"""URDF robots to product-of-exponentials chains, read exactly and parsed safel
 Explanation
 ===========
 
-:func:`chain_from_urdf` (``Chain.from_urdf``) reads a URDF file (a path, or
+:meth:`Chain.from_urdf <screwsym.motion.chain.Chain.from_urdf>` (:func:`urdf_twists_and_home`) reads a URDF file (a path, or
 the XML text) and builds the :class:`~screwsym.motion.chain.Chain` of the
 serial path from the link ``base`` to the link ``tip``:
 
@@ -62,12 +62,13 @@ Section 4.1.3 (the product of exponentials from a robot description).
 
 from __future__ import annotations
 
+import importlib
 import math
 import os
 import re
 import warnings
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import Any, NamedTuple
 
 from sympy import Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
 
@@ -77,10 +78,7 @@ from ..core.tidy import tidy
 from ..core.twist import Twist
 from .transform import Transform
 
-if TYPE_CHECKING:
-    from .chain import Chain
-
-__all__ = ["chain_from_urdf", "read_inertials", "LinkInertial", "path_joints"]
+__all__ = ["urdf_twists_and_home", "read_inertials", "LinkInertial", "path_joints"]
 
 #: a decimal number as URDF writes one (no expressions, no nan/inf)
 _DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
@@ -93,11 +91,13 @@ _MOVING = ("revolute", "continuous", "prismatic")
 _SUPPORTED = _MOVING + ("fixed",)
 
 _INSTALL = 'pip install -e ".[urdf]"'
+#: the default tolerance of the angle policy "pi/N", in radians
+ANGLE_TOL = Rational(1, 10**9)
 
 
 def _etree() -> Any:
     try:
-        import defusedxml.ElementTree as ElementTree
+        ElementTree = importlib.import_module("defusedxml.ElementTree")
     except ImportError as error:  # pragma: no cover - exercised without the extra
         raise ImportError(
             "reading URDF needs the package defusedxml (a safe XML parser): "
@@ -134,7 +134,7 @@ class _AnglePolicy:
                 raise ValueError(f"angles: expected 'exact' or 'pi/N' with N a positive integer, "
                                  f"e.g. 'pi/12', got {angles!r}")
             self.n = int(m.group(1))
-        tol = check_scalar(angle_tol, "angle_tol")
+        tol = ANGLE_TOL if angle_tol is None else check_scalar(angle_tol, "angle_tol")
         if not tol.is_number or not (0 < tol < Rational(1, 10**3)):
             raise ValueError(f"angle_tol: expected a number in (0, 1/1000), got {angle_tol!r}")
         self.tol = float(tol)
@@ -310,10 +310,10 @@ def path_joints(source: Any, base: str | None = None, tip: str | None = None) ->
     return tuple(j.name for j in joints if j.type in _MOVING)
 
 
-def chain_from_urdf(source: Any, base: str | None = None, tip: str | None = None, *,
-                    angles: str = "exact", angle_tol: ScalarLike = Rational(1, 10**9),
-                    cls: type[Chain] | None = None) -> Chain:
-    r"""The product-of-exponentials chain of the path from link ``base`` to link ``tip``.
+def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None = None, *,
+                         angles: str = "exact",
+                         angle_tol: ScalarLike | None = None) -> tuple[list[Twist], Transform]:
+    r"""The joint twists and home pose of the path from link ``base`` to link ``tip``.
 
     Explanation
     ===========
@@ -326,7 +326,7 @@ def chain_from_urdf(source: Any, base: str | None = None, tip: str | None = None
     names: :func:`path_joints`); the home pose is ``tip``'s frame at ``q = 0``.
     See the module docstring for what is read, the angle policy (``angles``,
     ``angle_tol``) and what is refused.  Use it as :meth:`Chain.from_urdf
-    <screwsym.motion.chain.Chain.from_urdf>`.
+    <screwsym.motion.chain.Chain.from_urdf>`, which makes the chain of these parts.
 
     Examples
     ========
@@ -382,8 +382,6 @@ def chain_from_urdf(source: Any, base: str | None = None, tip: str | None = None
 
     The URDF specification (joint and origin elements); Lynch & Park 2017, Section 4.1.3.
     """
-    from .chain import Chain
-
     policy = _AnglePolicy(angles, angle_tol)
     robot = _Robot(source)
     base, tip, joints = robot.path(base, tip)
@@ -396,7 +394,7 @@ def chain_from_urdf(source: Any, base: str | None = None, tip: str | None = None
                           else Twist.rotation(direction, point=T.p))
     if not twists:
         raise ValueError(f"tip: the path from {base!r} to {tip!r} has no moving joint")
-    return (Chain if cls is None else cls)(twists, T)
+    return twists, T
 
 
 class LinkInertial(NamedTuple):
@@ -441,13 +439,13 @@ def _link_inertial(robot: _Robot, name: str, T: Transform,
 
 def read_inertials(source: Any, base: str | None = None, tip: str | None = None, *,
                    angles: str = "exact",
-                   angle_tol: ScalarLike = Rational(1, 10**9)) -> tuple[LinkInertial, ...]:
+                   angle_tol: ScalarLike | None = None) -> tuple[LinkInertial, ...]:
     r"""The inertia of each moving body on the path from ``base`` to ``tip``, exact, at home.
 
     Explanation
     ===========
 
-    One :class:`LinkInertial` per moving joint of :func:`chain_from_urdf`'s
+    One :class:`LinkInertial` per moving joint of ``Chain.from_urdf``'s
     chain, in the same order: the body is the joint's child link together with
     every link attached to it through ``fixed`` joints (on the path or off it;
     links behind another moving joint off the path, such as the Panda's

@@ -16,10 +16,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _motions import to_float
 from sympy import Matrix, symbols
 
 from screwsym import Chain, lambdify
-from _motions import to_float
 
 pin = pytest.importorskip("pinocchio")
 pytest.importorskip("defusedxml")

@@ -9,7 +9,7 @@ modified (Craig 2005, (3.6)) A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_
 from __future__ import annotations
 
 import pytest
-from sympy import Matrix, Rational, atan2, cos, eye, expand, expand_trig, pi, sin, symbols, zeros
+from sympy import Matrix, Rational, atan2, cos, expand, expand_trig, eye, pi, sin, symbols, zeros
 
 from screwsym import Chain, Transform
 
@@ -134,7 +134,7 @@ def test_prismatic_and_offsets_with_symbols(convention):
     for shift in range(2):
         angles = PYTHAGOREAN[shift:] + PYTHAGOREAN[:shift]
         values = dict(zip(params, [Rational(3, 10), Rational(-1, 7), Rational(2, 5), Rational(1, 9),
-                                   angles[0], angles[1], angles[2]]))
+                                   angles[0], angles[1], angles[2]], strict=True))
         qs = [angles[3], Rational(5, 11), angles[4]]
         exact_rows = [tuple(Matrix(r).subs(values)) for r in rows]
         expected = dh_product(exact_rows, convention, "RPR", qs)

@@ -33,9 +33,10 @@ def mr_example_4_5(W1, W2, L1, L2, H1, H2) -> Chain:
     return Chain([Twist(w, v) for w, v in table], Transform.from_matrix(M))
 
 
-def same_chain(a: Chain, b: Chain, base: Transform = Transform.identity()) -> bool:
+def same_chain(a: Chain, b: Chain, base: Transform | None = None) -> bool:
     """``base a(q) == b(q)`` for every q, by the product of exponentials: the twists moved by
     ``base`` and the home pose agree exactly (then T_b(q) = base T_a(q) identically)."""
+    base = Transform.identity() if base is None else base
     return (a.n_joints == b.n_joints
             and all(base.apply(s) == t for s, t in zip(a.twists, b.twists, strict=True))
             and base @ a.home == b.home)

@@ -16,9 +16,9 @@ pytest.importorskip("defusedxml")
 
 from screwsym.motion.urdf import (  # noqa: E402
     TWO_LINK_URDF,
-    chain_from_urdf,
     path_joints,
     read_inertials,
+    urdf_twists_and_home,
 )
 
 DATA = Path(__file__).parent.parent / "data" / "urdf"
@@ -241,7 +241,15 @@ def test_read_inertials_merges_and_moves_to_the_space_frame():
 
 
 def test_the_doctest_robot_and_files():
-    chain = chain_from_urdf(TWO_LINK_URDF, angles="pi/12")
-    assert chain.n_joints == 2
+    twists, home = urdf_twists_and_home(TWO_LINK_URDF, angles="pi/12")
+    assert Chain(twists, home) == Chain.from_urdf(TWO_LINK_URDF, angles="pi/12")
     assert Chain.from_urdf(str(PANDA), "panda_link0", "panda_link8", angles="pi/12") == \
         Chain.from_urdf(PANDA.read_bytes(), "panda_link0", "panda_link8", angles="pi/12")
+
+
+def test_without_defusedxml_the_error_says_how_to_install(monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "defusedxml.ElementTree", None)
+    with pytest.raises(ImportError, match=r'pip install -e "\.\[urdf\]"'):
+        Chain.from_urdf(TWO_LINK_URDF)
