@@ -9,16 +9,16 @@ kinematics is their product, ``T(q) = A_1(q_1) A_2(q_2) ... A_n(q_n)``.  The
 two conventions in use order the four elementary motions of a row
 differently and attach the frames differently:
 
-=========================  ====================================================  =====================
-convention                 row ``i`` is the matrix                               joint ``i`` turns about
-=========================  ====================================================  =====================
-``"standard"``             ``A_i = Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)``      ``z_{i-1}`` (the frame
-(Denavit & Hartenberg                                                            before the row)
-1955; Spong; Corke)
-``"modified"``             ``A_i = Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i)       ``z_i`` (the frame
-(Craig 1986/2005)          Tz(d_i)``: the row holds ``a_{i-1}, alpha_{i-1}``     after the row)
-                           of the link before the joint
-=========================  ====================================================  =====================
+==============  ===================================================  =====================================
+convention      row ``i`` is the matrix                              joint ``i`` turns about
+==============  ===================================================  =====================================
+``"standard"``  ``Rz(theta_i) Tz(d_i) Tx(a_i) Rx(alpha_i)``          ``z_{i-1}``, the frame before the row
+``"modified"``  ``Rx(alpha_{i-1}) Tx(a_{i-1}) Rz(theta_i) Tz(d_i)``  ``z_i``, the frame after the row
+==============  ===================================================  =====================================
+
+``"standard"`` is Denavit & Hartenberg's (1955; Spong, Corke); ``"modified"``
+is Craig's (1986/2005, (3.6)), where row ``i`` holds ``a_{i-1}, alpha_{i-1}``
+of the link *before* joint ``i``.
 
 In both, the joint variable ``q_i`` is *added* to the row's entry: a revolute
 joint (``"R"``) turns ``theta_i = theta + q_i``, a prismatic joint (``"P"``)
