@@ -2,7 +2,8 @@
 
 ``testpaths`` collects the doctests of every module of ``screwsym``; those of
 ``screwsym.plot`` draw with matplotlib (the ``plot`` extra), so without it they
-are skipped, as ``tests/plot`` skips itself with ``pytest.importorskip``.  This
+are skipped, as ``tests/plot`` skips itself with ``pytest.importorskip``; so are
+those of ``screwsym.motion.urdf`` without ``defusedxml`` (the ``urdf`` extra).  This
 file imports nothing of screwsym (``tests/conftest.py`` must set the cache
 directory before screwsym loads).
 """
@@ -13,8 +14,8 @@ import importlib.util
 
 import pytest
 
-#: package folder (relative to the repository root) -> the module its doctests need
-OPTIONAL = {"screwsym/plot/": "matplotlib"}
+#: package folder or module (relative to the repository root) -> the module its doctests need
+OPTIONAL = {"screwsym/plot/": "matplotlib", "screwsym/motion/urdf.py": "defusedxml"}
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:

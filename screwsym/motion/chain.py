@@ -57,8 +57,10 @@ from ..core.formulas import moved
 from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from .dh import dh_twists_and_home
 from .displacement import exp6
 from .transform import Transform
+from .urdf import urdf_twists_and_home
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -145,6 +147,39 @@ class Chain(ScrewsymBasic):
                 raise ValueError(f"twists[{i}]: a joint twist cannot be zero, got {t}")
         home = Transform.identity() if home is None else check_instance(home, "home", Transform)
         return ScrewsymBasic.__new__(cls, joints, home)
+
+    @classmethod
+    def from_dh(cls, rows: Sequence[Sequence[ScalarLike]], convention: str = "standard",
+                joints: str | Sequence[str] | None = None, *,
+                base: Transform | None = None, tool: Transform | None = None) -> Chain:
+        r"""The chain of a Denavit–Hartenberg table of rows ``(a, alpha, d, theta)``.
+
+        ``convention`` is ``"standard"`` (Denavit & Hartenberg 1955) or
+        ``"modified"`` (Craig 1986/2005); ``joints`` is a string such as
+        ``"RRPRRR"`` saying per row which entry is the variable (``R``: theta,
+        ``P``: d; default all revolute).  Exact: see
+        :func:`screwsym.motion.dh.dh_twists_and_home` for the conventions' table.
+
+        >>> from sympy import pi
+        >>> Chain.from_dh([(1, 0, 0, 0), (1, 0, 0, 0)]).home.p.T
+        Matrix([[2, 0, 0]])
+        """
+        twists, home = dh_twists_and_home(rows, convention, joints, base=base, tool=tool)
+        return cls(twists, home)
+
+    @classmethod
+    def from_urdf(cls, source: Any, base: str | None = None, tip: str | None = None, *,
+                  angles: str = "exact", angle_tol: ScalarLike | None = None) -> Chain:
+        r"""The chain of the serial path from link ``base`` to link ``tip`` of a URDF robot.
+
+        ``source`` is a file path or the XML text.  Numbers are read exactly
+        from their decimal text; ``angles="pi/12"`` (opt-in) snaps ``rpy``
+        angles within ``angle_tol`` (default ``10**-9``) of a multiple of pi/12 to that multiple.
+        Needs ``defusedxml`` (``pip install -e ".[urdf]"``).  See
+        :func:`screwsym.motion.urdf.urdf_twists_and_home` for the rules and the errors.
+        """
+        twists, home = urdf_twists_and_home(source, base, tip, angles=angles, angle_tol=angle_tol)
+        return cls(twists, home)
 
     @property
     def twists(self) -> tuple[Twist, ...]:
@@ -237,7 +272,11 @@ def ur5() -> Chain:
     Six revolute joints given by their twists in the space frame at the home
     pose, in ray order ``(omega; v_O)``, with the example's dimensions in
     metres as exact rationals (W1 = 109/1000, W2 = 82/1000, L1 = 425/1000,
-    L2 = 392/1000, H1 = 89/1000, H2 = 95/1000).
+    L2 = 392/1000, H1 = 89/1000, H2 = 95/1000).  The screw axes are the
+    example's table: joint 6 is ``(0, 1, 0; H2 - H1, 0, L1 + L2)``, the flange's
+    own z-axis through the flange origin ``(L1 + L2, W1 + W2, H1 - H2)``
+    (up to version 0.2.0 this function gave it ``H2 - W2``, a slip that moved the
+    flange 6 mm when joint 6 turned).
 
     >>> from screwsym.motion.chain import ur5
     >>> arm = ur5()
@@ -245,6 +284,8 @@ def ur5() -> Chain:
     (6, Matrix([[817/1000, 191/1000, -3/500]]))
     >>> arm.twists[1]
     Twist([0, 1, 0], [-89/1000, 0, 0])
+    >>> arm.twists[5]
+    Twist([0, 1, 0], [3/500, 0, 817/1000])
     """
     w1, w2, l1, l2, h1, h2 = (Rational(x, 1000) for x in (109, 82, 425, 392, 89, 95))
     home = [[-1, 0, 0, l1 + l2], [0, 0, 1, w1 + w2], [0, 1, 0, h1 - h2], [0, 0, 0, 1]]
@@ -254,6 +295,6 @@ def ur5() -> Chain:
         (0, 1, 0, -h1, 0, l1),
         (0, 1, 0, -h1, 0, l1 + l2),
         (0, 0, -1, -w1, l1 + l2, 0),
-        (0, 1, 0, h2 - w2, 0, l1 + l2),
+        (0, 1, 0, h2 - h1, 0, l1 + l2),
     ]
     return Chain([Twist.from_matrix(s) for s in screws], Transform.from_matrix(home))

@@ -1,0 +1,255 @@
+"""Chain.from_urdf and read_inertials: exact numbers, the angle policy, refusals, hostile XML."""
+
+from __future__ import annotations
+
+import inspect
+import re
+import warnings
+from pathlib import Path
+
+import pytest
+from sympy import ImmutableMatrix, Matrix, Rational, cos, pi, sin, sqrt, symbols
+
+from screwsym import Chain, Transform, Twist, lambdify
+
+pytest.importorskip("defusedxml")
+
+from screwsym.motion.urdf import (  # noqa: E402
+    TWO_LINK_URDF,
+    path_joints,
+    read_inertials,
+    urdf_twists_and_home,
+)
+
+DATA = Path(__file__).parent.parent / "data" / "urdf"
+PANDA = DATA / "panda.urdf"
+
+
+def robot(joints: str) -> str:
+    """A URDF with the given joint elements and the links they name (but the link "zz")."""
+    used = sorted(set(re.findall(r'link="(\w+)"', joints)) - {"zz"})
+    names = "".join(f'<link name="{n}"/>' for n in used)
+    return f'<robot name="r">{names}{joints}</robot>'
+
+
+def joint(name, kind, parent, child, origin="", extra=""):
+    return (f'<joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
+            f"{origin}{extra}</joint>")
+
+
+def test_numbers_are_read_exactly_from_their_text():
+    text = robot(joint("j", "revolute", "a", "b", '<origin xyz="0.089159 2.7518e-02 -.5"/>',
+                       '<axis xyz="0 0 1"/>'))
+    chain = Chain.from_urdf(text)
+    assert chain.home.p == ImmutableMatrix([Rational(89159, 10**6), Rational(13759, 500000), Rational(-1, 2)])
+    # not through a float: 0.1 is 1/10, not 3602879701896397/36028797018963968
+    chain = Chain.from_urdf(robot(joint("j", "prismatic", "a", "b", '<origin xyz="0.1 0 0"/>')))
+    assert chain.home.p[0] == Rational(1, 10)
+    assert chain.twists == (Twist([0, 0, 0], [1, 0, 0]),)  # the default axis is 1 0 0
+
+
+def test_origins_rpy_axes_and_joint_kinds():
+    """rpy is fixed-axis X-Y-Z: R = Rz(y) Ry(p) Rx(r) (the URDF specification); a joint turns about
+    its axis through its frame's origin; continuous is revolute; fixed joints fold in."""
+    r, p, y = Rational("0.3"), Rational("-0.25"), Rational("1.25")
+    text = robot(
+        joint("j1", "continuous", "a", "b", '<origin xyz="1 2 3" rpy="0.3 -0.25 1.25"/>', '<axis xyz="0 1 0"/>')
+        + joint("f", "fixed", "b", "c", '<origin xyz="0 0 1"/>')
+        + joint("j2", "prismatic", "c", "d", "", '<axis xyz="0 0 -1"/>'))
+    chain = Chain.from_urdf(text, tip="d")
+    Rz = Matrix([[cos(y), -sin(y), 0], [sin(y), cos(y), 0], [0, 0, 1]])
+    Ry = Matrix([[cos(p), 0, sin(p)], [0, 1, 0], [-sin(p), 0, cos(p)]])
+    Rx = Matrix([[1, 0, 0], [0, cos(r), -sin(r)], [0, sin(r), cos(r)]])
+    R = Rz * Ry * Rx
+    o = Matrix([1, 2, 3])
+    w1 = R * Matrix([0, 1, 0])
+    assert (chain.twists[0].omega - w1).expand() == Matrix([0, 0, 0])
+    assert (chain.twists[0].v_O - o.cross(w1)).expand() == Matrix([0, 0, 0])
+    assert (chain.twists[1].omega).is_zero_matrix
+    assert (chain.twists[1].v_O + R[:, 2]).expand() == Matrix([0, 0, 0])
+    assert (chain.home.p - (o + R[:, 2])).expand() == Matrix([0, 0, 0])
+    assert path_joints(text, tip="d") == ("j1", "j2")
+    # a non-unit axis is divided by its exact length
+    unit = Chain.from_urdf(robot(joint("j", "revolute", "a", "b", "", '<axis xyz="1 1 0"/>')))
+    assert unit.twists[0].omega == ImmutableMatrix([1, 1, 0]) / sqrt(2)
+
+
+def test_the_angle_policy():
+    """Default exact: 1.5707963267948966 stays that rational.  angles="pi/12" (opt-in) snaps
+    rpy angles within angle_tol (1e-9 rad) of a multiple of pi/12; a near miss (within 1e-3)
+    is kept as written with a warning naming the joint; lengths are never changed."""
+    text = robot(joint("j", "revolute", "a", "b", '<origin xyz="1.5707963267948966 0 0" '
+                       'rpy="1.5707963267948966 0.5235987755982988 0.1"/>'))
+    exact = Chain.from_urdf(text)
+    assert exact.home.R[2, 2] == cos(Rational("1.5707963267948966")) * cos(Rational("0.5235987755982988"))
+    snapped = Chain.from_urdf(text, angles="pi/12")
+    x = Rational("1.5707963267948966")
+    assert snapped.home.p == ImmutableMatrix([x, 0, 0])  # a length is never snapped
+    # roll pi/2, pitch pi/6 snapped; yaw 0.1 is not near a multiple of pi/12 and stays 1/10
+    expected = Transform.rotation([0, 0, 1], Rational(1, 10)) @ Transform.rotation([0, 1, 0], pi / 6) \
+        @ Transform.rotation([1, 0, 0], pi / 2)
+    assert (snapped.home.R - expected.R).expand() == Matrix.zeros(3, 3)
+    # 1.5708 is 3.7e-6 from pi/2: outside the tolerance, kept, and said
+    near = robot(joint("j", "revolute", "a", "b", '<origin rpy="1.5708 0 0"/>'))
+    with pytest.warns(UserWarning, match=r"<joint name='j'>: <origin rpy>: the angle 3927/2500 is 3\.7e-06 from pi/2"):
+        kept = Chain.from_urdf(near, angles="pi/12")
+    assert kept.home.R[1, 1] == cos(Rational(3927, 2500))
+    # a looser tolerance, stated, snaps it; pi/2 snaps under pi/4 too, pi/6 does not
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert Chain.from_urdf(near, angles="pi/12", angle_tol=Rational(1, 10**5)).home.R[1, 1] == 0
+    assert Chain.from_urdf(text, angles="pi/4").home.R != snapped.home.R
+    for bad, match in [("pi/0", "angles: expected 'exact' or 'pi/N'"), ("round", "angles: expected"),
+                       ("2*pi/12", "angles: expected")]:
+        with pytest.raises(ValueError, match=match):
+            Chain.from_urdf(text, angles=bad)
+    with pytest.raises(TypeError, match="angles: expected 'exact' or 'pi/N'"):
+        Chain.from_urdf(text, angles=12)
+    with pytest.raises(ValueError, match=r"angle_tol: expected a number in \(0, 1/1000\)"):
+        Chain.from_urdf(text, angles="pi/12", angle_tol=Rational(1, 10))
+
+
+def test_what_is_refused_names_the_element():
+    cases = [
+        (robot(joint("slide", "floating", "a", "b")), "b", r"<joint name='slide' type='floating'>: only revolute"),
+        (robot(joint("pl", "planar", "a", "b")), "b", r"<joint name='pl' type='planar'>"),
+        (robot(joint("j1", "revolute", "a", "b") + joint("m", "revolute", "b", "c", "",
+                                                             '<mimic joint="j1"/>')),
+         "c", r"<joint name='m' type='revolute'>: a <mimic> joint on the path"),
+        (robot(joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "a", "c")
+               + joint("j3", "revolute", "b", "d") + joint("loop", "revolute", "c", "d")),
+         "d", r"<link name='d'>: the child of 2 joints \['j3', 'loop'\] \(a closed loop\)"),
+        (robot(joint("j1", "revolute", "a", "b", '<origin xyz="0 0 1/2"/>')), "b",
+         r"<joint name='j1'>: <origin xyz>: expected a decimal number, got '1/2'"),
+        (robot(joint("j1", "revolute", "a", "b", '<origin xyz="0 0 __import__"/>')), "b",
+         r"expected a decimal number, got '__import__'"),
+        (robot(joint("j1", "revolute", "a", "b", '<origin xyz="0 nan 0"/>')), "b", "got 'nan'"),
+        (robot(joint("j1", "revolute", "a", "zz")), "b", r"<joint name='j1'>: no <link> named 'zz'"),
+        (robot(joint("j1", "revolute", "a", "b", "", '<axis xyz="0 0 0"/>')), "b", "expected a non-zero axis"),
+        (robot(joint("j1", "fixed", "a", "b")), "b", "has no moving joint"),
+        (robot(joint("j1", "revolute", "a", "b")), "zz", "tip: no <link> named 'zz'"),
+        (robot(joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "a", "c")), "c", None),
+        ('<rob name="x"/>', None, "expected a <robot> root element, got <rob>"),
+    ]
+    for text, tip, match in cases:
+        if match is None:  # a sibling branch is fine
+            assert Chain.from_urdf(text, tip=tip).n_joints == 1
+            continue
+        with pytest.raises(ValueError, match=match):
+            Chain.from_urdf(text, tip=tip)
+    with pytest.raises(ValueError, match=r"tip: the link 'a' is not below the link 'b'"):
+        Chain.from_urdf(robot(joint("j1", "revolute", "a", "b")), base="b", tip="a")
+    with pytest.raises(ValueError, match=r"tip: the file has 2 leaf links"):
+        Chain.from_urdf(robot(joint("j1", "revolute", "a", "b") + joint("j2", "revolute", "a", "c")))
+    with pytest.raises(TypeError, match="source: expected a URDF file path or its XML text, got int"):
+        Chain.from_urdf(3)
+
+
+def test_a_mimic_joint_off_the_path_is_fine():
+    """The Panda's finger joint 2 mimics finger joint 1; the arm's chain does not pass there."""
+    chain = Chain.from_urdf(PANDA, base="panda_link0", tip="panda_hand_tcp", angles="pi/12")
+    assert chain.n_joints == 7
+    with pytest.raises(ValueError, match=r"<joint name='panda_finger_joint2' type='prismatic'>: a <mimic>"):
+        Chain.from_urdf(PANDA, base="panda_link0", tip="panda_rightfinger")
+
+
+def test_the_panda_urdf_is_franka_s_modified_dh_table():
+    """Franka Emika's published modified-DH table (Franka Control Interface documentation,
+    "Robot and interface specifications": a, d, alpha; the flange is d = 0.107 along z_7)
+    gives exactly the chain of panda.urdf from panda_link0 to panda_link8 (the flange), with
+    the file's rpy decimals of pi/2 read as pi/2 (angles="pi/12").  The base frames agree and
+    the flange transform is Tz(0.107): no other constant transform."""
+    rows = [(0, 0, "0.333"), (0, "-pi/2", 0), (0, "pi/2", "0.316"), ("0.0825", "pi/2", 0),
+            ("-0.0825", "-pi/2", "0.384"), (0, "pi/2", 0), ("0.088", "pi/2", 0)]
+
+    def value(entry):
+        if entry in ("pi/2", "-pi/2"):
+            return pi / 2 if entry == "pi/2" else -pi / 2
+        return Rational(entry)
+
+    table = [(value(a), value(alpha), value(d), 0) for a, alpha, d in rows]
+    dh = Chain.from_dh(table, "modified", tool=Transform.translation([0, 0, Rational("0.107")]))
+    urdf = Chain.from_urdf(PANDA, base="panda_link0", tip="panda_link8", angles="pi/12")
+    assert urdf == dh
+    # and the check can fail: the exact reading of the decimals is close to it but not equal
+    exact = Chain.from_urdf(PANDA, base="panda_link0", tip="panda_link8")
+    assert exact != dh
+    assert max(abs(float(e)) for e in (exact.home.matrix - dh.home.matrix)) < 1e-15
+
+
+def test_hostile_xml_is_refused():
+    """defusedxml refuses entity declarations: an external entity (XXE) and a billion-laughs
+    bomb raise before anything is expanded or read."""
+    from defusedxml import DefusedXmlException
+
+    xxe = ('<?xml version="1.0"?><!DOCTYPE robot [<!ENTITY x SYSTEM "file:///etc/passwd">]>'
+           '<robot name="&x;"><link name="a"/></robot>')
+    lol = '<!ENTITY a0 "lol">' + "".join(
+        f'<!ENTITY a{i} "{("&a" + str(i - 1) + ";") * 10}">' for i in range(1, 10))
+    bomb = f'<?xml version="1.0"?><!DOCTYPE robot [{lol}]><robot name="&a9;"><link name="a"/></robot>'
+    for text in (xxe, bomb):
+        with pytest.raises(DefusedXmlException):
+            Chain.from_urdf(text)
+        with pytest.raises(DefusedXmlException):
+            read_inertials(text)
+
+
+def test_names_are_data_never_code():
+    """A robot, link or joint name with code in it stays a string: it reaches error messages and
+    read_inertials' records, never generated source (there is no code generation here, and the
+    chain holds only numbers: lambdify's source has no trace of the names)."""
+    evil = "x\"); __import__('os').system('echo pwned'); (\""
+    esc = evil.replace('"', "&quot;")
+    text = (f'<robot name="{esc}"><link name="{esc}"/><link name="b"/>'
+            f'<joint name="{esc}" type="revolute"><parent link="{esc}"/><child link="b"/></joint></robot>')
+    chain = Chain.from_urdf(text)
+    assert not any(isinstance(a, str) for a in chain.atoms())
+    q = symbols("q", real=True)
+    f = lambdify([q], chain.forward([q]).matrix, names=["q"])
+    assert "import" not in inspect.getsource(f) and "pwned" not in inspect.getsource(f)
+    assert read_inertials(text)[0].joint == evil
+    with pytest.raises(ValueError) as info:
+        Chain.from_urdf(text, tip="nope")
+    assert repr(evil) in str(info.value)
+
+
+def test_read_inertials_merges_and_moves_to_the_space_frame():
+    """Two links rigidly joined (one off the path) merge by Steiner's theorem; a massless link
+    adds nothing; com = T c, inertia = R I R^T in the space frame at home."""
+    inertial = ('<inertial><origin xyz="{c}" rpy="{rpy}"/><mass value="{m}"/>'
+                '<inertia ixx="{i[0]}" ixy="0" ixz="0" iyy="{i[1]}" iyz="0" izz="{i[2]}"/></inertial>')
+    links = (f'<link name="b">{inertial.format(c="0 0 1", rpy="0 0 0", m=1, i=(1, 2, 3))}</link>'
+             f'<link name="c">{inertial.format(c="1 0 0", rpy="0 0 1.5707963267948966", m=3, i=(1, 2, 3))}</link>'
+             '<link name="e"><inertial><mass value="0"/></inertial></link>')
+    names = "".join(f'<link name="{n}"/>' for n in "adf")
+    text = (f'<robot name="r">{names}{links}'
+            + joint("j1", "revolute", "a", "b", '<origin xyz="2 0 0" rpy="0 0 1.5707963267948966"/>')
+            + joint("fc", "fixed", "b", "c", '<origin xyz="0 0 1"/>')
+            + joint("fe", "fixed", "b", "e")
+            + joint("j2", "revolute", "b", "d") + joint("fd", "fixed", "d", "f") + "</robot>")
+    (body, last) = read_inertials(text, tip="f", angles="pi/12")
+    assert body.joint == "j1" and body.links == ("b", "c", "e") and body.mass == 4
+    # frames: b at (2,0,0) turned +90 deg about z; b's com (2,0,1); c's com: b + Rz (1,0,1) = (2,1,1)
+    assert body.com == ImmutableMatrix([2, Rational(3, 4), 1])
+    # b's inertia turned by Rz(90): diag(2,1,3); c's by Rz(180): diag(1,2,3); Steiner about the com
+    d_b, d_c = Matrix([0, -Rational(3, 4), 0]), Matrix([0, Rational(1, 4), 0])
+    steiner = sum((m * (d.dot(d) * Matrix.eye(3) - d * d.T) for m, d in ((1, d_b), (3, d_c))), Matrix.zeros(3, 3))
+    assert body.inertia == ImmutableMatrix(Matrix.diag(2, 1, 3) + Matrix.diag(1, 2, 3) + steiner)
+    assert last.joint == "j2" and last.mass == 0 and last.com == ImmutableMatrix([0, 0, 0])
+    with pytest.raises(ValueError, match=r"<link name='b'>: <inertial> <mass value>: expected a mass >= 0"):
+        read_inertials(text.replace('<mass value="1"/>', '<mass value="-1"/>'), tip="f")
+
+
+def test_the_doctest_robot_and_files():
+    twists, home = urdf_twists_and_home(TWO_LINK_URDF, angles="pi/12")
+    assert Chain(twists, home) == Chain.from_urdf(TWO_LINK_URDF, angles="pi/12")
+    assert Chain.from_urdf(str(PANDA), "panda_link0", "panda_link8", angles="pi/12") == \
+        Chain.from_urdf(PANDA.read_bytes(), "panda_link0", "panda_link8", angles="pi/12")
+
+
+def test_without_defusedxml_the_error_says_how_to_install(monkeypatch):
+    import sys
+
+    monkeypatch.setitem(sys.modules, "defusedxml.ElementTree", None)
+    with pytest.raises(ImportError, match=r'pip install -e "\.\[urdf\]"'):
+        Chain.from_urdf(TWO_LINK_URDF)
