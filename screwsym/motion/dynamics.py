@@ -3,23 +3,27 @@ r"""The dynamics of a serial chain in screw form: Newton–Euler, mass matrix, C
 Explanation
 ===========
 
-Everything is written in the space (base) frame, with the twists, wrenches
+Everything is written with the twists, wrenches
 and spatial inertias of :mod:`screwsym.core` in ray order: a twist
 ``(omega; v_O)``, a wrench ``(f; C_O)``, the ray-order inertia
 :attr:`~screwsym.core.inertia.SpatialInertia.matrix` ``M`` from twists to momenta.
-Link ``i`` is moved by joints ``1 .. i``; at the configuration ``q`` its pose
-is ``g_i = exp6($_1, q_1) ... exp6($_i, q_i)``, its current joint twist
-``xi_i = Ad(g_{i-1}) $_i`` (the space Jacobian's column) and its inertia
-``M_i(q)``, the home inertia carried by ``g_i``.  The recursive Newton–Euler
-algorithm of Park, Bobrow & Ploen (1995) in the space frame is then
+Link ``i`` is moved by joints ``1 .. i``.  Its frame ``{i}`` is the link-fixed
+frame that coincides with the space frame at home (``q = 0``), so that the
+chain's data need no other frames: link ``i``'s inertia ``M_i`` in ``{i}`` is
+its home inertia in the space frame (constant), joint ``i``'s twist in ``{i}``
+is its home twist ``$_i``, and ``{i}`` is posed in ``{i-1}`` by
+``E_i = exp6($_i, q_i)``.  The recursive Newton–Euler algorithm of Park,
+Bobrow & Ploen (1995) (Lynch & Park (8.50)-(8.53), with these frames) is
 
-    V_i = V_{i-1} + xi_i qd_i,                         V_0 = 0,
-    A_i = A_{i-1} + xi_i qdd_i + [V_{i-1}, xi_i] qd_i,  A_0 = (0; -gravity),
-    F_i = F_{i+1} + M_i A_i + [V_i, M_i V_i],          F_{n+1} = 0,
-    tau_i = xi_i o F_i,
+    V_i = Ad(E_i^-1) V_{i-1} + $_i qd_i,                        V_0 = 0,
+    A_i = Ad(E_i^-1) A_{i-1} + $_i qdd_i + [V_i, $_i] qd_i,    A_0 = (0; -gravity),
+    F_i = Ad(E_{i+1}) F_{i+1} + M_i A_i + [V_i, M_i V_i],      F_{n+1} = 0,
+    tau_i = $_i o F_i,
 
 with ``V_i`` the twist of link ``i`` and ``A_i = dV_i/dt`` its spatial
-acceleration, ``[V, s] = (omega x S; omega x S0 + v x S)`` the screw product,
+acceleration, both in ``{i}`` (in the space frame they are ``Ad(g_i)`` of
+these, ``g_i = E_1 ... E_i``: the same torques, since the reciprocal product is
+invariant (1.47)), ``[V, s] = (omega x S; omega x S0 + v x S)`` the screw product,
 the time derivative of a screw fixed in a body moving with ``V`` (twists and
 wrenches alike: both move with ``Ad`` in ray order), and ``o`` the reciprocal
 product (1.45).  Gravity is the base accelerating upward (``A_0``), as in
@@ -27,10 +31,11 @@ Lynch & Park and pinocchio; ``gravity`` is the gravitational acceleration,
 pointing down (``(0, 0, -g)``).
 
 The mass matrix is computed by composite rigid bodies (not from columns of
-the Newton–Euler algorithm): with ``M^c_i = M_i + ... + M_n`` (in the space
-frame, where inertias simply add),
+the Newton–Euler algorithm): with ``M^c_i`` the inertia of links ``i .. n``
+together, in ``{i}`` (``M^c_i = M_i + E_{i+1} . M^c_{i+1}``, the inertia carried
+by ``E_{i+1}``), and ``k = max(i, j)``,
 
-    H_ij = xi_i o (M^c_{max(i, j)} xi_j),
+    H_ij = $_i o (Ad(E_{i+1} ... E_k) M^c_k $_k),
 
 and the Coriolis matrix in the Christoffel form,
 ``C_ij = sum_k 1/2 (dH_ij/dq_k + dH_ik/dq_j - dH_jk/dq_i) qd_k``, for which
@@ -142,44 +147,39 @@ def _gravity(gravity: Any) -> ImmutableMatrix:
     return check_vector(GRAVITY if gravity is None else gravity, "gravity")
 
 
-class _Kinematics(NamedTuple):
-    """What the recursions share: the joint twists ``xi_i`` and the link poses ``g_i`` at ``q``."""
+def _carry(T: Transform, s: ImmutableMatrix) -> ImmutableMatrix:
+    """``Ad(T) s`` for a ray-order 6x1 column (twist or wrench alike), tidied."""
+    w, v = moved(T.R, T.p, s[:3, 0], s[3:, 0])
+    return tidy(ImmutableMatrix.vstack(w, v))
 
-    xi: list[ImmutableMatrix]
-    g: list[Transform]
 
-
-def _kinematics(twists: Sequence[Any], q: Sequence[Expr]) -> _Kinematics:
-    xi: list[ImmutableMatrix] = []
-    g: list[Transform] = []
-    T = Transform.identity()
-    for twist, qi in zip(twists, q, strict=True):
-        w, v = moved(T.R, T.p, twist.omega, twist.v_O)
-        xi.append(ImmutableMatrix.vstack(tidy(w), tidy(v)))
-        T = tidy(T @ exp6(twist, qi))
-        g.append(T)
-    return _Kinematics(xi, g)
+def _joint_motions(twists: Sequence[Any], q: Sequence[Expr]) -> list[Transform]:
+    """``exp6($_i, q_i)``: the pose of link ``i``'s frame in link ``i-1``'s (module docstring)."""
+    return [tidy(exp6(t, qi)) for t, qi in zip(twists, q, strict=True)]
 
 
 def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
           qd: Sequence[Expr], qdd: Sequence[Expr], gravity: ImmutableMatrix) -> ImmutableMatrix:
-    """The Newton–Euler recursion of the module docstring, on home-frame parameters."""
-    kin = _kinematics(twists, q)
+    """The Newton–Euler recursion of the module docstring, in the link frames ``{i}``."""
+    E = _joint_motions(twists, q)
+    xi = [t.matrix for t in twists]
     n = len(twists)
     V = zeros(6, 1)
     A = ImmutableMatrix.vstack(zeros(3, 1), -gravity)
     Vs, As = [], []
     for i in range(n):
-        A = tidy(A + kin.xi[i] * qdd[i] + _bracket(V, kin.xi[i]) * qd[i])
-        V = tidy(V + kin.xi[i] * qd[i])
+        back = E[i].inverse()
+        V = tidy(_carry(back, V) + xi[i] * qd[i])
+        A = tidy(_carry(back, A) + xi[i] * qdd[i] + _bracket(V, xi[i]) * qd[i])
         Vs.append(V)
         As.append(A)
     F = zeros(6, 1)
     tau: list[Expr] = [S.Zero] * n
     for i in reversed(range(n)):
-        M = spatial_matrix(*_moved_params(params[i], kin.g[i]))
+        M = spatial_matrix(*params[i])
+        F = _carry(E[i + 1], F) if i + 1 < n else F
         F = tidy(F + M * As[i] + _bracket(Vs[i], M * Vs[i]))
-        tau[i] = tidy(_reciprocal(kin.xi[i], F))
+        tau[i] = tidy(_reciprocal(xi[i], F))
     return ImmutableMatrix(tau)
 
 
@@ -212,7 +212,7 @@ def inverse_dynamics(chain: Chain, q: Any, qd: Any, qdd: Any,
 def gravity_torques(chain: Chain, q: Any, gravity: Any = None) -> ImmutableMatrix:
     r"""The torques that hold the chain still against gravity, ``g(q) = tau(q, 0, 0)``.
 
-    The gradient of the potential energy: below, a unit mass at ``x = 1`` turning about
+    The gradient of the potential energy: below, a mass 2 at ``x = 1`` turning about
     ``+y`` goes down as ``q`` grows, so holding it takes ``-20 cos(q)``.
 
     >>> from sympy import symbols
@@ -231,8 +231,8 @@ def gravity_torques(chain: Chain, q: Any, gravity: Any = None) -> ImmutableMatri
 def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
     r"""The joint-space mass matrix ``H(q)`` by composite rigid bodies: symmetric, n x n, tidied.
 
-    ``H_ij = xi_i o (M^c_k xi_j)`` with ``k = max(i, j)`` and ``M^c_k`` the
-    inertia of links ``k .. n`` together, in the space frame (Featherstone 2008,
+    ``H_ij = $_i o (Ad(E_{i+1} ... E_k) M^c_k $_k)`` with ``k = max(i, j)`` and ``M^c_k`` the
+    inertia of links ``k .. n`` together (module docstring; Featherstone 2008,
     Section 6.2, written with twists and the reciprocal product).  The kinetic
     energy is ``qd^T H qd / 2``.
 
@@ -252,17 +252,21 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
     inertias = _check_chain(chain)
     n = chain.n_joints
     q = _values(q, "q", n)
-    kin = _kinematics(chain.twists, q)
-    moved_params = [_moved_params(_params(b), T) for b, T in zip(inertias, kin.g, strict=True)]
+    E = _joint_motions(chain.twists, q)
+    xi = [t.matrix for t in chain.twists]
     H = [[S.Zero] * n for _ in range(n)]
-    m, h, I_O = S.Zero, zeros(3, 1), zeros(3, 3)
+    composite: _Params | None = None
     for k in reversed(range(n)):
-        P = moved_params[k]
-        m, h, I_O = m + P.m, tidy(h + P.h), tidy(I_O + P.I_O)
-        Mc = spatial_matrix(m, h, I_O)
-        W = tidy(Mc * kin.xi[k])
-        for i in range(k + 1):
-            H[i][k] = H[k][i] = tidy(_reciprocal(kin.xi[i], W))
+        P = _params(inertias[k])
+        if composite is not None:  # links k+1 .. n, carried into frame {k}
+            Q = _moved_params(composite, E[k + 1])
+            P = _Params(P.m + Q.m, tidy(P.h + Q.h), tidy(P.I_O + Q.I_O))
+        composite = P
+        W = tidy(spatial_matrix(*P) * xi[k])
+        for i in reversed(range(k + 1)):
+            if i < k:
+                W = _carry(E[i + 1], W)
+            H[i][k] = H[k][i] = tidy(_reciprocal(xi[i], W))
     return ImmutableMatrix(H)
 
 
