@@ -257,6 +257,14 @@ class Chain(ScrewsymBasic):
             columns.reverse()
         return ImmutableMatrix.hstack(*columns)
 
+    def _eval_evalf_parts(self, n: int = 15, **options: Any) -> Chain:
+        """The chain with every number a float: ``chain.evalf()`` (numeric work is faster on it)."""
+        parts = [Tuple(*(t.evalf(n, **options) for t in self.args[0])),
+                 self.home.evalf(n, **options)]
+        if self.inertias is not None:
+            parts.append(Tuple(*(b.evalf(n, **options) for b in self.inertias)))
+        return ScrewsymBasic.__new__(type(self), *parts)
+
     # ---------------------------------------------------------------- dynamics
     def inverse_dynamics(self, q: JointValues, qd: JointValues, qdd: JointValues,
                          gravity: Any = None) -> ImmutableMatrix:

@@ -247,7 +247,7 @@ def _inertia_from_matrix(value: MatrixLike, c: Convention) -> SpatialInertia:
     Pf, Pm = _inertia_layout(c)
     M = ImmutableMatrix(Pf.T * X * Pm)  # ray order: [[-[h]x, m 1], [I_O, [h]x]]
     m = M[0, 3]
-    h = ImmutableMatrix([M[5, 1], M[3, 2], M[4, 0]])
+    h = ImmutableMatrix([M[5, 4], M[3, 5], M[4, 3]])
     expected = ImmutableMatrix(
         (-cross_matrix(h)).row_join(ImmutableMatrix.eye(3) * m).col_join(
             M[3:, :3].row_join(cross_matrix(h))
