@@ -6,8 +6,8 @@ Li & Sastry).  A sibling of :mod:`screwsym.systems`: neither imports the other.
 
 from .chain import Chain, ur5
 from .conventions import CONVENTIONS, Convention, convert, convert_from
-from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
 from .displacement import exp6, log6, se3_matrix
+from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
 from .transform import Transform, adjoint_matrix, skew
 
 __all__ = [

@@ -77,7 +77,7 @@ equal to ``p`` by ``R R^T = I`` (``Transform.equals`` decides it).
 
 from __future__ import annotations
 
-from typing import NamedTuple, TypeVar, overload
+from typing import NamedTuple, TypeVar, cast, overload
 
 from sympy import ImmutableMatrix
 
@@ -238,7 +238,7 @@ def convert_from(value: SixVectorLike | MatrixLike, source: str,
         return _inertia_from_matrix(value, c)
     first, second = check_six(value, "value")
     swap = c.force_moment_first if kind is Wrench else not c.motion_angular_first
-    return kind.from_matrix(_swap(first, second, swap), name="value")
+    return cast("type[Screw]", kind).from_matrix(_swap(first, second, swap), name="value")
 
 
 def _inertia_from_matrix(value: MatrixLike, c: Convention) -> SpatialInertia:

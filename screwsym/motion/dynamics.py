@@ -48,7 +48,8 @@ space frame at home (the inertia about the space origin, at ``q = 0``).
 
 All results are exact SymPy expressions, tidied as the kinematics are
 (:func:`screwsym.core.tidy.tidy` on each intermediate twist, wrench and
-entry; no ``simplify``).  For numbers over many states, pass them to
+inertia up to ``INTERMEDIATE_SIZE`` nodes, and on each final entry; no
+``simplify``).  For numbers over many states, pass them to
 :func:`screwsym.lambdify`, or use :mod:`screwsym.numeric.dynamics`.
 
 References
@@ -88,6 +89,22 @@ __all__ = [
     "GRAVITY",
 ]
 
+#: intermediate twists, wrenches and inertias are tidied up to this many nodes, and without
+#: gathering sums of angles (the final torques and entries fully, up to tidy's own limit):
+#: the recursions nest, and tidying large intermediate sums costs more than it saves
+INTERMEDIATE_SIZE = 300
+
+
+def _step(x: Any, angles: bool = False) -> Any:
+    """``tidy`` for the recursions' intermediate results (see ``INTERMEDIATE_SIZE``).
+
+    Newton–Euler's twists and wrenches are tidied without gathering sums of angles (on
+    the UR5: 15 s instead of 50 s), the composite inertias with it (10 s instead of 27 s:
+    they stay small enough to gain from it).
+    """
+    return tidy(x, max_size=INTERMEDIATE_SIZE, sum_of_angles=angles)
+
+
 #: the default gravitational acceleration ``(0, 0, -g)``, with ``g`` a positive symbol
 GRAVITY = (S.Zero, S.Zero, -Symbol("g", positive=True))
 
@@ -104,14 +121,14 @@ def _params(body: SpatialInertia) -> _Params:
     return _Params(body.mass, body.first_moment, body.inertia_about([0, 0, 0]))
 
 
-def _moved_params(P: _Params, T: Transform) -> _Params:
+def _moved_params(P: _Params, T: Transform, angles: bool = False) -> _Params:
     """The parameters carried by ``T = (R, p)``: ``h' = R h + m p``,
     ``I_O' = R I_O R^T - [R h]x [p]x - [p]x [R h]x - m [p]x^2`` (linear in the parameters)."""
     R, p = T.R, T.p
     Rh = R * P.h
     X, Y = cross_matrix(Rh), cross_matrix(p)
     I_O = R * P.I_O * R.T - X * Y - Y * X - P.m * Y * Y
-    return _Params(P.m, tidy(Rh + P.m * p), tidy(I_O))
+    return _Params(P.m, _step(Rh + P.m * p, angles), _step(I_O, angles))
 
 
 def _bracket(V: ImmutableMatrix, s: ImmutableMatrix) -> ImmutableMatrix:
@@ -147,15 +164,15 @@ def _gravity(gravity: Any) -> ImmutableMatrix:
     return check_vector(GRAVITY if gravity is None else gravity, "gravity")
 
 
-def _carry(T: Transform, s: ImmutableMatrix) -> ImmutableMatrix:
+def _carry(T: Transform, s: ImmutableMatrix, angles: bool = False) -> ImmutableMatrix:
     """``Ad(T) s`` for a ray-order 6x1 column (twist or wrench alike), tidied."""
     w, v = moved(T.R, T.p, s[:3, 0], s[3:, 0])
-    return tidy(ImmutableMatrix.vstack(w, v))
+    return _step(ImmutableMatrix.vstack(w, v), angles)
 
 
 def _joint_motions(twists: Sequence[Any], q: Sequence[Expr]) -> list[Transform]:
     """``exp6($_i, q_i)``: the pose of link ``i``'s frame in link ``i-1``'s (module docstring)."""
-    return [tidy(exp6(t, qi)) for t, qi in zip(twists, q, strict=True)]
+    return [_step(exp6(t, qi)) for t, qi in zip(twists, q, strict=True)]
 
 
 def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
@@ -169,8 +186,8 @@ def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
     Vs, As = [], []
     for i in range(n):
         back = E[i].inverse()
-        V = tidy(_carry(back, V) + xi[i] * qd[i])
-        A = tidy(_carry(back, A) + xi[i] * qdd[i] + _bracket(V, xi[i]) * qd[i])
+        V = _step(_carry(back, V) + xi[i] * qd[i])
+        A = _step(_carry(back, A) + xi[i] * qdd[i] + _bracket(V, xi[i]) * qd[i])
         Vs.append(V)
         As.append(A)
     F = zeros(6, 1)
@@ -178,7 +195,7 @@ def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
     for i in reversed(range(n)):
         M = spatial_matrix(*params[i])
         F = _carry(E[i + 1], F) if i + 1 < n else F
-        F = tidy(F + M * As[i] + _bracket(Vs[i], M * Vs[i]))
+        F = _step(F + M * As[i] + _bracket(Vs[i], M * Vs[i]))
         tau[i] = tidy(_reciprocal(xi[i], F))
     return ImmutableMatrix(tau)
 
@@ -252,20 +269,20 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
     inertias = _check_chain(chain)
     n = chain.n_joints
     q = _values(q, "q", n)
-    E = _joint_motions(chain.twists, q)
+    E = [tidy(exp6(t, qi)) for t, qi in zip(chain.twists, q, strict=True)]
     xi = [t.matrix for t in chain.twists]
     H = [[S.Zero] * n for _ in range(n)]
     composite: _Params | None = None
     for k in reversed(range(n)):
         P = _params(inertias[k])
         if composite is not None:  # links k+1 .. n, carried into frame {k}
-            Q = _moved_params(composite, E[k + 1])
-            P = _Params(P.m + Q.m, tidy(P.h + Q.h), tidy(P.I_O + Q.I_O))
+            Q = _moved_params(composite, E[k + 1], angles=True)
+            P = _Params(P.m + Q.m, _step(P.h + Q.h, True), _step(P.I_O + Q.I_O, True))
         composite = P
-        W = tidy(spatial_matrix(*P) * xi[k])
+        W = _step(spatial_matrix(*P) * xi[k], True)
         for i in reversed(range(k + 1)):
             if i < k:
-                W = _carry(E[i + 1], W)
+                W = _carry(E[i + 1], W, angles=True)
             H[i][k] = H[k][i] = tidy(_reciprocal(xi[i], W))
     return ImmutableMatrix(H)
 

@@ -329,3 +329,16 @@ def test_tidy_on_a_screw_system_keeps_its_class():
     assert type(tidied) is ScrewSystem
     assert tidied.args[0] == Screw([1, 0, 0], [0, x, 0])
     assert tidied.func(*tidied.args) == tidied
+
+
+def test_sum_of_angles_can_be_left_out():
+    from sympy import cos, sin, symbols
+
+    from screwsym import tidy
+
+    a, b = symbols("a b", real=True)
+    e = cos(a) * cos(b) - sin(a) * sin(b) + sin(a) ** 2 + cos(a) ** 2
+    assert tidy(e) == cos(a + b) + 1
+    assert tidy(e, sum_of_angles=False) == cos(a) * cos(b) - sin(a) * sin(b) + 1
+    with pytest.raises(TypeError, match="sum_of_angles: expected True or False"):
+        tidy(e, sum_of_angles=1)

@@ -95,7 +95,7 @@ def test_mdot_minus_2c_is_skew_symmetric_on_a_spatial_3r_arm():
                   SpatialInertia(1, [1, Rational(1, 3), 1], ImmutableMatrix.diag(1, 1, 1))],
     )
     H, C = arm.mass_matrix(q), arm.coriolis_matrix(q, qd)
-    Hdot = sum((H.diff(qk) * uk for qk, uk in zip(q, qd)), zeros(3, 3))
+    Hdot = sum((H.diff(qk) * uk for qk, uk in zip(q, qd, strict=True)), zeros(3, 3))
     N = Hdot - 2 * C
     assert _zero(N + N.T)
     # N itself is not zero (the property is not vacuous), nor symmetric
