@@ -287,7 +287,8 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
     return ImmutableMatrix(H)
 
 
-def coriolis_matrix(chain: Chain, q: Any, qd: Any) -> ImmutableMatrix:
+def coriolis_matrix(chain: Chain, q: Any, qd: Any, *,
+                    mass_matrix: ImmutableMatrix | None = None) -> ImmutableMatrix:
     r"""The Coriolis matrix ``C(q, qd)`` in the Christoffel form, n x n, tidied.
 
     ``C_ij = sum_k c_ijk qd_k`` with the Christoffel symbols
@@ -296,7 +297,8 @@ def coriolis_matrix(chain: Chain, q: Any, qd: Any) -> ImmutableMatrix:
     ``dH/dt - 2 C`` is skew-symmetric (Spong, Hutchinson & Vidyasagar, *Robot
     Modeling and Control*, 2006, Section 7.3, Property 7.1.1 and (7.51)).  The derivatives
     are taken at symbolic joint values and ``q`` substituted after, so ``q``
-    may be numbers.
+    may be numbers.  ``mass_matrix=H`` passes ``H(q)`` already computed at the
+    distinct symbols ``q`` (so it is not computed again).
 
     >>> from sympy import symbols
     >>> from screwsym import Chain, Twist
@@ -315,8 +317,14 @@ def coriolis_matrix(chain: Chain, q: Any, qd: Any) -> ImmutableMatrix:
     n = chain.n_joints
     q = _values(q, "q", n)
     qd = _values(qd, "qd", n)
-    x = [Dummy(f"q{i}", real=True) for i in range(n)]
-    H = mass_matrix(chain, x)
+    if mass_matrix is not None:
+        if not all(isinstance(v, Symbol) for v in q) or len(set(q)) != n:
+            raise ValueError("q: with mass_matrix=, expected the distinct symbols it is a function of")
+        x: list[Any] = list(q)
+        H = mass_matrix
+    else:
+        x = [Dummy(f"q{i}", real=True) for i in range(n)]
+        H = _mass_matrix(chain, x)
     dH = [H.diff(xk) for xk in x]
     C = [[S.Zero] * n for _ in range(n)]
     for i in range(n):
@@ -325,6 +333,9 @@ def coriolis_matrix(chain: Chain, q: Any, qd: Any) -> ImmutableMatrix:
                 ((dH[k][i, j] + dH[j][i, k] - dH[i][j, k]) * qd[k] for k in range(n)), S.Zero
             ) / 2
     return tidy(ImmutableMatrix(C).xreplace(dict(zip(x, q, strict=True))))
+
+
+_mass_matrix = mass_matrix
 
 
 def regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None) -> ImmutableMatrix:
