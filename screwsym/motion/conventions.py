@@ -190,7 +190,7 @@ def convert(obj: Screw | Transform | SpatialInertia, to: str) -> ImmutableMatrix
     if isinstance(obj, Screw):
         return _swap(obj.S, obj.S0, not c.motion_angular_first)
     raise TypeError(
-        "obj: expected a Twist, Wrench, LineVector, Screw, Transform or SpatialInertia, "
+        "obj: expected a Twist, Wrench, LineVector, Screw or Transform (or a SpatialInertia), "
         f"got {type(obj).__name__}"
     )
 
