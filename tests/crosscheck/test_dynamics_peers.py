@@ -28,7 +28,7 @@ from screwsym import SpatialInertia, convert, convert_from
 mr = pytest.importorskip("modern_robotics")
 
 GRAVITY = np.array([0.0, 0.0, -9.81])
-N_DEFAULT = 12  # the first cases run by default; all 200 with --slow
+N_DEFAULT = 6  # the first cases run by default; all 200 with --slow
 
 
 def _f(x) -> list[Float]:
