@@ -5,6 +5,7 @@ This floor imports nothing of screwsym above it.  Its public modules:
 - :mod:`~screwsym.core.screw`: :class:`Screw` and the operations every kind shares;
 - :mod:`~screwsym.core.line`, :mod:`~screwsym.core.twist`, :mod:`~screwsym.core.wrench`:
   the three kinds of screw (line vector, twist, wrench);
+- :mod:`~screwsym.core.inertia`: :class:`SpatialInertia`, a body's map from twists to momenta;
 - :mod:`~screwsym.core.vectors`, :mod:`~screwsym.core.tidy`, :mod:`~screwsym.core.printing`;
 - :mod:`~screwsym.core.formulas`: the formulas the floors share (foot point, pitch,
   axis to screw, a screw moved by a rigid motion, the half swap), each written once;
@@ -14,6 +15,7 @@ This floor imports nothing of screwsym above it.  Its public modules:
   floors above build on.
 """
 
+from .inertia import SpatialInertia
 from .line import CommonNormal, LineVector, common_normal, contains, is_coplanar, mutual_moment
 from .screw import (
     Screw,
@@ -39,6 +41,7 @@ __all__ = [
     "LineVector",
     "Twist",
     "Wrench",
+    "SpatialInertia",
     "CommonNormal",
     "vector",
     "pitch",

@@ -89,7 +89,7 @@ FACTOR_SIZE = 40
 _T = TypeVar("_T")
 
 
-def tidy(expr: _T, *, max_size: int = MAX_SIZE) -> _T:
+def tidy(expr: _T, *, max_size: int = MAX_SIZE, sum_of_angles: bool = True) -> _T:
     r"""Bring ``expr`` to lowest terms and a compact form, without ``simplify``.
 
     Explanation
@@ -136,6 +136,11 @@ def tidy(expr: _T, *, max_size: int = MAX_SIZE) -> _T:
     expr : Expr, Matrix, screwsym object, or a tuple or list of these
     max_size : int
         Expressions with more nodes than this come back unchanged.
+    sum_of_angles : bool
+        Also try gathering products of sines and cosines into sines and cosines
+        of sums (SymPy's ``TR10i``; default True).  It is the dearest rewrite: a
+        recursion that tidies many intermediate results and only its final ones
+        for a reader (the dynamics of a chain) passes False for the former.
 
     See Also
     ========
@@ -143,28 +148,30 @@ def tidy(expr: _T, *, max_size: int = MAX_SIZE) -> _T:
     sympy.polys.polytools.cancel, sympy.core.exprtools.factor_terms
     """
     check_tidy_input(expr, "expr")
-    return _tidy_any(expr, check_count(max_size, "max_size"))
+    if not isinstance(sum_of_angles, bool):
+        raise TypeError(f"sum_of_angles: expected True or False, got {type(sum_of_angles).__name__}")
+    return _tidy_any(expr, check_count(max_size, "max_size"), sum_of_angles)
 
 
-def _tidy_any(obj: Any, limit: int) -> Any:
+def _tidy_any(obj: Any, limit: int, angles: bool = True) -> Any:
     if isinstance(obj, Expr) and not isinstance(obj, MatrixBase):
-        return _tidy_expr(obj, limit)
+        return _tidy_expr(obj, limit, angles)
     if isinstance(obj, MatrixBase):
-        return obj.applyfunc(lambda e: _tidy_expr(e, limit))
+        return obj.applyfunc(lambda e: _tidy_expr(e, limit, angles))
     if isinstance(obj, ScrewsymBasic):
-        args = tuple(_tidy_any(a, limit) for a in obj.args)
+        args = tuple(_tidy_any(a, limit, angles) for a in obj.args)
         if args == obj.args:
             return obj
         # Every part is equal to the one it replaces, so the object's invariants (a line
         # vector's S.S0 = 0, ...) still hold: rebuild without validating again.
         return Basic.__new__(type(obj), *args)
     if isinstance(obj, Tuple):  # SymPy's tuple, as in the args of a chain
-        args = tuple(_tidy_any(a, limit) for a in obj.args)
+        args = tuple(_tidy_any(a, limit, angles) for a in obj.args)
         return obj if args == obj.args else Tuple(*args)
     if isinstance(obj, list):
-        return [_tidy_any(o, limit) for o in obj]
+        return [_tidy_any(o, limit, angles) for o in obj]
     if isinstance(obj, tuple) and not hasattr(obj, "_fields"):
-        return tuple(_tidy_any(o, limit) for o in obj)
+        return tuple(_tidy_any(o, limit, angles) for o in obj)
     return obj  # numbers, booleans, named tuples and other Basic objects: as they are
 
 
@@ -181,12 +188,13 @@ def _size(e: Basic, limit: int) -> int:
     return n
 
 
-def _tidy_expr(e: Expr, limit: int) -> Expr:
-    if e.is_Atom or not e.free_symbols or e.has(Float):
+def _tidy_expr(e: Expr, limit: int, angles: bool = True) -> Expr:
+    # the size first: it stops counting at the limit, where free_symbols and has walk it all
+    if e.is_Atom or _size(e, limit) > limit:
         return e
-    if _size(e, limit) > limit or _expanded_terms(e, limit) > limit:
+    if _expanded_terms(e, limit) > limit or not e.free_symbols or e.has(Float):
         return e
-    return _rewrite(e)
+    return _rewrite(e, angles)
 
 
 def _expanded_terms(e: Basic, limit: int) -> int:
@@ -214,7 +222,7 @@ def _expanded_terms(e: Basic, limit: int) -> int:
 
 
 @cacheit
-def _rewrite(e: Expr) -> Expr:
+def _rewrite(e: Expr, angles: bool = True) -> Expr:
     """The smallest of the cheap rewrites of ``e`` (its inner functions tidied first)."""
     e = _inside(e)
     if not isinstance(e, (Add, Mul, Pow)):
@@ -248,7 +256,7 @@ def _rewrite(e: Expr) -> Expr:
     except (PolynomialError, GeneratorsError, CoercionFailed):  # pragma: no cover
         return _smallest(candidates)  # a form the polynomial rings refuse
     candidates += [x.xreplace(thaw) for x in forms]
-    if not rational and relations:
+    if not rational and relations and angles:
         candidates.append(_sum_of_angles(e))
     return _smallest(candidates)
 

@@ -1,4 +1,4 @@
-r"""Rigid motions, SE(3): transforms, exp6/log6 of twists, serial chains, conventions.
+r"""Rigid motions, SE(3): transforms, exp6/log6 of twists, serial chains, their dynamics, conventions.
 
 Built on :mod:`screwsym.core` alone (Lynch & Park, *Modern Robotics*; Murray,
 Li & Sastry).  A sibling of :mod:`screwsym.systems`: neither imports the other.
@@ -7,6 +7,7 @@ Li & Sastry).  A sibling of :mod:`screwsym.systems`: neither imports the other.
 from .chain import Chain, ur5
 from .conventions import CONVENTIONS, Convention, convert, convert_from
 from .displacement import exp6, log6, se3_matrix
+from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
 from .transform import Transform, adjoint_matrix, skew
 
 __all__ = [
@@ -18,6 +19,11 @@ __all__ = [
     "se3_matrix",
     "Chain",
     "ur5",
+    "inverse_dynamics",
+    "mass_matrix",
+    "coriolis_matrix",
+    "gravity_torques",
+    "regressor",
     "convert",
     "convert_from",
     "CONVENTIONS",

@@ -48,19 +48,22 @@ from sympy.matrices import MatrixBase
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_choice,
+    check_flag,
     check_instance,
     check_scalar,
     check_sequence,
 )
 from ..core.decide import is_zero_vector
 from ..core.formulas import moved
+from ..core.inertia import SpatialInertia
 from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from . import dynamics as _dynamics
 from .dh import dh_twists_and_home
 from .displacement import exp6
 from .transform import Transform
-from .urdf import urdf_twists_and_home
+from .urdf import read_inertials, urdf_twists_and_home
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -128,6 +131,16 @@ class Chain(ScrewsymBasic):
         The joint twists at the home configuration, in the space frame.
     home : Transform, optional
         The end frame's pose at home (default the identity).
+    inertias : sequence of SpatialInertia, optional
+        One per link (link ``i`` is the body moved by joints ``1 .. i``), each in
+        the SPACE frame at the home configuration ``q = 0``; needed by the
+        dynamics (:meth:`inverse_dynamics`, :meth:`mass_matrix`, ...).  Without
+        them the chain is purely kinematic, ``args == (twists, home)``; with them
+        ``args == (twists, home, inertias)``.
+    link_frames : sequence of Transform, optional
+        When given, ``inertias[i]`` is expressed in link ``i``'s own frame, whose
+        pose at home in the space frame is ``link_frames[i]`` (as Modern Robotics'
+        ``M_0i``); each is carried to the space frame, ``link_frames[i].apply(inertias[i])``.
 
     See Also
     ========
@@ -137,7 +150,9 @@ class Chain(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, twists: Sequence[ScrewLike], home: Transform | None = None) -> Self:
+    def __new__(cls, twists: Sequence[ScrewLike], home: Transform | None = None,
+                inertias: Sequence[SpatialInertia] | None = None, *,
+                link_frames: Sequence[Transform] | None = None) -> Self:
         twists = check_sequence(twists, "twists", "twists")
         if len(twists) == 0:
             raise ValueError("twists: expected at least one joint twist, got none")
@@ -146,7 +161,19 @@ class Chain(ScrewsymBasic):
             if is_zero_vector(t.matrix) is True:
                 raise ValueError(f"twists[{i}]: a joint twist cannot be zero, got {t}")
         home = Transform.identity() if home is None else check_instance(home, "home", Transform)
-        return ScrewsymBasic.__new__(cls, joints, home)
+        if inertias is None:
+            if link_frames is not None:
+                raise ValueError("link_frames: given without inertias")
+            return ScrewsymBasic.__new__(cls, joints, home)
+        bodies = check_sequence(inertias, "inertias", "spatial inertias", len(joints))
+        bodies = [check_instance(b, f"inertias[{i}]", SpatialInertia) for i, b in enumerate(bodies)]
+        if link_frames is not None:
+            frames = check_sequence(link_frames, "link_frames", "transforms", len(joints))
+            bodies = [
+                check_instance(T, f"link_frames[{i}]", Transform).apply(b)
+                for i, (T, b) in enumerate(zip(frames, bodies, strict=True))
+            ]
+        return ScrewsymBasic.__new__(cls, joints, home, Tuple(*bodies))
 
     @classmethod
     def from_dh(cls, rows: Sequence[Sequence[ScalarLike]], convention: str = "standard",
@@ -169,7 +196,8 @@ class Chain(ScrewsymBasic):
 
     @classmethod
     def from_urdf(cls, source: Any, base: str | None = None, tip: str | None = None, *,
-                  angles: str = "exact", angle_tol: ScalarLike | None = None) -> Chain:
+                  angles: str = "exact", angle_tol: ScalarLike | None = None,
+                  inertias: bool = False) -> Chain:
         r"""The chain of the serial path from link ``base`` to link ``tip`` of a URDF robot.
 
         ``source`` is a file path or the XML text.  Numbers are read exactly
@@ -177,9 +205,41 @@ class Chain(ScrewsymBasic):
         angles within ``angle_tol`` (default ``10**-9``) of a multiple of pi/12 to that multiple.
         Needs ``defusedxml`` (``pip install -e ".[urdf]"``).  See
         :func:`screwsym.motion.urdf.urdf_twists_and_home` for the rules and the errors.
+
+        With ``inertias=True`` the chain also carries each moving body's
+        :class:`~screwsym.core.inertia.SpatialInertia`, in the space frame at
+        home (:func:`screwsym.motion.urdf.read_inertials`), for the dynamics;
+        a moving body without mass, or with an inertia that is provably not
+        physical, is then an error naming its joint.  By default
+        (``inertias=False``) the kinematics alone are read, since many URDF
+        files leave links without mass.
+
+        >>> from screwsym.motion.urdf import TWO_LINK_URDF
+        >>> Chain.from_urdf(TWO_LINK_URDF, angles="pi/12").n_joints
+        2
+        >>> Chain.from_urdf(TWO_LINK_URDF, angles="pi/12", inertias=True)
+        Traceback (most recent call last):
+        ...
+        ValueError: source: the body moved by joint 'shoulder' (upper) has no mass; pass inertias=False to read the kinematics alone
         """
         twists, home = urdf_twists_and_home(source, base, tip, angles=angles, angle_tol=angle_tol)
-        return cls(twists, home)
+        if not check_flag(inertias, "inertias"):
+            return cls(twists, home)
+        bodies = []
+        for body in read_inertials(source, base, tip, angles=angles, angle_tol=angle_tol):
+            if body.mass == 0:
+                raise ValueError(
+                    f"source: the body moved by joint {body.joint!r} ({', '.join(body.links)}) "
+                    "has no mass; pass inertias=False to read the kinematics alone"
+                )
+            try:
+                bodies.append(SpatialInertia(body.mass, body.com, body.inertia))
+            except ValueError as exc:
+                raise ValueError(
+                    f"source: the inertia of the body moved by joint {body.joint!r}: {exc} "
+                    "(inertias=False reads the kinematics alone)"
+                ) from None
+        return cls(twists, home, bodies)
 
     @property
     def twists(self) -> tuple[Twist, ...]:
@@ -190,6 +250,11 @@ class Chain(ScrewsymBasic):
     def home(self) -> Transform:
         """The end frame's pose at the home configuration."""
         return self.args[1]
+
+    @property
+    def inertias(self) -> tuple[SpatialInertia, ...] | None:
+        """The links' spatial inertias, in the space frame at home, or None for a kinematic chain."""
+        return tuple(self.args[2]) if len(self.args) > 2 else None
 
     @property
     def n_joints(self) -> int:
@@ -261,9 +326,43 @@ class Chain(ScrewsymBasic):
             columns.reverse()
         return ImmutableMatrix.hstack(*columns)
 
+    def _eval_evalf_parts(self, n: int = 15, **options: Any) -> Chain:
+        """The chain with every number a float: ``chain.evalf()`` (numeric work is faster on it)."""
+        parts = [Tuple(*(t.evalf(n, **options) for t in self.args[0])),
+                 self.home.evalf(n, **options)]
+        if self.inertias is not None:
+            parts.append(Tuple(*(b.evalf(n, **options) for b in self.inertias)))
+        return ScrewsymBasic.__new__(type(self), *parts)
+
+    # ---------------------------------------------------------------- dynamics
+    def inverse_dynamics(self, q: JointValues, qd: JointValues, qdd: JointValues,
+                         gravity: Any = None) -> ImmutableMatrix:
+        """The joint torques by Newton–Euler: :func:`screwsym.motion.dynamics.inverse_dynamics`."""
+        return _dynamics.inverse_dynamics(self, q, qd, qdd, gravity)
+
+    def mass_matrix(self, q: JointValues) -> ImmutableMatrix:
+        """The mass matrix by composite rigid bodies: :func:`screwsym.motion.dynamics.mass_matrix`."""
+        return _dynamics.mass_matrix(self, q)
+
+    def coriolis_matrix(self, q: JointValues, qd: JointValues) -> ImmutableMatrix:
+        """The Christoffel-form Coriolis matrix: :func:`screwsym.motion.dynamics.coriolis_matrix`."""
+        return _dynamics.coriolis_matrix(self, q, qd)
+
+    def gravity_torques(self, q: JointValues, gravity: Any = None) -> ImmutableMatrix:
+        """The gravity torques: :func:`screwsym.motion.dynamics.gravity_torques`."""
+        return _dynamics.gravity_torques(self, q, gravity)
+
+    def regressor(self, q: JointValues, qd: JointValues, qdd: JointValues,
+                  gravity: Any = None) -> ImmutableMatrix:
+        """The torques' regressor in the inertial parameters: :func:`screwsym.motion.dynamics.regressor`."""
+        return _dynamics.regressor(self, q, qd, qdd, gravity)
+
     def _sympystr(self, printer: Any) -> str:
         twists = ", ".join(printer._print(t) for t in self.twists)
-        return f"Chain([{twists}], {printer._print(self.home)})"
+        if self.inertias is None:
+            return f"Chain([{twists}], {printer._print(self.home)})"
+        bodies = ", ".join(printer._print(b) for b in self.inertias)
+        return f"Chain([{twists}], {printer._print(self.home)}, inertias=[{bodies}])"
 
 
 def ur5() -> Chain:

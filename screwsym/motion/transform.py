@@ -56,6 +56,7 @@ from ..core.decide import (
     norm,
 )
 from ..core.formulas import moved
+from ..core.inertia import SpatialInertia
 from ..core.screw import MatrixLike, ScalarLike, Screw, VectorLike
 from ..core.tidy import tidy
 
@@ -430,12 +431,14 @@ class Transform(ScrewsymBasic):
     @overload
     def apply(self, obj: Transform, *, direction: bool = False) -> Transform: ...
     @overload
+    def apply(self, obj: SpatialInertia, *, direction: bool = False) -> SpatialInertia: ...
+    @overload
     def apply(self, obj: _S, *, direction: bool = False) -> _S: ...
     @overload
     def apply(self, obj: VectorLike, *, direction: bool = False) -> ImmutableMatrix: ...
 
-    def apply(self, obj: Transform | Screw | VectorLike, *,
-              direction: bool = False) -> Transform | Screw | ImmutableMatrix:
+    def apply(self, obj: Transform | Screw | SpatialInertia | VectorLike, *,
+              direction: bool = False) -> Transform | Screw | SpatialInertia | ImmutableMatrix:
         r"""Carry ``obj`` by the motion: a point, a direction, or any screw.
 
         * a 3-vector is a point, ``R x + p`` (a 3x1 matrix back), or with
@@ -443,6 +446,9 @@ class Transform(ScrewsymBasic):
         * a :class:`~screwsym.core.screw.Screw` (a line vector, twist or wrench, or
           a general screw) comes back as the same kind, ``Ad(T) [S; S0]``:
           ``(R S; R S0 + p x R S)``;
+        * a :class:`~screwsym.core.inertia.SpatialInertia` is carried as a body:
+          its centre of mass ``R c + p``, its inertia ``R I R^T``; its 6x6 matrix
+          is then ``Ad(T) M Ad(T)^-1`` (see :mod:`screwsym.core.inertia`);
         * a :class:`Transform` ``X`` is composed, ``T @ X``.
 
         A bare 6-vector is refused: say what it is with ``Screw.from_matrix``
@@ -464,6 +470,8 @@ class Transform(ScrewsymBasic):
             return self @ obj
         if isinstance(obj, Screw):
             return tidy(type(obj)(*moved(self.R, self.p, obj.S, obj.S0)))
+        if isinstance(obj, SpatialInertia):
+            return obj.transformed(self.R, self.p)
         x = check_point_or_direction(obj, "obj")
         return ImmutableMatrix(self.R * x) if direction else ImmutableMatrix(self.R * x + self.p)
 

@@ -447,9 +447,10 @@ def read_inertials(source: Any, base: str | None = None, tip: str | None = None,
 
     One :class:`LinkInertial` per moving joint of ``Chain.from_urdf``'s
     chain, in the same order: the body is the joint's child link together with
-    every link attached to it through ``fixed`` joints (on the path or off it;
-    links behind another moving joint off the path, such as the Panda's
-    fingers, are not part of it).  A link's ``<inertial>`` gives its mass
+    every link attached to it through ``fixed`` joints (on the path or off it)
+    and every link behind a joint off the path, locked at that joint's zero
+    position (the Panda's fingers are part of its last body, as in pinocchio's
+    model with those joints at zero and at rest).  A link's ``<inertial>`` gives its mass
     ``m``, its centre of mass ``c`` (the inertial origin) and its inertia
     ``I`` about ``c`` in the inertial frame; in the space frame at home these are
     ``c_s = T c`` and ``I_s = R I R^T`` (``T`` the inertial frame at home, ``R`` its
@@ -484,18 +485,20 @@ def read_inertials(source: Any, base: str | None = None, tip: str | None = None,
     robot = _Robot(source)
     base, tip, joints = robot.path(base, tip)
     frames = dict((j.name, T) for j, T in _walk(robot, joints, policy))
+    on_path = {j.name for j in joints}
     out = []
     for joint in joints:
         if joint.type not in _MOVING:
             continue
-        # the body: the child link and every link below it through fixed joints
+        # the body: the child link and every link below it through fixed joints and through
+        # joints off the path (locked at their zero position: the Panda's fingers)
         parts: list[tuple[str, Transform]] = []
         stack = [(joint.child, frames[joint.name])]
         while stack:
             link, T = stack.pop()
             parts.append((link, T))
             for j in robot.child_joints.get(link, []):
-                if j.type == "fixed":
+                if j.type == "fixed" or j.name not in on_path:
                     stack.append((j.child, tidy(T @ _origin(j.element, f"<joint name={j.name!r}>", policy))))
         parts.sort(key=lambda part: list(robot.links).index(part[0]))
         pieces = [p for p in (_link_inertial(robot, link, T, policy) for link, T in parts) if p is not None]

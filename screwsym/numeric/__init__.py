@@ -3,18 +3,23 @@ r"""Floats: the chapter's operations generated as vectorised functions, and nume
 - :mod:`~screwsym.numeric.screws`: ``pitch``, ``foot``, ``reciprocal_product``, ...
   generated from the symbolic core (``numeric.pitch(array)``);
 - :mod:`~screwsym.numeric.mobility`: :func:`mobility_map`, the mobility of a
-  parallel mechanism at many configurations at once.
+  parallel mechanism at many configurations at once;
+- :mod:`~screwsym.numeric.dynamics`: a chain's dynamics as generated functions,
+  :func:`forward_dynamics`.
 
-Built on :mod:`screwsym.codegen`, :mod:`screwsym.core` and :mod:`screwsym.systems`.
+Built on :mod:`screwsym.codegen`, :mod:`screwsym.core`, :mod:`screwsym.systems` and
+:mod:`screwsym.motion`.
 """
 
 from collections.abc import Callable
 
 from . import screws
+from .dynamics import DynamicsFunctions, dynamics_functions, forward_dynamics
 from .mobility import MobilityMap, mobility_map
 from .screws import NAMES, functions_for
 
-__all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map"]
+__all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map",
+           "DynamicsFunctions", "dynamics_functions", "forward_dynamics"]
 
 
 def __getattr__(name: str) -> Callable:

@@ -344,3 +344,16 @@ def test_max_size_bounds_the_work_not_only_the_input():
     assert _size(big, 3000) < 20 and _expanded_terms(big, 10**6) == 39711 + 1
     e = ((a + b) ** 2 - b**2) / a  # 15 nodes, 3 + 1 terms expanded
     assert tidy(e, max_size=14) == e and tidy(e, max_size=15) == a + 2 * b
+
+
+def test_sum_of_angles_can_be_left_out():
+    from sympy import cos, sin, symbols
+
+    from screwsym import tidy
+
+    a, b = symbols("a b", real=True)
+    e = cos(a) * cos(b) - sin(a) * sin(b) + sin(a) ** 2 + cos(a) ** 2
+    assert tidy(e) == cos(a + b) + 1
+    assert tidy(e, sum_of_angles=False) == cos(a) * cos(b) - sin(a) * sin(b) + 1
+    with pytest.raises(TypeError, match="sum_of_angles: expected True or False"):
+        tidy(e, sum_of_angles=1)

@@ -140,9 +140,46 @@ def test_inertias_against_pinocchio(name):
     ours = read_inertials(path, base, tip)
     *_, model, data, ids = pinocchio_batch(name, np.zeros((1, len(ours))))
     pin.forwardKinematics(model, data, pin.neutral(model))
+    def below(j, jid):  # is pinocchio's joint j jid itself or behind it, off the path?
+        while j > 0 and j not in ids:
+            j = model.parents[j]
+        return j == jid
+
     for body, jid in zip(ours, ids, strict=True):
-        inertia, placement = model.inertias[jid], data.oMi[jid]
-        R = placement.rotation
-        assert float(body.mass) == pytest.approx(inertia.mass, abs=1e-12)
-        np.testing.assert_allclose(to_float(body.com).ravel(), placement.act(inertia.lever), atol=1e-12)
-        np.testing.assert_allclose(to_float(body.inertia), R @ inertia.inertia @ R.T, atol=1e-12)
+        # the body in the world: the joint's inertia, and those of the joints off the path behind
+        # it (the Panda's fingers) at their zero position, added as pinocchio adds inertias
+        world = pin.Inertia.Zero()
+        for j in range(1, model.njoints):
+            if below(j, jid):
+                world = world + data.oMi[j].act(model.inertias[j])
+        assert float(body.mass) == pytest.approx(world.mass, abs=1e-12)
+        np.testing.assert_allclose(to_float(body.com).ravel(), world.lever, atol=1e-12)
+        np.testing.assert_allclose(to_float(body.inertia), world.inertia, atol=1e-12)
+
+
+@pytest.mark.parametrize("name", ["ur5", "panda"])
+def test_a_urdf_chain_with_its_inertias_gives_pinocchios_torques(name):
+    # issues 21 and 22 together: Chain.from_urdf(..., inertias=True) keeps the file's inertias on
+    # the chain, and Newton-Euler in screw form (screwsym.motion.dynamics) gives the torques
+    # pinocchio's rnea computes from the same file, gravity (0, 0, -9.81) as pinocchio's default
+    from sympy import Float, Rational
+
+    path, base, tip = ROBOTS[name]
+    chain = Chain.from_urdf(path, base, tip, angles="pi/12", inertias=True)
+    model = pin.buildModelFromUrdf(str(path))
+    data = model.createData()
+    ids = [model.getJointId(j) for j in path_joints(path, base, tip)]
+    rng = np.random.default_rng([22, 21, len(name)])
+    for _ in range(2):
+        q, qd, qdd = (rng.uniform(-2, 2, chain.n_joints) for _ in range(3))
+        tau = chain.inverse_dynamics(*([Float(x) for x in v] for v in (q, qd, qdd)),
+                                     gravity=[0, 0, Rational(-981, 100)])
+        full = [pin.neutral(model), np.zeros(model.nv), np.zeros(model.nv)]
+        for jid, *values in zip(ids, q, qd, qdd, strict=True):
+            joint = model.joints[jid]
+            full[0][joint.idx_q], full[1][joint.idx_v], full[2][joint.idx_v] = values
+        ref = pin.rnea(model, data, *full)[[model.joints[j].idx_v for j in ids]]
+        got = np.array(tau, dtype=float).ravel()
+        assert np.allclose(got, ref, rtol=1e-9, atol=1e-9 * np.abs(ref).max())
+        assert not np.allclose(got, pin.rnea(model, data, full[0], full[1], 0 * full[2])
+                               [[model.joints[j].idx_v for j in ids]])  # the check can fail

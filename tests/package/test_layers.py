@@ -123,7 +123,7 @@ LAYERS: dict[str, set[str]] = {
     "motion": {"core"},
     "systems": {"core"},
     "codegen": set(),
-    "numeric": {"codegen", "core", "systems"},
+    "numeric": {"codegen", "core", "systems", "motion"},  # motion: a Chain's dynamics as generated functions (numeric.dynamics, issue 21)
     "plot": {"core", "numeric"},
     "book": {"top"},
     "top": {"core", "motion", "systems", "codegen", "numeric", "plot", "book"},

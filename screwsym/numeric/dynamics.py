@@ -1,0 +1,123 @@
+r"""A chain's dynamics as fast numeric functions, and forward dynamics by solving with them.
+
+:func:`dynamics_functions` turns the closed forms of :mod:`screwsym.motion.dynamics`
+(the mass matrix ``H(q)`` by composite rigid bodies, the Christoffel-form Coriolis matrix
+and the gravity torques, so that the torques are ``H qdd + C qd + g`` and the bias
+``h(q, qd) = C(q, qd) qd + g(q)``) into batched functions through
+:func:`screwsym.lambdify`; :func:`forward_dynamics` solves ``H(q) qdd = tau - h(q, qd)``
+with ``numpy.linalg.solve`` for many states at once.  The symbolic derivation is done once
+per chain, gravity and back end (cached), and its cost grows fast with the number of joints
+(see ``benchmarks/bench_dynamics.py`` for a six-joint arm).  The torques are generated from
+``H``, ``C`` and ``g`` rather than from the Newton–Euler closed form: the same function (the
+tests check it against Newton–Euler and the peers), but as expressions tens of times smaller
+(on the UR5 about 14,000 operations against 900,000), so the generated code is that much
+faster.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from typing import Any, NamedTuple
+
+import numpy as np
+from sympy import ImmutableMatrix, Symbol
+
+from ..codegen import lambdify
+from ..core.checks import check_vector
+from ..motion.chain import Chain
+from ..motion.dynamics import coriolis_matrix, gravity_torques, mass_matrix
+
+__all__ = ["DynamicsFunctions", "dynamics_functions", "forward_dynamics"]
+
+
+class DynamicsFunctions(NamedTuple):
+    """Batched numeric functions of a chain: arrays ``(..., n)`` in, as below out."""
+
+    #: ``inverse_dynamics(q, qd, qdd)``: the torques, ``(..., n)``
+    inverse_dynamics: Any
+    #: ``mass_matrix(q)``: ``(..., n, n)``
+    mass_matrix: Any
+    #: ``bias(q, qd)``: ``C(q, qd) qd + g(q)``, ``(..., n)``
+    bias: Any
+
+
+def _shaped(f: Any, trailing: tuple[int, ...]) -> Any:
+    """``f`` with its result shaped ``(..., *trailing)``, the batch shape that of its inputs."""
+
+    def g(*args: Any) -> np.ndarray:
+        batch = np.broadcast_shapes(*(np.shape(a)[:-1] for a in args))
+        out = np.asarray(f(*args))
+        if out.size == int(np.prod(batch + trailing)):
+            return out.reshape(batch + trailing)
+        return np.broadcast_to(out.reshape(trailing), batch + trailing).copy()  # a constant
+
+    g.__doc__ = f.__doc__
+    return g
+
+
+@lru_cache(maxsize=16)
+def _functions(chain: Chain, gravity: ImmutableMatrix, backend: str | None) -> DynamicsFunctions:
+    n = chain.n_joints
+    q, qd, qdd = (ImmutableMatrix([Symbol(f"{s}{i}", real=True) for i in range(n)])
+                  for s in ("q", "qd", "qdd"))
+    H = mass_matrix(chain, q)
+    C = coriolis_matrix(chain, q, qd, mass_matrix=H)
+    bias = C * qd + gravity_torques(chain, q, gravity)
+    tau = H * qdd + bias
+    return DynamicsFunctions(
+        _shaped(lambdify([q, qd, qdd], tau, backend, names=["q", "qd", "qdd"]), (n,)),
+        _shaped(lambdify([q], H, backend, names=["q"]), (n, n)),
+        _shaped(lambdify([q, qd], bias, backend, names=["q", "qd"]), (n,)),
+    )
+
+
+def dynamics_functions(chain: Chain, gravity: Any = (0, 0, -9.81),
+                       backend: str | None = None) -> DynamicsFunctions:
+    r"""The chain's inverse dynamics, mass matrix and bias as batched numeric functions.
+
+    ``gravity`` is the gravitational acceleration, numbers (default
+    ``(0, 0, -9.81)``); ``backend`` as for :func:`screwsym.lambdify`.  Cached per
+    chain, gravity and back end.
+
+    >>> import numpy as np
+    >>> from screwsym import Chain, SpatialInertia, Twist
+    >>> pendulum = Chain([Twist.rotation([0, -1, 0], point=[0, 0, 0])],
+    ...                  inertias=[SpatialInertia.point_mass(2, [1, 0, 0])])
+    >>> f = dynamics_functions(pendulum, gravity=(0, 0, -10), backend="numpy")
+    >>> f.bias(np.array([[0.0], [np.pi / 2]]), np.zeros((2, 1))).round(12) + 0.0
+    array([[20.],
+           [ 0.]])
+    >>> f.mass_matrix(np.zeros((5, 1))).shape
+    (5, 1, 1)
+    """
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
+    if chain.inertias is None:
+        raise ValueError("chain: the chain has no inertias; build it with Chain(..., inertias=[...])")
+    g = check_vector(gravity, "gravity")
+    if g.free_symbols:
+        raise ValueError(f"gravity: expected numbers, got {list(g)}")
+    return _functions(chain, g, backend)
+
+
+def forward_dynamics(chain: Chain, q: Any, qd: Any, tau: Any, gravity: Any = (0, 0, -9.81),
+                     backend: str | None = None) -> np.ndarray:
+    r"""The joint accelerations ``qdd`` for the torques ``tau``: ``H(q) qdd = tau - h(q, qd)``.
+
+    ``q``, ``qd``, ``tau`` are arrays ``(..., n)`` (broadcast against each
+    other); the result is ``(..., n)``.  Solved with ``numpy.linalg.solve`` from
+    the generated mass matrix and bias of :func:`dynamics_functions`.
+
+    >>> import numpy as np
+    >>> from screwsym import Chain, SpatialInertia, Twist
+    >>> slider = Chain([Twist.translation([0, 0, 1])], inertias=[SpatialInertia.point_mass(2, [0, 0, 0])])
+    >>> forward_dynamics(slider, np.zeros(1), np.zeros(1), np.array([[0.0], [19.62]]), backend="numpy")
+    array([[-9.81],
+           [ 0.  ]])
+    """
+    f = dynamics_functions(chain, gravity, backend)
+    q, qd, tau = (np.asarray(x, dtype=float) for x in (q, qd, tau))
+    q, qd, tau = np.broadcast_arrays(q, qd, tau)
+    H = f.mass_matrix(q)
+    rhs = tau - f.bias(q, qd)
+    return np.linalg.solve(H, rhs[..., None])[..., 0]
