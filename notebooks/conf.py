@@ -10,6 +10,7 @@ to the API reference from the docstrings, the book registry (generated from
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import sys
 from pathlib import Path
@@ -34,9 +35,13 @@ extensions = [
     "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
     "sphinx.ext.viewcode",
-    # MathJax bundled into the site (_static/mathjax), so the maths renders with no network
-    "sphinx-mathjax-offline",
 ]
+# MathJax bundled into the site (_static/mathjax), so the maths renders with no network: the
+# files are those of the sphinx-mathjax-offline package (the docs extra), copied by
+# _copy_mathjax below rather than by that package's extension, which does not declare itself
+# safe for parallel reading (sphinx -j would warn, and -W fail)
+_MATHJAX = Path(importlib.util.find_spec("sphinx-mathjax-offline").origin).parent / "static" / "mathjax"
+mathjax_path = "mathjax/tex-chtml.js"
 exclude_patterns = ["_build", "figures/*.py", "make_readme_figure.py", "make_gallery.py",
                     "**.ipynb_checkpoints", "**.nbconvert.ipynb"]
 source_suffix = {".md": "myst-nb", ".ipynb": "myst-nb"}
@@ -185,7 +190,15 @@ def _links_to_included_files(app, doctree) -> None:
             node["reftarget"] = _INCLUDED[target]
 
 
+def _copy_mathjax(app, exc) -> None:
+    from sphinx.util.fileutil import copy_asset
+
+    if exc is None and app.builder.format == "html":
+        copy_asset(str(_MATHJAX), os.path.join(app.outdir, "_static", "mathjax"))
+
+
 def setup(app):
+    app.connect("build-finished", _copy_mathjax)
     app.connect("doctree-read", _links_to_included_files)
     app.add_directive("screwsym-book", BookRegistry)
     app.add_directive("screwsym-gallery", Gallery)

@@ -1,7 +1,7 @@
 r"""The dynamics of a serial chain in screw form: Newton–Euler, mass matrix, Coriolis, regressor.
 
-Explanation
-===========
+The algorithms
+==============
 
 Everything is written with the twists, wrenches
 and spatial inertias of :mod:`screwsym.core` in ray order: a twist
