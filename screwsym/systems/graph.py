@@ -65,12 +65,12 @@ from sympy import (
     Tuple,
     cancel,
     expand,
+    false,
     fraction,
     igcd,
     ilcm,
     lcm,
     radsimp,
-    false,
     sqrt,
     true,
     zeros,
@@ -80,11 +80,11 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyutils import parallel_dict_from_expr
 
 from ..core.basic import ScrewsymBasic
+from ..core.checks import check_count, check_flag
 from ..core.decide import is_zero
+from ..core.formulas import SWAP
 from ..core.twist import Twist
 from .joints import Joint, Parallelogram, Spherical, Universal
-from ..core.checks import check_count, check_flag
-from ..core.formulas import SWAP
 from .mechanism import ParallelMechanism, _check_cases, _merge_cases, motion_type
 from .screw_system import MAX_CASES, ScrewSystem, _cases, _coefficient, _field
 
@@ -579,8 +579,7 @@ class Mechanism(ScrewsymBasic):
         amount (see :meth:`second_order`).  With symbols in the geometry they
         are generic (for all values outside a proper algebraic subset): the
         rank is taken over the field of rational functions, with no case split
-        (unlike :meth:`ParallelMechanism.mobility_cases
-        <screwsym.systems.mechanism.ParallelMechanism.mobility_cases>`), and
+        (:meth:`mobility_cases` gives the exhaustive split), and
         many symbols make it slow (the 3-RPS with six symbols and ``sqrt(3)``
         takes minutes): give the symbols values where you can.
 
@@ -882,17 +881,17 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
             for loop in g.loops]
 
     def split(conds: tuple, subs: dict, M: Matrix) -> list:
-        grown = []
+        found: list[tuple[tuple, dict | None, Any]] = []
         for node in _cases(ImmutableMatrix(M), limit):
             new = conds if node.condition is true else conds + (node.condition,)
             if node.rank is None:
-                grown.append((new, None, node))
+                found.append((new, None, node))
                 continue
             composed = _compose(subs, dict(node.subs))
             if _contradicts(new, composed):
                 continue
-            grown.append((new, composed, node))
-        return grown
+            found.append((new, composed, node))
+        return found
 
     for i in range(len(g.loops)):  # each loop's twists: its order d_i exact on each case
         grown: list = []
