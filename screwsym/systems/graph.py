@@ -82,11 +82,19 @@ from sympy.polys.polyutils import parallel_dict_from_expr
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag
 from ..core.decide import is_zero
-from ..core.formulas import SWAP
 from ..core.twist import Twist
 from .joints import Joint, Parallelogram, Spherical, Universal
 from .mechanism import ParallelMechanism, _check_cases, _merge_cases, motion_type
-from .screw_system import MAX_CASES, ScrewSystem, _cases, _coefficient, _field
+from .screw_system import (
+    MAX_CASES,
+    ScrewSystem,
+    _cases,
+    _coefficient,
+    _det,
+    _field,
+    _swap,
+    _to_ring,
+)
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -666,7 +674,9 @@ class Mechanism(ScrewsymBasic):
         ``rank = F - dim`` of the final null space.  A case whose rank SymPy
         cannot decide (an equation linear in no symbol) comes with ``None``.
         Cases whose conditions contradict each other are left out.  At most
-        ``max_cases`` cases (a ``ValueError`` beyond).
+        ``max_cases`` cases (a ``ValueError`` beyond).  The split costs a case
+        analysis per loop and case: Tsai's 3-UPU as a graph (15 freedoms, two
+        loops, two symbols) takes about 20 s; give symbols values where you can.
 
         With ``merge=True`` (the default) cases with the same answer
         (:meth:`MechanismMobility.answer`) are given as one, whose condition is
@@ -843,29 +853,51 @@ def _relations(node: Any) -> Matrix:
     Cramer's rule on the minor that proves the case's rank: for each member
     ``j`` off the minor, ``x_j = m`` (the minor, non-zero on the whole case)
     and ``x_p = -`` the minor with member ``p`` replaced by ``j``.  So the
-    basis is valid at every point of the case, not only generically.
+    basis is valid at every point of the case, not only generically.  The
+    determinants are taken in the polynomial ring of the case, on the members
+    cleared of their denominators (``cleared_k = d_k member_k``), so the
+    relation among the members themselves is ``x_k d_k``.
     """
-    M = Matrix(node.matrix)
-    k = M.cols
+    k = node.matrix.cols
     members = list(node.rows)
-    coords = [SWAP[c] for c in node.cols]
     free = [j for j in range(k) if j not in members]
     if not free:
         return zeros(k, 0)
     if not members:
         return Matrix.eye(k)
-    S = M.extract(coords, members)
-    m = cancel(S.det(method="bareiss"))
-    cols = []
+    rg = _to_ring(node.matrix)
+    R = rg.ring
+    B = [_swap(c) for c in rg.cols]
+    cols = list(node.cols)
+    m = _det([[B[p][c] for c in cols] for p in members], R)
+    scale = []
+    for c in range(k):
+        column = list(node.matrix.col(c))
+        r = next((i for i, e in enumerate(column) if e != 0), None)
+        scale.append(Integer(1) if r is None else cancel(R.to_sympy(rg.cols[c][r]) / column[r]))
+    out = []
     for j in free:
         x = [Integer(0)] * k
-        x[j] = m
+        x[j] = R.to_sympy(m) * scale[j]
         for pp, p in enumerate(members):
-            Sp = S.copy()
-            Sp[:, pp] = M.extract(coords, [j])
-            x[p] = -cancel(Sp.det(method="bareiss"))
-        cols.append(Matrix(_clean(x)))
-    return Matrix.hstack(*cols)
+            rows = [[B[j if q == pp else members[q]][c] for c in cols] for q in range(len(members))]
+            x[p] = -R.to_sympy(_det(rows, R)) * scale[p]
+        out.append(Matrix(x).applyfunc(expand))
+    return Matrix.hstack(*out)
+
+
+def _polynomial_columns(block: Matrix, N: Matrix) -> tuple[Matrix, Matrix]:
+    """``block`` and ``N`` with each column of ``block`` cleared of its denominators, and the
+    same column of ``N`` scaled alike (a non-zero factor wherever the geometry is defined)."""
+    block, N = Matrix(block), Matrix(N)
+    for c in range(block.cols):
+        entries = [cancel(e) for e in block.col(c)]
+        den = reduce(lcm, [fraction(e)[1] for e in entries], Integer(1))
+        if den != 1:
+            entries = [cancel(e * den) for e in entries]
+            N[:, c] = (N.col(c) * den).applyfunc(expand)
+        block[:, c] = Matrix(entries)
+    return block, N
 
 
 def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMobility | None]]:
@@ -911,7 +943,8 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
                 grown.append((conds, None, None))
                 continue
             block = _put(A.extract(list(range(6 * i, 6 * i + 6)), list(range(F))), subs) * N
-            for c, s, node in split(conds, subs, block.applyfunc(cancel)):
+            block, N = _polynomial_columns(block, N)
+            for c, s, node in split(conds, subs, block):
                 if s is None:
                     grown.append((c, None, None))
                     continue

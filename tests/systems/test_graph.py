@@ -491,18 +491,19 @@ def test_the_second_order_condition_holds_on_a_finite_motion(build):
 # ------------------------------------------------------------ mobility_cases
 
 
-def assert_graph_cases_exhaustive(mech, pm, points):
+def assert_graph_cases_exhaustive(mech, pm, points, splits=None):
     """At each point some case holds, and each case that holds gives the exact figures there.
 
     Exact: the mechanism with the point substituted (no symbols left), and the
     ParallelMechanism's own case split (joint rates = platform freedoms + passive ones).
+    ``splits``: the case lists to check (default: with and without merging).
     """
-    cases = mech.mobility_cases(merge=False)
-    merged = mech.mobility_cases()
+    if splits is None:
+        splits = (mech.mobility_cases(merge=False), mech.mobility_cases())
     pm_cases = pm.mobility_cases()
     for point in points:
         here = mech.xreplace(point).mobility()
-        for split in (cases, merged):
+        for split in splits:
             holding = [m for c, m in split if c.xreplace(point) is true]
             assert holding, f"no case holds at {point}"
             for m in holding:
@@ -583,3 +584,43 @@ def test_mobility_cases_checks_its_arguments():
         mech.mobility_cases(merge="no")
     with pytest.raises(ValueError, match="more than 1 case"):
         mech.mobility_cases(max_cases=1)
+
+
+@pytest.mark.slow
+def test_mobility_cases_of_two_loops_with_a_solved_denominator():
+    # the three dyads again, with three symbols and conditions such as 2ab = 1, solved as
+    # b = 1/(2a): the bases of the case split then carry denominators (about 10 s)
+    a, b, c = symbols("a b c", real=True)
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([1, a * b - 1, 0], Z)),
+                           Limb(R([4, 0, 0], Z), R([3, b, 0], Z)),
+                           Limb(R([2, -1, 0], Z), R([c, b * c, 0], Z)))
+    mech = Mechanism.from_parallel(pm)
+    assert {m.mobility for _, m in mech.mobility_cases(merge=False)} == {0, 1, 2}
+    half = Rational(1, 2)
+    points = [{a: 1, b: 1, c: 3}, {a: half, b: 1, c: 0}, {a: -1, b: -half, c: 2},
+              {a: 1, b: -half, c: 2}, {a: 0, b: 0, c: 0}, {a: 2, b: 1, c: Rational(4, 3)},
+              {a: -1, b: 2, c: 2}, {a: Rational(3, 7), b: Rational(-5, 2), c: Rational(1, 3)}]
+    assert_graph_cases_exhaustive(mech, pm, points)
+
+
+@pytest.mark.slow
+def test_mobility_cases_of_the_three_upu_as_a_graph():
+    # Tsai's 3-UPU (two loops as a graph) meets a constraint singularity at x = -48/11 and
+    # gains a rotation there (Zlatanov, Bonev & Gosselin, "Constraint singularities of parallel
+    # mechanisms", ICRA 2002, the 3-UPU example); the same split as ParallelMechanism's,
+    # the graph's joint rates the platform's freedoms (about 25 s)
+    def leg(b, a1, top):  # as in three_upu above and test_mechanism.py
+        d = sub(top, b)
+        a2 = cross(a1, d)
+        return Limb(U(b, a1, a2), P(d), U(top, a2, a1))
+
+    x, z = symbols("x", real=True), symbols("z", positive=True)
+    pm = ParallelMechanism(leg([2, 0, 0], [0, 1, 0], [1, 0, z]),
+                           leg([-1, 2, 0], [-2, -1, 0], [0, 1, z]),
+                           leg([-1, -2, 0], [2, -1, 0], [x, -1, z]))
+    mech = Mechanism.from_parallel(pm)
+    cases = mech.mobility_cases()
+    assert [(str(c), m.mobility, m.loops) for c, m in cases] == [
+        ("Ne(11*x + 48, 0)", 3, 2), ("Eq(11*x + 48, 0)", 4, 2)]
+    pts = [{x: Rational(-48, 11), z: 1}, {x: Rational(-48, 11), z: 3}, {x: -3, z: 1}]
+    assert_graph_cases_exhaustive(mech, pm, pts, splits=[cases])
