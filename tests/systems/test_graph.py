@@ -624,3 +624,17 @@ def test_mobility_cases_of_the_three_upu_as_a_graph():
         ("Ne(11*x + 48, 0)", 3, 2), ("Eq(11*x + 48, 0)", 4, 2)]
     pts = [{x: Rational(-48, 11), z: 1}, {x: Rational(-48, 11), z: 3}, {x: -3, z: 1}]
     assert_graph_cases_exhaustive(mech, pm, pts, splits=[cases])
+
+
+def test_mobility_cases_says_none_where_sympy_cannot_decide():
+    # the coupler joint at (1, t**2 - 2): the four-bar folds where t = +-sqrt(2), an equation
+    # linear in no symbol, so that case is listed undecided (None), never guessed
+    from sympy import Eq, Ne, sqrt
+
+    t = symbols("t", real=True)
+    mech = four_r([[0, 0, 0], [1, t**2 - 2, 0], [3, 0, 0], [4, 0, 0]], [Z] * 4)
+    cases = mech.mobility_cases()
+    assert [(c, None if m is None else m.mobility) for c, m in cases] == [
+        (Ne(t**2 - 2, 0), 1), (Eq(t**2 - 2, 0), None)]
+    # and it is undecided, not wrong: at t = sqrt(2) the four-bar is folded (2 freedoms)
+    assert mech.xreplace({t: sqrt(2)}).mobility().mobility == 2
