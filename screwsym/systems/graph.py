@@ -54,21 +54,25 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 from sympy import (
     QQ,
+    And,
     Basic,
     Dummy,
     ImmutableMatrix,
     Integer,
     Matrix,
+    Ne,
     Symbol,
     Tuple,
     cancel,
     expand,
+    false,
     fraction,
     igcd,
     ilcm,
     lcm,
     radsimp,
     sqrt,
+    true,
     zeros,
 )
 from sympy.core.symbol import Str
@@ -76,11 +80,23 @@ from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyutils import parallel_dict_from_expr
 
 from ..core.basic import ScrewsymBasic
+from ..core.checks import check_count, check_flag
 from ..core.decide import is_zero
 from ..core.twist import Twist
 from .joints import Joint, Parallelogram, Spherical, Universal
-from .mechanism import ParallelMechanism, motion_type
-from .screw_system import ScrewSystem, _coefficient, _field
+from .mechanism import ParallelMechanism, _check_cases, _merge_cases, motion_type
+from .screw_system import (
+    BUDGET,
+    MAX_CASES,
+    ScrewSystem,
+    _cases,
+    _coefficient,
+    _det,
+    _field,
+    _swap,
+    _to_ring,
+    case_budget,
+)
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -373,6 +389,11 @@ class MechanismMobility(NamedTuple):
     links: int  #: N, base included
     joints: int  #: J
 
+    def answer(self) -> tuple[Any, ...]:
+        """The numbers of the analysis, without the screw systems and bases: what two cases compare."""
+        return (self.mobility, self.freedoms, self.loops, self.rank, self.orders,
+                self.redundant, self.idle, self.classical)
+
 
 class SecondOrder(NamedTuple):
     """The result of :meth:`Mechanism.second_order`."""
@@ -568,8 +589,7 @@ class Mechanism(ScrewsymBasic):
         amount (see :meth:`second_order`).  With symbols in the geometry they
         are generic (for all values outside a proper algebraic subset): the
         rank is taken over the field of rational functions, with no case split
-        (unlike :meth:`ParallelMechanism.mobility_cases
-        <screwsym.systems.mechanism.ParallelMechanism.mobility_cases>`), and
+        (:meth:`mobility_cases` gives the exhaustive split), and
         many symbols make it slow (the 3-RPS with six symbols and ``sqrt(3)``
         takes minutes): give the symbols values where you can.
 
@@ -626,6 +646,73 @@ class Mechanism(ScrewsymBasic):
             links=n,
             joints=J,
         )
+
+    def mobility_cases(
+        self, *, max_cases: int = MAX_CASES, budget: int = BUDGET, merge: bool = True
+    ) -> list[tuple[Any, MechanismMobility | None]]:
+        r"""The **instantaneous** mobility in each case where the symbols change a rank: an exhaustive split.
+
+        Explanation
+        ===========
+
+        :meth:`mobility` is generic in the symbols; this splits the real
+        values of the symbols into cases, each a SymPy boolean (``Eq``, ``Ne``,
+        ``And``) with its :class:`MechanismMobility`.  Every real point satisfies
+        at least one case; at every point of a case its ``mobility`` and
+        ``rank`` hold exactly, and so do ``orders`` (the rank of each loop's
+        twists); ``common``, ``redundant`` follow from them, while ``idle`` and
+        the bases are those of the case's generic point.
+
+        The split is made by the rank conditions of
+        :meth:`ScrewSystem.rank_conditions
+        <screwsym.systems.screw_system.ScrewSystem.rank_conditions>`, exact
+        (irreducible factors of minors, solved for a symbol they are linear
+        in), first on each loop's twists, then on the network matrix loop by
+        loop: with ``N`` a basis of the joint rates that close loops
+        ``1..i-1`` (valid on the whole case: Cramer's rule on the minor that
+        proves the case's rank, so its leading entries are that non-zero
+        minor), the rates that also close loop ``i`` are the null space of the
+        six-row matrix ``A_i N``, whose rank conditions split the case again;
+        ``rank = F - dim`` of the final null space.  A case whose rank SymPy
+        cannot decide (an equation linear in no symbol) comes with ``None``.
+        Cases whose conditions contradict each other are left out.  At most
+        ``max_cases`` cases (a ``ValueError`` beyond), and at most ``budget``
+        units of polynomial arithmetic for the whole split (as
+        :meth:`ScrewSystem.rank_conditions
+        <screwsym.systems.screw_system.ScrewSystem.rank_conditions>`).  The split costs a case
+        analysis per loop and case: Tsai's 3-UPU as a graph (15 freedoms, two
+        loops, two symbols) takes about 20 s; give symbols values where you can.
+
+        With ``merge=True`` (the default) cases with the same answer
+        (:meth:`MechanismMobility.answer`) are given as one, whose condition is
+        the ``Or`` of theirs, in the place of the first, with the first case's
+        :class:`MechanismMobility`; ``merge=False`` gives each case with its own.
+
+        Examples
+        ========
+
+        The four-bar whose coupler joint is at ``(1, b)``: one freedom, but
+        two instantaneous ones when ``b = 0`` (the four axes in one plane: the
+        four-bar folded flat on the ground line; the loop's twists drop to
+        order 2).
+
+        >>> from sympy import symbols
+        >>> from screwsym.systems.graph import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> b = symbols("b", real=True)
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, b, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 0, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> [(case, m.mobility, m.orders) for case, m in fourbar.mobility_cases()]
+        [(Ne(b, 0), 1, (3,)), (Eq(b, 0), 2, (2,))]
+        """
+        max_cases = check_count(max_cases, "max_cases")
+        merge = check_flag(merge, "merge")
+        with case_budget(budget, "mobility_cases"):
+            out = _mobility_cases(self, max_cases)
+        return _merge_cases(out) if merge else out
 
     def twists(self, link: Any, relative_to: Any = None) -> ScrewSystem:
         """The instantaneous motions of ``link`` relative to ``relative_to`` (the base by default).
@@ -742,6 +829,149 @@ class Mechanism(ScrewsymBasic):
         (1, 0)
         """
         return _second_order(self)
+
+
+# ----------------------------------------------------------- case split
+
+
+def _compose(subs: dict, more: dict) -> dict:
+    """``subs`` then ``more`` (made in the already substituted system) as one substitution."""
+    composed = {k: cancel(v.xreplace(more)) for k, v in subs.items()}
+    composed.update(more)
+    return composed
+
+
+def _put(M: Matrix, subs: dict) -> Matrix:
+    return M.xreplace(subs).applyfunc(cancel) if subs else M
+
+
+def _contradicts(conds: tuple, subs: dict) -> bool:
+    """Whether the substitution of a case makes one of its own ``Ne`` conditions false."""
+    for c in conds:
+        for atom in c.atoms(Ne):
+            if cancel((atom.lhs - atom.rhs).xreplace(subs)) == 0:
+                return True
+    return False
+
+
+def _relations(node: Any) -> Matrix:
+    """A basis of the linear relations among the members of a case (its columns' null space).
+
+    Cramer's rule on the minor that proves the case's rank: for each member
+    ``j`` off the minor, ``x_j = m`` (the minor, non-zero on the whole case)
+    and ``x_p = -`` the minor with member ``p`` replaced by ``j``.  So the
+    basis is valid at every point of the case, not only generically.  The
+    determinants are taken in the polynomial ring of the case, on the members
+    cleared of their denominators (``cleared_k = d_k member_k``), so the
+    relation among the members themselves is ``x_k d_k``.
+    """
+    k = node.matrix.cols
+    members = list(node.rows)
+    free = [j for j in range(k) if j not in members]
+    if not free:
+        return zeros(k, 0)
+    if not members:
+        return Matrix.eye(k)
+    rg = _to_ring(node.matrix)
+    R = rg.ring
+    B = [_swap(c) for c in rg.cols]
+    cols = list(node.cols)
+    m = _det([[B[p][c] for c in cols] for p in members], R)
+    scale = []
+    for c in range(k):
+        column = list(node.matrix.col(c))
+        r = next((i for i, e in enumerate(column) if e != 0), None)
+        scale.append(Integer(1) if r is None else cancel(R.to_sympy(rg.cols[c][r]) / column[r]))
+    out = []
+    for j in free:
+        x = [Integer(0)] * k
+        x[j] = R.to_sympy(m) * scale[j]
+        for pp, p in enumerate(members):
+            rows = [[B[j if q == pp else members[q]][c] for c in cols] for q in range(len(members))]
+            x[p] = -R.to_sympy(_det(rows, R)) * scale[p]
+        out.append(Matrix(x).applyfunc(expand))
+    return Matrix.hstack(*out)
+
+
+def _polynomial_columns(block: Matrix, N: Matrix) -> tuple[Matrix, Matrix]:
+    """``block`` and ``N`` with each column of ``block`` cleared of its denominators, and the
+    same column of ``N`` scaled alike (a non-zero factor wherever the geometry is defined)."""
+    block, N = Matrix(block), Matrix(N)
+    for c in range(block.cols):
+        entries = [cancel(e) for e in block.col(c)]
+        den = reduce(lcm, [fraction(e)[1] for e in entries], Integer(1))
+        if den != 1:
+            entries = [cancel(e * den) for e in entries]
+            N[:, c] = (N.col(c) * den).applyfunc(expand)
+        block[:, c] = Matrix(entries)
+    return block, N
+
+
+def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMobility | None]]:
+    net = _network(mech)
+    g = net.graph
+    A = net.A
+    F = A.cols
+    if not A.free_symbols:
+        return [(true, mech.mobility())]
+    # leaves: (conditions, substitution or None when undecided, the rates closing the loops so far)
+    leaves: list[tuple[tuple, dict | None, Matrix | None]] = [((), {}, None)]
+    used = [sorted({g.offsets[e] + k for e, _ in loop for k in range(g.edges[e][2].freedom)})
+            for loop in g.loops]
+
+    def split(conds: tuple, subs: dict, M: Matrix) -> list:
+        found: list[tuple[tuple, dict | None, Any]] = []
+        for node in _cases(ImmutableMatrix(M), limit):
+            new = conds if node.condition is true else conds + (node.condition,)
+            if node.rank is None:
+                found.append((new, None, node))
+                continue
+            composed = _compose(subs, dict(node.subs))
+            if _contradicts(new, composed):
+                continue
+            found.append((new, composed, node))
+        return found
+
+    for i in range(len(g.loops)):  # each loop's twists: its order d_i exact on each case
+        grown: list = []
+        for conds, subs, _ in leaves:
+            if subs is None:
+                grown.append((conds, None, None))
+                continue
+            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), used[i]), subs)
+            grown.extend((c, s, None) for c, s, _ in split(conds, subs, block))
+        leaves = grown
+        _check_cases(len(leaves), limit)
+    leaves = [(c, s, None if s is None else Matrix.eye(F)) for c, s, _ in leaves]
+    for i in range(len(g.loops)):  # the network matrix, loop by loop
+        grown = []
+        for conds, subs, N in leaves:
+            if subs is None or N is None:
+                grown.append((conds, None, None))
+                continue
+            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), list(range(F))), subs) * N
+            block, N = _polynomial_columns(block, N)
+            for c, s, node in split(conds, subs, block):
+                if s is None:
+                    grown.append((c, None, None))
+                    continue
+                more = dict(node.subs)
+                grown.append((c, s, (_put(N, more) * _relations(node)).applyfunc(cancel)))
+        leaves = grown
+        _check_cases(len(leaves), limit)
+    out: list[tuple[Any, MechanismMobility | None]] = []
+    for conds, subs, N in leaves:
+        condition = And(*conds) if conds else true
+        if condition is false:
+            continue
+        if subs is None or N is None:
+            out.append((condition, None))
+            continue
+        m = (mech.xreplace(subs) if subs else mech).mobility()
+        if m.mobility != N.cols:  # pragma: no cover - the split proves the rank on the case
+            raise AssertionError("mobility_cases: the case's rank and its generic rank differ")
+        out.append((condition, m))
+    return out
 
 
 def _idle(net: _Network) -> Matrix:

@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import operator
 import sys
-from typing import TYPE_CHECKING, Any, NamedTuple, SupportsIndex
+from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar
 
 from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
 from sympy.logic.boolalg import simplify_logic
@@ -341,9 +341,20 @@ def _union(a: Any, b: Any) -> Any:
                         lambda x: Ne(*x.args[0].args))
 
 
-def _merge_cases(cases: list[tuple[Any, Mobility | None]]) -> list[tuple[Any, Mobility | None]]:
-    """Cases with the same answer as one, in the place of the first (undecided ones apart)."""
-    merged: list[tuple[Any, Mobility | None]] = []
+class _Answered(Protocol):
+    def answer(self) -> tuple[Any, ...]: ...
+
+
+_A = TypeVar("_A", bound=_Answered)
+
+
+def _merge_cases(cases: list[tuple[Any, _A | None]]) -> list[tuple[Any, _A | None]]:
+    """Cases with the same answer as one, in the place of the first (undecided ones apart).
+
+    Any result with an ``answer()`` (a :class:`Mobility`, a graph mechanism's
+    ``MechanismMobility``) is compared by it.
+    """
+    merged: list[tuple[Any, _A | None]] = []
     where: dict[tuple[Any, ...], int] = {}
     for condition, m in cases:
         if m is None:

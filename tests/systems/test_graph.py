@@ -28,7 +28,7 @@ from _linkages import (
     watt,
 )
 from _mechanisms import O, four_bar, three_rps
-from sympy import Matrix, Rational, expand, symbols
+from sympy import Matrix, Rational, expand, symbols, true
 
 from screwsym import ScrewSystem, Twist
 from screwsym.systems.graph import Mechanism, lie_bracket
@@ -486,3 +486,164 @@ def test_the_second_order_condition_holds_on_a_finite_motion(build):
     good, size = numeric_acceleration_residual(m)
     bad, _ = numeric_acceleration_residual(m, sign=-1.0)
     assert size > 0.1 and good < 1e-4 * size and bad > 0.1 * size
+
+
+# ------------------------------------------------------------ mobility_cases
+
+
+def assert_graph_cases_exhaustive(mech, pm, points, splits=None):
+    """At each point some case holds, and each case that holds gives the exact figures there.
+
+    Exact: the mechanism with the point substituted (no symbols left), and the
+    ParallelMechanism's own case split (joint rates = platform freedoms + passive ones).
+    ``splits``: the case lists to check (default: with and without merging).
+    """
+    if splits is None:
+        splits = (mech.mobility_cases(merge=False), mech.mobility_cases())
+    pm_cases = pm.mobility_cases()
+    for point in points:
+        here = mech.xreplace(point).mobility()
+        for split in splits:
+            holding = [m for c, m in split if c.xreplace(point) is true]
+            assert holding, f"no case holds at {point}"
+            for m in holding:
+                assert m is not None and (m.mobility, m.rank, m.orders) == (
+                    here.mobility, here.rank, here.orders), (point, m, here)
+        [pmm] = {m.answer(): m for c, m in pm_cases if c.xreplace(point) is true}.values()
+        assert here.mobility == pmm.mobility + pmm.passive
+
+
+def test_mobility_cases_of_a_symbolic_four_bar_match_parallel_mechanism():
+    # the planar four-bar A(0,0) B(bx,by) C(3,0) D(4,0) (the case of test_mechanism's
+    # exhaustive test): one freedom (Grübler's planar count 3(4-1) - 2*4 = 1); two where
+    # B lies on the ground line (the folded four-bar, all axes in one plane: Hunt 1978,
+    # Kinematic Geometry of Mechanisms, §2 on the change point), one of them idle at B = A
+    bx, by = symbols("b_x b_y", real=True)
+    pm = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
+    mech = Mechanism.from_parallel(pm)
+    cases = mech.mobility_cases(merge=False)
+    assert [(m.mobility, m.orders, m.idle) for _, m in cases] == [
+        (1, (3,), 0), (2, (2,), 0), (2, (2,), 1)]
+    rnd = random.Random(19)
+    special = [{bx: u, by: 0} for u in (0, 1, 3, 4, Rational(7, 2))]
+    rand = [{bx: Rational(rnd.randint(-9, 9), rnd.randint(1, 5)),
+             by: Rational(rnd.randint(-9, 9), rnd.randint(1, 5))} for _ in range(4)]
+    assert_graph_cases_exhaustive(mech, pm, special + rand)
+    merged = mech.mobility_cases()
+    assert len(merged) == 3  # the idle freedom at B = A keeps the last case apart
+    assert Mechanism.from_parallel(four_bar()).mobility_cases() == [
+        (true, Mechanism.from_parallel(four_bar()).mobility())]
+
+
+def test_mobility_cases_of_two_loops():
+    # a coupler carried by three RR dyads (two independent loops): a planar structure,
+    # 3(5-1) - 2*6 = 0 (Grübler's count), which moves where a dyad folds onto the line of
+    # its neighbour's (a = 0: the first dyad's joints on the ground line through D, C) and
+    # gains an idle spin where the third dyad's two joints coincide (b = -1)
+    a, b = symbols("a b", real=True)
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([1, a, 0], Z)),
+                           Limb(R([4, 0, 0], Z), R([3, 0, 0], Z)),
+                           Limb(R([2, -1, 0], Z), R([2, b, 0], Z)))
+    mech = Mechanism.from_parallel(pm)
+    assert mech.mobility().loops == 2
+    cases = mech.mobility_cases(merge=False)
+    assert [m.mobility for _, m in cases] == [0, 1, 0, 1, 1]
+    special = [{a: u, b: v} for u in (0, Rational(-1, 2), 1) for v in (-1, 0, 2)]
+    assert_graph_cases_exhaustive(mech, pm, special + [{a: Rational(5, 7), b: Rational(-3, 11)}])
+    merged = mech.mobility_cases()
+    assert [m.answer() for _, m in merged] == list(dict.fromkeys(m.answer() for _, m in cases))
+
+
+def test_assert_graph_cases_exhaustive_rejects_a_wrong_answer():
+    bx, by = symbols("b_x b_y", real=True)
+    pm = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
+    mech = Mechanism.from_parallel(pm)
+
+    class Lying:
+        def mobility_cases(self, merge=True):
+            return [(c, m._replace(mobility=1)) for c, m in mech.mobility_cases(merge=merge)]
+
+        def xreplace(self, point):
+            return mech.xreplace(point)
+
+    with pytest.raises(AssertionError):
+        assert_graph_cases_exhaustive(Lying(), pm, [{bx: 1, by: 0}])
+
+    class Missing(Lying):
+        def mobility_cases(self, merge=True):
+            return mech.mobility_cases(merge=merge)[:1]
+
+    with pytest.raises(AssertionError, match="no case holds"):
+        assert_graph_cases_exhaustive(Missing(), pm, [{bx: 1, by: 0}])
+
+
+def test_mobility_cases_checks_its_arguments():
+    b = symbols("b", real=True)
+    mech = Mechanism.from_parallel(four_bar(B=(1, b, 0), Cp=(3, 0, 0)))
+    with pytest.raises(TypeError, match="merge"):
+        mech.mobility_cases(merge="no")
+    with pytest.raises(ValueError, match="more than 1 case"):
+        mech.mobility_cases(max_cases=1)
+
+
+@pytest.mark.slow
+def test_mobility_cases_of_two_loops_with_a_solved_denominator():
+    # the three dyads again, with three symbols and conditions such as 2ab = 1, solved as
+    # b = 1/(2a): the bases of the case split then carry denominators (about 10 s)
+    a, b, c = symbols("a b c", real=True)
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([1, a * b - 1, 0], Z)),
+                           Limb(R([4, 0, 0], Z), R([3, b, 0], Z)),
+                           Limb(R([2, -1, 0], Z), R([c, b * c, 0], Z)))
+    mech = Mechanism.from_parallel(pm)
+    assert {m.mobility for _, m in mech.mobility_cases(merge=False)} == {0, 1, 2}
+    half = Rational(1, 2)
+    points = [{a: 1, b: 1, c: 3}, {a: half, b: 1, c: 0}, {a: -1, b: -half, c: 2},
+              {a: 1, b: -half, c: 2}, {a: 0, b: 0, c: 0}, {a: 2, b: 1, c: Rational(4, 3)},
+              {a: -1, b: 2, c: 2}, {a: Rational(3, 7), b: Rational(-5, 2), c: Rational(1, 3)}]
+    assert_graph_cases_exhaustive(mech, pm, points)
+
+
+@pytest.mark.slow
+def test_mobility_cases_of_the_three_upu_as_a_graph():
+    # Tsai's 3-UPU (two loops as a graph) meets a constraint singularity at x = -48/11 and
+    # gains a rotation there (Zlatanov, Bonev & Gosselin, "Constraint singularities of parallel
+    # mechanisms", ICRA 2002, the 3-UPU example); the same split as ParallelMechanism's,
+    # the graph's joint rates the platform's freedoms (about 25 s)
+    def leg(b, a1, top):  # as in three_upu above and test_mechanism.py
+        d = sub(top, b)
+        a2 = cross(a1, d)
+        return Limb(U(b, a1, a2), P(d), U(top, a2, a1))
+
+    x, z = symbols("x", real=True), symbols("z", positive=True)
+    pm = ParallelMechanism(leg([2, 0, 0], [0, 1, 0], [1, 0, z]),
+                           leg([-1, 2, 0], [-2, -1, 0], [0, 1, z]),
+                           leg([-1, -2, 0], [2, -1, 0], [x, -1, z]))
+    mech = Mechanism.from_parallel(pm)
+    cases = mech.mobility_cases()
+    assert [(str(c), m.mobility, m.loops) for c, m in cases] == [
+        ("Ne(11*x + 48, 0)", 3, 2), ("Eq(11*x + 48, 0)", 4, 2)]
+    pts = [{x: Rational(-48, 11), z: 1}, {x: Rational(-48, 11), z: 3}, {x: -3, z: 1}]
+    assert_graph_cases_exhaustive(mech, pm, pts, splits=[cases])
+
+
+def test_mobility_cases_says_none_where_sympy_cannot_decide():
+    # the coupler joint at (1, t**2 - 2): the four-bar folds where t = +-sqrt(2), an equation
+    # linear in no symbol, so that case is listed undecided (None), never guessed
+    from sympy import Eq, Ne, sqrt
+
+    t = symbols("t", real=True)
+    mech = four_r([[0, 0, 0], [1, t**2 - 2, 0], [3, 0, 0], [4, 0, 0]], [Z] * 4)
+    cases = mech.mobility_cases()
+    assert [(c, None if m is None else m.mobility) for c, m in cases] == [
+        (Ne(t**2 - 2, 0), 1), (Eq(t**2 - 2, 0), None)]
+    # and it is undecided, not wrong: at t = sqrt(2) the four-bar is folded (2 freedoms)
+    assert mech.xreplace({t: sqrt(2)}).mobility().mobility == 2
+
+
+def test_mobility_cases_keeps_to_its_budget():
+    b = symbols("b", real=True)
+    mech = Mechanism.from_parallel(four_bar(B=(1, b, 0), Cp=(3, 0, 0)))
+    with pytest.raises(ValueError, match="mobility_cases: .*budget=1 "):
+        mech.mobility_cases(budget=1)
+    with pytest.raises(TypeError, match="budget"):
+        mech.mobility_cases(budget="lots")
