@@ -93,6 +93,7 @@ from .screw_system import (
     _coefficient,
     _det,
     _field,
+    _rational_parts,
     _swap,
     _to_ring,
     case_budget,
@@ -171,21 +172,7 @@ def _dm(M: Matrix) -> DomainMatrix:
         rows = [[QQ(int(e.p), int(e.q)) for e in entries[i * M.cols:(i + 1) * M.cols]]
                 for i in range(M.rows)]
         return DomainMatrix(rows, (M.rows, M.cols), QQ)
-    syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
-    parts = [p for e in entries for p in e.as_numer_denom()]
-    numbers: list = []
-    if parts:
-        _, found = parallel_dict_from_expr(parts)
-        for g in found["gens"] if isinstance(found, dict) else found:
-            if isinstance(g, Symbol):
-                continue
-            if g.is_number and g.is_algebraic:
-                numbers.append(g)
-                continue
-            raise ValueError(
-                "joints: expected geometry that is rational functions of symbols with rational "
-                f"or algebraic coefficients, got {g} (write cos/sin as a rational parametrisation)"
-            )
+    syms, numbers, parts = _rational_parts(entries, "joints: expected geometry")
     K0 = _field(tuple(sorted(set(numbers), key=str)))
     gens = tuple(syms) if syms else (Dummy("c"),)
     R = K0[gens]

@@ -520,13 +520,16 @@ def _to_ring(M: ImmutableMatrix) -> _Ring:
     return _to_ring_cached(ImmutableMatrix(M))
 
 
-@lru_cache(maxsize=512)
-def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
-    entries = list(M)
+def _rational_parts(entries: list, what: str) -> tuple[list, list, list]:
+    """The symbols, the algebraic numbers and the numerators and denominators of ``entries``.
+
+    Raises ``ValueError`` naming ``what`` (``"screws: expected entries"``, ...) for an entry
+    that is not a rational function of symbols with rational or algebraic coefficients.
+    """
     syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
-    numbers = []
+    numbers: list = []
     parts = [part for e in entries for part in e.as_numer_denom()]
-    if entries:
+    if parts:
         _, found = parallel_dict_from_expr(parts)
         for g in found["gens"] if isinstance(found, dict) else found:
             if isinstance(g, Symbol):
@@ -535,10 +538,17 @@ def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
                 numbers.append(g)
                 continue
             raise ValueError(
-                "screws: expected entries that are rational functions of symbols with "
-                f"rational or algebraic coefficients, got {g} in an entry (write cos/sin "
-                "as a rational parametrisation or as point coordinates)"
+                f"{what} that are rational functions of symbols with rational or algebraic "
+                f"coefficients, got {g} in an entry (write cos/sin as a rational "
+                "parametrisation or as point coordinates)"
             )
+    return syms, numbers, parts
+
+
+@lru_cache(maxsize=512)
+def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
+    entries = list(M)
+    syms, numbers, parts = _rational_parts(entries, "screws: expected entries")
     K = _field(tuple(sorted(numbers, key=str)))
     gens = tuple(syms) if syms else (Dummy("c"),)
     R = K[gens]
