@@ -16,6 +16,8 @@ import pytest
 
 #: package folder or module (relative to the repository root) -> the module its doctests need
 OPTIONAL = {"screwsym/plot/": "matplotlib", "screwsym/motion/urdf.py": "defusedxml"}
+#: doctests elsewhere (by name) -> the module they need
+OPTIONAL_DOCTESTS = {"screwsym.motion.chain.Chain.from_urdf": "defusedxml"}
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -38,3 +40,6 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         for folder, module in OPTIONAL.items():
             if path.startswith(folder) and importlib.util.find_spec(module) is None:
                 item.add_marker(pytest.mark.skip(reason=f"{module} not installed"))
+        module = OPTIONAL_DOCTESTS.get(item.name)
+        if module is not None and importlib.util.find_spec(module) is None:
+            item.add_marker(pytest.mark.skip(reason=f"{module} not installed"))

@@ -58,6 +58,7 @@ def _key(expr) -> str:
     return f._screwsym_meta["key"]
 
 
+@pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
 def test_a_planted_module_with_the_right_name_and_digest_runs_in_a_private_cache(tmp_path):
     # the checker below is shown to see a planted module when the folder is ours alone
     expr = 7 * x + 3000.25
@@ -66,10 +67,9 @@ def test_a_planted_module_with_the_right_name_and_digest_runs_in_a_private_cache
     for old in numba.glob(f"screwsym_generated_{key}-*.py"):
         old.unlink()
     _plant(numba, key)
-    if HAS_NUMBA:
-        with pytest.raises(AttributeError):  # the planted module has no _fn
-            lambdify([x], expr, "numba")
-        assert _ran()
+    with pytest.raises(AttributeError):  # the planted module has no _fn
+        lambdify([x], expr, "numba")
+    assert _ran()
 
 
 @pytest.mark.skipif(not HAS_NUMBA, reason="numba not installed")
