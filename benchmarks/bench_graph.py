@@ -24,6 +24,7 @@ import argparse
 import time
 
 import numpy as np
+from bench_systems import best as _best  # the script beside this one
 from sympy import Matrix, Rational
 
 from screwsym.systems import graph as _graph
@@ -41,13 +42,7 @@ def clear() -> None:
 
 
 def best(fn, repeat: int) -> tuple[float, object]:
-    times, out = [], None
-    for _ in range(repeat):
-        clear()
-        t = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t)
-    return min(times), out
+    return _best(fn, repeat, clear)
 
 
 def _add(a, b):
