@@ -59,6 +59,7 @@ from ..core.inertia import SpatialInertia
 from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from . import _poe
 from . import dynamics as _dynamics
 from .dh import dh_twists_and_home
 from .displacement import exp6
@@ -285,6 +286,13 @@ class Chain(ScrewsymBasic):
         Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[0, 1, 0])
         """
         q = self._check_q(q)
+        fast = _poe.fast_forward(self.twists, self.home, q)
+        if fast is not None:
+            return Transform._new(*fast)
+        return self._forward_stepwise(q)
+
+    def _forward_stepwise(self, q: tuple[Expr, ...]) -> Transform:
+        """The general path: each product of an exponential tidied (numbers, helical joints, ...)."""
         T = Transform.identity()
         for twist, qi in zip(self.twists, q, strict=True):
             T = tidy(T @ exp6(twist, qi))
@@ -312,6 +320,14 @@ class Chain(ScrewsymBasic):
         """
         q = self._check_q(q)
         frame = check_choice(frame, "frame", ("space", "body"))
+        if frame == "space":
+            fast = _poe.fast_space_jacobian(self.twists, self.home, q)
+            if fast is not None:
+                return fast
+        return self._jacobian_stepwise(q, frame)
+
+    def _jacobian_stepwise(self, q: tuple[Expr, ...], frame: str) -> ImmutableMatrix:
+        """The general path of :meth:`jacobian`: each product tidied."""
         columns: list[ImmutableMatrix] = []
         T = Transform.identity()
         if frame == "space":

@@ -1,0 +1,610 @@
+r"""The closed forms of a serial chain by polynomial arithmetic: the fast path of :class:`Chain`.
+
+Explanation
+===========
+
+A chain of revolute joints (unit ``omega``, ``omega . v_O = 0``) and prismatic
+joints (``omega = 0``) with distinct symbolic joint variables has a product of
+exponentials whose entries are polynomials in the sines and cosines of the joint
+angles, the prismatic joints' lengths and the geometry.  This module computes
+the product with exactly that structure, in one of SymPy's sparse polynomial
+rings, instead of as expression trees tidied after every factor:
+
+1. **Sums of angles from the structure.**  Consecutive revolute joints about
+   parallel axes (``omega_{j+1} = +-omega_j``) form a group whose product is a
+   turn by the cumulative angle ``phi_k = q_g +- ... +- q_k`` about the common
+   direction: ``exp($_g q_g) ... exp($_k q_k) = (R(phi_k), sum_j (R(phi_{j-1}) -
+   R(phi_j)) r_j)`` for points ``r_j`` of the axes.  ``R(phi) = I + sin(phi) K +
+   (1 - cos(phi)) K^2`` (Rodrigues) with ``cos(phi)`` and ``sin(phi)`` as ring
+   generators: no sum-of-angles search is needed for these.
+2. **Products of two angles' sines and cosines gathered** where the pattern of
+   the angle-sum formulas occurs with equal coefficients (``a cos A cos B - a sin A
+   sin B -> a cos(A + B)``, the four formulas and their differences), and
+   ``sin(A)**2 -> 1 - cos(A)**2`` where it shortens: read off the terms of the
+   polynomial, several times cheaper than SymPy's ``TR10i`` on the expression.
+3. **The form of the product kept.**  Each entry is written back nested by the
+   joints, the last joint's factors outermost (``T_k = T_{k-1} exp($_k q_k)``), with
+   the content and the common monomial of each level pulled out, or flat where
+   that is smaller (by ``count_ops``).
+
+Every step is an exact identity (ring arithmetic over the rationals, the
+Pythagorean identity, the angle-sum formulas), so the results equal the
+product of the exponentials.  Chains outside this class (helical joints,
+non-unit axes, numeric or repeated joint values) take the general path.
+
+References
+==========
+
+R. W. Brockett, "Robotic manipulators and the product of exponentials
+formula", 1984.  Lynch & Park, *Modern Robotics*, 2017, Sections 4.1, 5.1.
+"""
+
+from __future__ import annotations
+
+from itertools import combinations
+from typing import Any
+
+from sympy import (
+    Add,
+    Dummy,
+    Expr,
+    ImmutableMatrix,
+    Mul,
+    S,
+    Symbol,
+    cos,
+    count_ops,
+    expand,
+    sin,
+)
+from sympy.core.sorting import default_sort_key
+from sympy.polys.domains import QQ
+from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
+from sympy.polys.rings import ring
+
+__all__: list[str] = []
+
+
+class _NotPolynomial(Exception):
+    """The chain is outside the class this module handles: take the general path."""
+
+
+def _joint_kind(omega: Any, v: Any) -> str | None:
+    """``"R"`` for a unit revolute twist, ``"P"`` for a prismatic one, None otherwise."""
+    if all(e == 0 for e in omega):
+        return "P" if any(e != 0 for e in v) else None
+    if expand(omega.dot(omega)) == 1 and expand(omega.dot(v)) == 0:
+        return "R"
+    return None
+
+
+class _Engine:
+    """One chain's ring: the geometry's symbols, the prismatic lengths, the angles' sines and cosines."""
+
+    def __init__(self, twists: list, home: Any, q: tuple, sign: int = 1) -> None:
+        self.n = len(twists)
+        self.q = q
+        kinds = [_joint_kind(t.omega, t.v_O) for t in twists]
+        if None in kinds:
+            raise _NotPolynomial("a joint is neither a unit revolute nor a prismatic twist")
+        self.kinds = kinds
+        # groups of consecutive revolute joints about parallel axes: joint -> (group start, sign)
+        self.group: list[tuple[int, int]] = []
+        for i, t in enumerate(twists):
+            if i and kinds[i] == "R" and kinds[i - 1] == "R":
+                g, _ = self.group[i - 1]
+                w0 = twists[g].omega
+                if t.omega == w0:
+                    self.group.append((g, 1))
+                    continue
+                if t.omega == -w0:
+                    self.group.append((g, -1))
+                    continue
+            self.group.append((i, 1))
+        # the angles: cumulative sums over each group, as integer coefficient tuples over q
+        self.angle_of: list[tuple[int, ...] | None] = []
+        for i in range(self.n):
+            if kinds[i] != "R":
+                self.angle_of.append(None)
+                continue
+            g, s = self.group[i]
+            coeffs = list(self.angle_of[i - 1]) if g != i else [0] * self.n
+            coeffs[i] = s * sign
+            self.angle_of.append(_canonical(tuple(coeffs))[0])
+        angles = sorted({a for a in self.angle_of if a is not None})
+        geometry = set()
+        for t in twists:
+            geometry |= t.matrix.free_symbols
+        geometry |= home.matrix.free_symbols
+        if geometry & set(q):
+            raise _NotPolynomial("a joint variable occurs in the geometry")
+        # roots and functions of the geometry (sqrt(2)/2 in a rotation) become generators
+        self.frozen: dict = {}
+        for t in twists:
+            for e in t.matrix:
+                _frozen(e, self.frozen)
+        for e in home.matrix:
+            _frozen(e, self.frozen)
+        geometry = {x for x in geometry if not any(x in f.free_symbols for f in self.frozen)}
+        self.geometry = sorted(geometry, key=default_sort_key) + list(self.frozen.values())
+        self.thaw = {d: f for f, d in self.frozen.items()}
+        # ring generators: geometry symbols, prismatic lengths, then cos/sin per angle
+        self.cos_gen: dict[tuple, Any] = {}
+        self.sin_gen: dict[tuple, Any] = {}
+        gens: list = list(self.geometry)
+        prismatic = [q[i] for i in range(self.n) if kinds[i] == "P"]
+        gens += prismatic
+        for a in angles:
+            c, s_ = Dummy("c"), Dummy("s")
+            self.cos_gen[a], self.sin_gen[a] = c, s_
+            gens += [c, s_]
+        self.R, *self.gens = ring(gens, QQ)
+        self.gen_of = dict(zip(gens, self.gens, strict=True))
+        self.symbols = gens
+        try:
+            self.twists = [(self._vec(t.omega), self._vec(t.v_O)) for t in twists]
+            self.home = self._mat(home.R), self._vec(home.p)
+        except (CoercionFailed, GeneratorsError, PolynomialError, ValueError) as exc:
+            raise _NotPolynomial(str(exc)) from None
+
+    # --- conversions
+    def _el(self, e: Expr) -> Any:
+        e = _frozen(e, self.frozen)
+        return self.R.from_expr(e) if e.free_symbols else self.R(QQ.from_sympy(e))
+
+    def _vec(self, v: Any) -> list:
+        return [self._el(e) for e in v]
+
+    def _mat(self, m: Any) -> list:
+        return [[self._el(m[i, j]) for j in range(3)] for i in range(3)]
+
+    # --- 3-vector and 3x3 matrix arithmetic on ring elements
+    @staticmethod
+    def _mv(M: list, v: list) -> list:
+        return [M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2] for i in range(3)]
+
+    @staticmethod
+    def _mm(A: list, B: list) -> list:
+        return [[A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j] for j in range(3)]
+                for i in range(3)]
+
+    @staticmethod
+    def _cross(a: list, b: list) -> list:
+        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+    def _rot(self, w: list, angle: tuple | None, sgn: int) -> list:
+        """``R = I + sin K + (1 - cos) K^2`` about the unit ``w`` by the angle (``sgn`` its sign)."""
+        one, zero = self.R.one, self.R.zero
+        if angle is None:
+            return [[one, zero, zero], [zero, one, zero], [zero, zero, one]]
+        c, s = self.gen_of[self.cos_gen[angle]], self.gen_of[self.sin_gen[angle]] * sgn
+        K = [[zero, -w[2], w[1]], [w[2], zero, -w[0]], [-w[1], w[0], zero]]
+        K2 = self._mm(K, K)
+        return [[(one if i == j else zero) + s * K[i][j] + (one - c) * K2[i][j] for j in range(3)]
+                for i in range(3)]
+
+    def prefixes(self) -> list[tuple[list, list]]:
+        """``T_0 = I, T_1, ..., T_n``: the products of the first ``k`` exponentials."""
+        one, zero = self.R.one, self.R.zero
+        eye = [[one, zero, zero], [zero, one, zero], [zero, zero, one]]
+        out = [(eye, [zero, zero, zero])]
+        base = out[0]  # the product of the joints before the current group
+        for i in range(self.n):
+            w, v = self.twists[i]
+            g, _ = self.group[i]
+            if g == i:
+                base = out[i]
+            if self.kinds[i] == "P":
+                q = self.gen_of[self.q[i]]
+                R0, p0 = base
+                out.append((R0, [p0[k] + q * x for k, x in enumerate(self._mv(R0, v))]))
+                continue
+            # the group g..i: R(phi_i), translation sum_j (R(phi_{j-1}) - R(phi_j)) r_j
+            wg = self.twists[g][0]
+            prev = self._rot(wg, None, 1)
+            p = [zero, zero, zero]
+            for j in range(g, i + 1):
+                angle, sgn = _canonical(self.angle_of[j])
+                Rj = self._rot(wg, angle, sgn)
+                r = self._cross(*self.twists[j])  # omega x v_O: the axis point nearest the origin
+                d = [prev[k][0] - Rj[k][0] for k in range(3)], [prev[k][1] - Rj[k][1] for k in range(3)], \
+                    [prev[k][2] - Rj[k][2] for k in range(3)]
+                for k in range(3):
+                    p[k] += d[0][k] * r[0] + d[1][k] * r[1] + d[2][k] * r[2]
+                prev = Rj
+            R0, p0 = base
+            out.append((self._mm(R0, prev), [p0[k] + x for k, x in enumerate(self._mv(R0, p))]))
+        return out
+
+    def forward(self) -> tuple[list, list]:
+        R, p = self.prefixes()[-1]
+        HR, Hp = self.home
+        return self._mm(R, HR), [p[k] + x for k, x in enumerate(self._mv(R, Hp))]
+
+    def columns(self) -> list[list]:
+        """The space Jacobian's columns ``Ad(T_{i-1}) $_i`` as ring elements (omega; v)."""
+        pre = self.prefixes()
+        cols = []
+        for i in range(self.n):
+            R, p = pre[i]
+            w, v = self.twists[i]
+            Rw = self._mv(R, w)
+            Rv = self._mv(R, v)
+            cols.append(Rw + [Rv[k] + x for k, x in enumerate(self._cross(p, Rw))])
+        return cols
+
+    # --- back to expressions
+    def expressions(self, elements: list) -> list[Expr]:
+        writer = _Writer(self)
+        return [writer.expr(e) for e in elements]
+
+
+def _frozen(e: Expr, parts: dict) -> Expr:
+    """``e`` with each maximal non-polynomial part replaced by its ``Dummy`` in ``parts``."""
+    if e.is_Symbol or e.is_Rational:
+        return e
+    if e.is_Add or e.is_Mul or e.is_Pow and e.exp.is_Integer and e.exp >= 0:
+        return e.func(*(_frozen(a, parts) for a in e.args))
+    if e.is_Float or not e.is_finite and e.is_number:
+        raise _NotPolynomial("a float or an infinity in the geometry")
+    if e not in parts:
+        parts[e] = Dummy("g")
+    return parts[e]
+
+
+def _canonical(angle: tuple | None) -> tuple[Any, int]:
+    """The angle with its first nonzero coefficient positive, and the sign taken out."""
+    if angle is None:
+        return None, 1
+    for c in angle:
+        if c:
+            return (angle, 1) if c > 0 else (tuple(-x for x in angle), -1)
+    return angle, 1
+
+
+class _Writer:
+    """Ring elements back to compact SymPy expressions (the gathering and the nesting)."""
+
+    def __init__(self, engine: _Engine) -> None:
+        self.engine = engine
+        self.q = engine.q
+        # generator id -> SymPy expression; trig generators also -> (angle, "c" or "s")
+        self.expr_of: list[Expr] = []
+        self.trig: dict[int, tuple[tuple, str]] = {}
+        self.gen_id: dict[tuple[tuple, str], int] = {}
+        self.last: list[int] = []  # per generator: the last joint it involves (-1: none)
+        for sym in engine.symbols:
+            self.expr_of.append(engine.thaw.get(sym, sym))
+            self.last.append(-1)
+        for i, qi in enumerate(engine.q):
+            if engine.kinds[i] == "P":
+                self.last[engine.symbols.index(qi)] = self._order(i)
+        for a, c in engine.cos_gen.items():
+            self._register(a, "c", engine.symbols.index(c))
+            self._register(a, "s", engine.symbols.index(engine.sin_gen[a]))
+        self.cache: dict = {}
+
+    def _order(self, joint: int) -> int:
+        return joint
+
+    def _register(self, angle: tuple, kind: str, gid: int | None = None) -> int:
+        key = (angle, kind)
+        if key in self.gen_id:
+            return self.gen_id[key]
+        arg = Add(*(c * qi for c, qi in zip(angle, self.q, strict=True) if c))
+        e = cos(arg) if kind == "c" else sin(arg)
+        if gid is None:
+            gid = len(self.expr_of)
+            self.expr_of.append(e)
+            self.last.append(-1)
+        else:
+            self.expr_of[gid] = e
+        self.last[gid] = max(self._order(i) for i, c in enumerate(angle) if c)
+        self.trig[gid] = (angle, kind)
+        self.gen_id[key] = gid
+        return gid
+
+    # --- the polynomial as a dict {monomial: coefficient}, a monomial a sorted tuple of (gen, exp)
+    def to_dict(self, P: Any) -> dict:
+        out = {}
+        for monom, coeff in P.terms():
+            out[tuple((g, k) for g, k in enumerate(monom) if k)] = coeff
+        return out
+
+    def expr(self, P: Any) -> Expr:
+        D = self.to_dict(P)
+        D = self.gather(D)
+        return self.write(D)
+
+    # --- step 2: the angle-sum formulas and the Pythagorean identity
+    def gather(self, D: dict) -> dict:
+        changed = True
+        while changed:
+            changed = False
+            for m in list(D):
+                if m not in D:
+                    continue
+                trig = [g for g, k in m if k == 1 and g in self.trig]
+                for g1, g2 in combinations(trig, 2):
+                    if self._gather_pair(D, m, g1, g2):
+                        changed = True
+                        break
+            if not changed:
+                changed = self._pythagoras(D)
+        return D
+
+    def _gather_pair(self, D: dict, m: tuple, g1: int, g2: int) -> bool:
+        (A, k1), (B, k2) = self.trig[g1], self.trig[g2]
+        if A == B:
+            return False
+        rest = dict(m)
+        del rest[g1], rest[g2]
+        alpha = D[m]
+        if k1 == k2:  # cos A cos B with sin A sin B (or the other way round)
+            other = "s" if k1 == "c" else "c"
+            h1, h2 = self._register(A, other), self._register(B, other)
+            partner = _monomial(rest, h1, h2)
+            beta = D.get(partner)
+            if beta is None or (beta != alpha and beta != -alpha):
+                return False
+            cc, ss = (alpha, beta) if k1 == "c" else (beta, alpha)
+            # cc cA cB + ss sA sB: cos(A - B) when ss == cc, cos(A + B) when ss == -cc
+            angle = _add(A, B, -1 if ss == cc else 1)
+            new = [(angle, "c", cc)]
+        else:  # sin A cos B with cos A sin B
+            if k1 == "c":
+                A, B, g1, g2 = B, A, g2, g1
+            h1, h2 = self._register(A, "c"), self._register(B, "s")
+            partner = _monomial(rest, h1, h2)
+            beta = D.get(partner)
+            if beta is None or (beta != alpha and beta != -alpha):
+                return False
+            # alpha sA cB + beta cA sB: sin(A + B) when beta == alpha, sin(A - B) when -alpha
+            angle = _add(A, B, 1 if beta == alpha else -1)
+            new = [(angle, "s", alpha)]
+        del D[m], D[partner]
+        for angle, kind, coeff in new:
+            canon, sgn = _canonical(angle)
+            if not any(canon):  # cos(0) = 1, sin(0) = 0
+                if kind == "c":
+                    _add_term(D, tuple(sorted(rest.items())), coeff)
+                continue
+            if kind == "s":
+                coeff = coeff * sgn
+            g = self._register(canon, kind)
+            _add_term(D, _monomial(rest, g), coeff)
+        return True
+
+    def _pythagoras(self, D: dict) -> bool:
+        """``sin(A)**2 -> 1 - cos(A)**2`` (or the reverse) for an angle where that gives fewer terms."""
+        squares = {g for m in D for g, k in m if k >= 2 and g in self.trig}
+        for g in sorted(squares):
+            angle, kind = self.trig[g]
+            h = self._register(angle, "s" if kind == "c" else "c")
+            if not any(x == h and k >= 2 for m in D for x, k in m):
+                continue
+            new = _substitute_square(D, g, h)
+            if len(new) < len(D):
+                D.clear()
+                D.update(new)
+                return True
+        return False
+
+    # --- step 3: nested by the joints, last joint outermost, or flat where smaller
+    def write(self, D: dict) -> Expr:
+        """``D`` as an expression: the plans of the estimate, the best measured by ``count_ops``."""
+        self._plan_uncached(D)
+        forms = [self._build(plan) for _, plan in self.options]
+        costs = [count_ops(x) for x in forms]
+        return forms[costs.index(min(costs))]
+
+    def _plan(self, D: dict) -> tuple[int, tuple]:
+        """The cheapest way to write ``D`` (its cost in ``count_ops``' units, and the plan)."""
+        key = tuple(sorted(D.items()))
+        hit = self.cache.get(key)
+        if hit is not None:
+            return hit
+        out = self._plan_uncached(D)
+        self.cache[key] = out
+        return out
+
+    def _plan_uncached(self, D: dict) -> tuple[int, tuple]:
+        flat = (self._sum_cost(D), ("flat", D))
+        self.options = [flat]
+        if not D:
+            return flat
+        if len(D) == 1:
+            return flat
+        best = flat
+        options = [flat]
+        content, common, rest = _pull(D)
+        outer = self._coeff_cost(content) + self._monomial_cost(common)
+        n_outer = (content != 1) + len(common)
+        if n_outer:
+            pulled = outer + n_outer + self._sum_cost(rest)
+            option = pulled, ("pulled", content, common, ("flat", rest))
+            options.append(option)
+            if pulled < best[0]:
+                best = option
+        # split by the last joint met in the terms
+        last = max((self.last[g] for m in rest for g, _ in m), default=-1)
+        if last >= 0:
+            parts: dict = {}
+            for m, c in rest.items():
+                inner = tuple((g, k) for g, k in m if self.last[g] == last)
+                others = tuple((g, k) for g, k in m if self.last[g] != last)
+                parts.setdefault(inner, {})[others] = c
+            if len(parts) > 1 or () not in parts:
+                cost = len(parts) - 1
+                plans = []
+                for k, v in parts.items():
+                    sub_cost, sub = self._plan(v)
+                    negative = sub[0] == "pulled" and sub[1] < 0 or sub[0] == "flat" and len(sub[1]) == 1 \
+                        and next(iter(sub[1].values())) < 0
+                    cost += sub_cost + self._monomial_cost(k) + (1 if k and not _is_unit(sub) else 0) \
+                        - (1 if negative and len(parts) > 1 else 0)
+                    plans.append((k, sub))
+                cost += outer + n_outer
+                option = cost, ("pulled", content, common, ("split", plans))
+                options.append(option)
+                if cost < best[0]:
+                    best = option
+        self.options = options
+        return best
+
+    def _build(self, plan: tuple) -> Expr:
+        kind = plan[0]
+        if kind == "flat":
+            return Add(*(self._term(m, c) for m, c in plan[1].items()))
+        if kind == "pulled":
+            _, content, common, inner = plan
+            return QQ.to_sympy(content) * self._monomial_expr(common) * self._build(inner)
+        return Add(*(self._monomial_expr(k) * self._build(sub) for k, sub in plan[1]))
+
+    def _gen_cost(self, g: int) -> int:
+        if g not in self.trig:
+            return 0
+        angle = self.trig[g][0]
+        terms = [c for c in angle if c]
+        return 1 + (len(terms) - 1) + sum(1 for c in terms if abs(c) != 1)
+
+    def _monomial_cost(self, m: tuple) -> int:
+        if not m:
+            return 0
+        return len(m) - 1 + sum(self._gen_cost(g) + (1 if k > 1 else 0) for g, k in m)
+
+    @staticmethod
+    def _coeff_cost(c: Any) -> int:
+        cost = 0
+        if c.denominator != 1:
+            cost += 1
+        if abs(c.numerator) != 1:
+            cost += 1
+        if c < 0:
+            cost += 1
+        return cost
+
+    def _sum_cost(self, D: dict) -> int:
+        cost = max(len(D) - 1, 0)
+        for m, c in D.items():
+            factors = len(m) + (1 if abs(c.numerator) != 1 else 0)
+            cost += max(factors - 1, 0) + (1 if c.denominator != 1 else 0)
+            cost += sum(self._gen_cost(g) + (1 if k > 1 else 0) for g, k in m)
+            if c < 0 and len(D) == 1:
+                cost += 1
+        return cost
+
+    def _monomial_expr(self, m: tuple) -> Expr:
+        return Mul(*(self.expr_of[g] ** k for g, k in m))
+
+    def _term(self, m: tuple, c: Any) -> Expr:
+        return QQ.to_sympy(c) * self._monomial_expr(m)
+
+
+def _is_unit(plan: tuple) -> bool:
+    """Whether the plan writes the constant 1 (so that ``k * 1`` costs no product)."""
+    return plan[0] == "flat" and len(plan[1]) == 1 and plan[1].get(()) == 1
+
+
+def _add(A: tuple, B: tuple, sgn: int) -> tuple:
+    return tuple(a + sgn * b for a, b in zip(A, B, strict=True))
+
+
+def _monomial(rest: dict, *gens: int) -> tuple:
+    m = dict(rest)
+    for g in gens:
+        m[g] = m.get(g, 0) + 1
+    return tuple(sorted(m.items()))
+
+
+def _add_term(D: dict, m: tuple, c: Any) -> None:
+    total = D.get(m, QQ.zero) + c
+    if total:
+        D[m] = total
+    else:
+        D.pop(m, None)
+
+
+def _substitute_square(D: dict, g: int, h: int) -> dict:
+    """``D`` with ``x_g**2 -> 1 - x_h**2`` applied until ``x_g``'s exponent is below 2."""
+    out: dict = {}
+    work = list(D.items())
+    while work:
+        m, c = work.pop()
+        md = dict(m)
+        k = md.get(g, 0)
+        if k < 2:
+            _add_term(out, m, c)
+            continue
+        md[g] = k - 2
+        if not md[g]:
+            del md[g]
+        work.append((tuple(sorted(md.items())), c))
+        md2 = dict(md)
+        md2[h] = md2.get(h, 0) + 2
+        work.append((tuple(sorted(md2.items())), -c))
+    return out
+
+
+def _pull(D: dict) -> tuple[Any, tuple, dict]:
+    """The content (sign of the first term), the common monomial and the rest of ``D``."""
+    from math import gcd
+
+    nums = [c.numerator for c in D.values()]
+    dens = [c.denominator for c in D.values()]
+    g = 0
+    for x in nums:
+        g = gcd(g, int(x))
+    lcm = 1
+    for d in dens:
+        lcm = lcm * int(d) // gcd(lcm, int(d))
+    content = QQ(g, lcm)
+    first = min(D, key=lambda m: m)
+    if D[first] < 0:
+        content = -content
+    common: dict = {}
+    monoms = list(D)
+    for gid, k in monoms[0]:
+        low = min(dict(m).get(gid, 0) for m in monoms)
+        if low:
+            common[gid] = low
+    rest = {}
+    for m, c in D.items():
+        md = dict(m)
+        for gid, k in common.items():
+            md[gid] -= k
+            if not md[gid]:
+                del md[gid]
+        rest[tuple(sorted(md.items()))] = c / content
+    return content, tuple(sorted(common.items())), rest
+
+
+def fast_forward(twists: list, home: Any, q: tuple) -> tuple[ImmutableMatrix, ImmutableMatrix] | None:
+    """``(R, p)`` of the forward kinematics by the ring, or None when the chain is outside its class."""
+    engine = _engine(twists, home, q)
+    if engine is None:
+        return None
+    R, p = engine.forward()
+    entries = engine.expressions([x for row in R for x in row] + p)
+    return ImmutableMatrix(3, 3, entries[:9]), ImmutableMatrix(3, 1, entries[9:])
+
+
+def fast_space_jacobian(twists: list, home: Any, q: tuple) -> ImmutableMatrix | None:
+    """The space Jacobian by the ring, or None when the chain is outside its class."""
+    engine = _engine(twists, home, q)
+    if engine is None:
+        return None
+    cols = engine.columns()
+    entries = engine.expressions([x for col in cols for x in col])
+    return ImmutableMatrix(engine.n, 6, entries).T
+
+
+def _engine(twists: list, home: Any, q: tuple) -> _Engine | None:
+    if not all(isinstance(x, Symbol) for x in q) or len(set(q)) != len(q):
+        return None
+    try:
+        return _Engine(list(twists), home, q)
+    except _NotPolynomial:
+        return None
+
+
