@@ -439,6 +439,9 @@ class _Writer:
                 plans = []
                 for k, v in parts.items():
                     sub_cost, sub = self._plan(v)
+                    if sub[0] == "flat" and len(sub[1]) > 1 and all(c < 0 for c in sub[1].values()):
+                        # -(a + b) k: the sign joins the outer sum as a subtraction
+                        sub = ("pulled", -QQ.one, (), ("flat", {m: -c for m, c in sub[1].items()}))
                     negative = sub[0] == "pulled" and sub[1] < 0 or sub[0] == "flat" and len(sub[1]) == 1 \
                         and next(iter(sub[1].values())) < 0
                     cost += sub_cost + self._monomial_cost(k) + (1 if k and not _is_unit(sub) else 0) \
@@ -458,8 +461,16 @@ class _Writer:
             return Add(*(self._term(m, c) for m, c in plan[1].items()))
         if kind == "pulled":
             _, content, common, inner = plan
-            return QQ.to_sympy(content) * self._monomial_expr(common) * self._build(inner)
-        return Add(*(self._monomial_expr(k) * self._build(sub) for k, sub in plan[1]))
+            return Mul(QQ.to_sympy(content), self._monomial_expr(common), self._build(inner))
+        return Add(*(self._product(k, sub) for k, sub in plan[1]))
+
+    def _product(self, k: tuple, sub: tuple) -> Expr:
+        """``k * sub`` as one product (``-(a + b)*k`` stays so, where ``-1*(a + b)`` would distribute)."""
+        if sub[0] == "pulled":
+            _, content, common, inner = sub
+            return Mul(QQ.to_sympy(content), self._monomial_expr(common), self._monomial_expr(k),
+                       self._build(inner))
+        return self._monomial_expr(k) * self._build(sub)
 
     def _gen_cost(self, g: int) -> int:
         if g not in self.trig:
@@ -547,7 +558,7 @@ def _substitute_square(D: dict, g: int, h: int) -> dict:
 
 
 def _pull(D: dict) -> tuple[Any, tuple, dict]:
-    """The content (sign of the first term), the common monomial and the rest of ``D``."""
+    """The content (negative when every term is), the common monomial and the rest of ``D``."""
     from math import gcd
 
     nums = [c.numerator for c in D.values()]
@@ -559,8 +570,7 @@ def _pull(D: dict) -> tuple[Any, tuple, dict]:
     for d in dens:
         lcm = lcm * int(d) // gcd(lcm, int(d))
     content = QQ(g, lcm)
-    first = min(D, key=lambda m: m)
-    if D[first] < 0:
+    if all(c < 0 for c in D.values()):  # -(a + b) rather than (-a - b): one operation fewer
         content = -content
     common: dict = {}
     monoms = list(D)

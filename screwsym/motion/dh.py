@@ -173,7 +173,7 @@ def dh_twists_and_home(rows: Sequence[Sequence[ScalarLike]], convention: str = "
     (Twist([0, 0, 1], [0, 0, 0]), Twist([0, 0, 0], [0, -1, 0]))
     >>> q1, q2 = symbols("q1 q2", real=True)
     >>> arm.forward([q1, q2]).p.T
-    Matrix([[(q2 + 1)*sin(q1), (-q2 - 1)*cos(q1), 0]])
+    Matrix([[(q2 + 1)*sin(q1), -(q2 + 1)*cos(q1), 0]])
 
     Parameters
     ==========
