@@ -84,6 +84,7 @@ class _Engine:
     def __init__(self, twists: list, home: Any, q: tuple, sign: int = 1) -> None:
         self.n = len(twists)
         self.q = q
+        self.sign = sign
         kinds = [_joint_kind(t.omega, t.v_O) for t in twists]
         if None in kinds:
             raise _NotPolynomial("a joint is neither a unit revolute nor a prismatic twist")
@@ -110,8 +111,8 @@ class _Engine:
             g, s = self.group[i]
             coeffs = list(self.angle_of[i - 1]) if g != i else [0] * self.n
             coeffs[i] = s * sign
-            self.angle_of.append(_canonical(tuple(coeffs))[0])
-        angles = sorted({a for a in self.angle_of if a is not None})
+            self.angle_of.append(tuple(coeffs))
+        angles = sorted({_canonical(a)[0] for a in self.angle_of if a is not None})
         geometry = set()
         for t in twists:
             geometry |= t.matrix.free_symbols
@@ -195,7 +196,7 @@ class _Engine:
             if g == i:
                 base = out[i]
             if self.kinds[i] == "P":
-                q = self.gen_of[self.q[i]]
+                q = self.gen_of[self.q[i]] * self.sign
                 R0, p0 = base
                 out.append((R0, [p0[k] + q * x for k, x in enumerate(self._mv(R0, v))]))
                 continue
@@ -609,11 +610,24 @@ def fast_space_jacobian(twists: list, home: Any, q: tuple) -> ImmutableMatrix | 
     return ImmutableMatrix(engine.n, 6, entries).T
 
 
-def _engine(twists: list, home: Any, q: tuple) -> _Engine | None:
+def fast_body_jacobian(body_twists: list, home: Any, q: tuple) -> ImmutableMatrix | None:
+    """The body Jacobian by the ring: column ``i`` is ``Ad(exp(-B_n q_n) ... exp(-B_{i+1} q_{i+1})) B_i``.
+
+    The space Jacobian's recursion run on the body twists from the tip, with the angles negated.
+    """
+    engine = _engine(list(reversed(body_twists)), home, tuple(reversed(q)), sign=-1)
+    if engine is None:
+        return None
+    cols = engine.columns()[::-1]
+    entries = engine.expressions([x for col in cols for x in col])
+    return ImmutableMatrix(engine.n, 6, entries).T
+
+
+def _engine(twists: list, home: Any, q: tuple, sign: int = 1) -> _Engine | None:
     if not all(isinstance(x, Symbol) for x in q) or len(set(q)) != len(q):
         return None
     try:
-        return _Engine(list(twists), home, q)
+        return _Engine(list(twists), home, q, sign)
     except _NotPolynomial:
         return None
 

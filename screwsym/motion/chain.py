@@ -322,8 +322,10 @@ class Chain(ScrewsymBasic):
         frame = check_choice(frame, "frame", ("space", "body"))
         if frame == "space":
             fast = _poe.fast_space_jacobian(self.twists, self.home, q)
-            if fast is not None:
-                return fast
+        else:
+            fast = _poe.fast_body_jacobian(self.body_twists(), self.home, q)
+        if fast is not None:
+            return fast
         return self._jacobian_stepwise(q, frame)
 
     def _jacobian_stepwise(self, q: tuple[Expr, ...], frame: str) -> ImmutableMatrix:

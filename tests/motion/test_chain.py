@@ -149,3 +149,149 @@ def test_bad_arguments(rph):
         rph.jacobian([0, "1", 0])
     with pytest.raises(ValueError, match="frame: expected one of 'space', 'body', got 'world'"):
         rph.jacobian(q, frame="world")
+
+
+# ---------------------------------------------------------------- the ring path (issue 23 item 1)
+#: rational points (c, s) of the unit circle: exact values of cos and sin of an angle
+_CIRCLE = [(Rational(3, 5), Rational(4, 5)), (Rational(5, 13), Rational(12, 13)),
+           (Rational(8, 17), Rational(15, 17)), (Rational(7, 25), Rational(24, 25)),
+           (Rational(20, 29), Rational(21, 29))]
+
+
+def _at_circle_points(angles, seed, extra=None):
+    """A map ``cos(q_i) -> c_i, sin(q_i) -> s_i`` at random exact points of the circle (signs too)."""
+    import random
+
+    rng = random.Random(seed)
+    point = dict(extra or {})
+    for qi in angles:
+        c, s = rng.choice(_CIRCLE)
+        point[cos(qi)] = c * rng.choice([1, -1])
+        point[sin(qi)] = s * rng.choice([1, -1])
+    return point
+
+
+def _exact_values(M, point):
+    """``M`` at the point: sums of angles expanded (``expand_trig``), then the exact values put in."""
+    from sympy import expand_trig
+
+    return M.applyfunc(lambda e: expand(expand_trig(e).xreplace(point)))
+
+
+def _raw_products(chain, qs, frame="space"):
+    """T(q) and the Jacobian as plain products of ``exp6`` and adjoints, nothing tidied in between."""
+    T = Transform.identity()
+    cols = []
+    for twist, qi in zip(chain.twists, qs, strict=True):
+        cols.append(T.adjoint() * twist.matrix)
+        T = T @ exp6(twist, qi)
+    T = T @ chain.home
+    J = ImmutableMatrix.hstack(*cols)
+    if frame == "body":
+        J = T.inverse().adjoint() * J
+    return T.matrix, J
+
+
+def _agree(fast, raw, angles, seeds, extra=None):
+    return all(_exact_values(fast, _at_circle_points(angles, s, extra)) ==
+               _exact_values(raw, _at_circle_points(angles, s, extra)) for s in seeds)
+
+
+def test_the_ring_path_equals_the_products_on_the_ur5_and_is_no_larger():
+    """The UR5 of Lynch & Park (2017, Example 4.5): forward kinematics and space Jacobian.
+
+    Equal to the plain product of exponentials at exact points of the circle, as small as the
+    stepwise tidied products were (count_ops 242 and 343 before issue 23), and the comparison
+    rejects a wrong entry.
+    """
+    from screwsym.motion.chain import ur5
+
+    arm = ur5()
+    qs = symbols("q1:7", real=True)
+    T, Js = arm.forward(qs).matrix, arm.jacobian(qs)
+    T0, J0 = _raw_products(arm, qs)
+    assert _agree(T, T0, qs, [1]) and _agree(Js, J0, qs, [2])
+    assert count_ops(T) <= 242 and count_ops(Js) <= 343
+    assert Js[0, 1] == -sin(qs[0])  # the second axis turns with the first joint alone
+    wrong = Js.as_mutable()
+    wrong[3, 4] += sin(qs[1] + qs[2]) ** 2 + cos(qs[1] + qs[2]) ** 2 - 1 + sin(qs[0] - qs[5]) / 1000
+    assert not _agree(wrong, J0, qs, [1])
+
+
+@pytest.mark.slow
+def test_the_ring_path_body_jacobian_of_the_ur5():
+    """The body Jacobian by the ring (the space recursion on the body twists, angles negated)."""
+    from screwsym.motion.chain import ur5
+
+    arm = ur5()
+    qs = symbols("q1:7", real=True)
+    assert _agree(arm.jacobian(qs, frame="body"), _raw_products(arm, qs, "body")[1], qs, [3])
+
+
+def test_the_ring_path_body_jacobian_with_a_prismatic_joint():
+    """An RPR arm from a DH table: body Jacobian equal to Ad(T^-1) J_s of the plain products."""
+    arm = Chain.from_dh([(0, pi / 2, 0, 0), (0, 0, 1, 0), (1, 0, 0, 0)], joints="RPR")
+    assert _agree(arm.jacobian(q, frame="body"), _raw_products(arm, q, "body")[1], q, [4],
+                  {q2: Rational(3, 7)})
+    wrong = arm.jacobian(q, frame="body").as_mutable()
+    wrong[4, 1] += q2 * sin(q3) / 5
+    assert not _agree(wrong, _raw_products(arm, q, "body")[1], q, [4], {q2: Rational(3, 7)})
+
+
+def test_the_ring_path_gathers_sums_of_angles_of_parallel_joints():
+    """A planar 3R arm: the end point is ``sum_k l_k (cos, sin)(q1 + ... + qk)``."""
+    arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+                 Twist.rotation([0, 0, 1], point=[2, 0, 0]),
+                 Twist.rotation([0, 0, 1], point=[3, 0, 0])], Transform.translation([4, 0, 0]))
+    p = arm.forward(q).p
+    assert p[0] == 2 * cos(q1) + cos(q1 + q2) + cos(q1 + q2 + q3)
+    assert p[1] == 2 * sin(q1) + sin(q1 + q2) + sin(q1 + q2 + q3)
+    # an axis turned the other way: the angle is a difference
+    flipped = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+                     Twist.rotation([0, 0, -1], point=[1, 0, 0])], Transform.translation([2, 0, 0]))
+    assert flipped.forward([q1, q2]).p[0] == cos(q1) + cos(q1 - q2)
+
+
+def test_chains_outside_the_ring_path_take_the_stepwise_one(rph):
+    """Helical joints, numbers or repeated symbols as joint values: the general path, same answers."""
+    from screwsym.motion import _poe
+
+    assert _poe.fast_forward(rph.twists, rph.home, q) is None  # the helical joint
+    arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+                 Twist.rotation([0, 0, 1], point=[1, 0, 0])], Transform.translation([2, 0, 0]))
+    assert _poe.fast_forward(arm.twists, arm.home, (q1, q1)) is None
+    assert expand(arm.forward([q1, q1]).p[0] - cos(q1) - 2 * cos(q1) ** 2 + 1) == 0
+    assert arm.forward([pi / 2, 0]).p.T == Matrix([[0, 2, 0]])
+
+
+def test_a_generic_6r_with_symbolic_lengths_and_offsets():
+    """Issue 23 item 2: DH links with symbolic a_i, d_i (UR-like twists alpha), tidied in seconds.
+
+    Equal to the plain product at exact points with rational geometry.
+    """
+    a = symbols("a1:7", real=True)
+    d = symbols("d1:7", real=True)
+    alpha = [pi / 2, 0, 0, pi / 2, -pi / 2, 0]
+    arm = Chain.from_dh([(a[i], alpha[i], d[i], 0) for i in range(6)])
+    qs = symbols("q1:7", real=True)
+    T, J = arm.forward(qs).matrix, arm.jacobian(qs)
+    T0, J0 = _raw_products(arm, qs)
+    geometry = {x: Rational(k + 2, 7) for k, x in enumerate(a + d)}
+    assert _agree(T, T0, qs, [5], geometry) and _agree(J, J0, qs, [6], geometry)
+    assert count_ops(T) <= count_ops(T0) and count_ops(J) <= count_ops(J0)
+
+
+@pytest.mark.slow
+def test_the_ring_path_on_the_franka_panda():
+    """The Panda (panda.urdf, link0 to hand_tcp, pi/12 angles): equal to the plain products, and no
+    larger than the stepwise tidied forms were before issue 23 (count_ops 1608 and 1652)."""
+    pytest.importorskip("defusedxml")
+    from pathlib import Path
+
+    urdf = Path(__file__).resolve().parent.parent / "data" / "urdf" / "panda.urdf"
+    arm = Chain.from_urdf(urdf, "panda_link0", "panda_hand_tcp", angles="pi/12")
+    qs = symbols("q1:8", real=True)
+    T, J = arm.forward(qs).matrix, arm.jacobian(qs)
+    T0, J0 = _raw_products(arm, qs)
+    assert _agree(T, T0, qs, [7]) and _agree(J, J0, qs, [8])
+    assert count_ops(T) <= 1608 and count_ops(J) <= 1652
