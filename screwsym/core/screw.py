@@ -193,13 +193,18 @@ class Screw(ScrewsymBasic):
 
     @classmethod
     def _check_parts(cls, S: ImmutableMatrix, S0: ImmutableMatrix,
-                     label: str | tuple[str, str]) -> None:
-        """Kinds that constrain ``(S; S0)`` raise here, naming ``label`` (a name, or the parts')."""
+                     label: str | tuple[str, str], incident: bool = False) -> None:
+        """Kinds that constrain ``(S; S0)`` raise here, naming ``label`` (a name, or the parts').
+
+        ``incident``: ``S . S0 = 0`` holds identically by the construction (``S0 = r x S``),
+        so a line kind need not prove it again.
+        """
 
     @classmethod
-    def _rebuild(cls, S: ImmutableMatrix, S0: ImmutableMatrix, name: str) -> Self:
+    def _rebuild(cls, S: ImmutableMatrix, S0: ImmutableMatrix, name: str,
+                 incident: bool = False) -> Self:
         """``cls`` from checked parts of the argument ``name`` (errors name the argument)."""
-        cls._check_parts(S, S0, name)
+        cls._check_parts(S, S0, name, incident)
         return ScrewsymBasic.__new__(cls, S, S0)
 
     @classmethod
@@ -297,7 +302,8 @@ class Screw(ScrewsymBasic):
         m = check_scalar(magnitude, "magnitude")
         # a kind that refuses the result (a line vector of zero direction) names the culprit
         label = "magnitude" if is_zero(m) is True else "point, direction, pitch"
-        return cls._rebuild(m * S_, m * dual_part(r, S_, h), label)
+        # with h = 0 the moment is m r x S: S . S0 = 0 identically, not proved again
+        return cls._rebuild(m * S_, m * dual_part(r, S_, h), label, incident=h == 0)
 
     @classmethod
     def through(cls, A: VectorLike, B: VectorLike) -> Self:
@@ -315,7 +321,7 @@ class Screw(ScrewsymBasic):
         if is_zero_vector(B - A) is True:
             raise ValueError(f"A, B: expected two distinct points, got A = B = {list(A)}")
         S_ = B - A
-        return cls._rebuild(S_, dual_part(A, S_), "A, B")
+        return cls._rebuild(S_, dual_part(A, S_), "A, B", incident=True)
 
     @classmethod
     def couple(cls, C: VectorLike) -> Self:
