@@ -341,12 +341,18 @@ class _Writer:
         (A, k1), (B, k2) = self.trig[g1], self.trig[g2]
         if A == B:
             return False
+        if k1 == k2:
+            other = "s" if k1 == "c" else "c"
+            h1, h2 = self.gen_id.get((A, other)), self.gen_id.get((B, other))
+        else:
+            h1, h2 = (self.gen_id.get((A, "c")), self.gen_id.get((B, "s"))) if k1 == "s" else \
+                (self.gen_id.get((A, "s")), self.gen_id.get((B, "c")))
+        if h1 is None or h2 is None:  # the partner term cannot occur
+            return False
         rest = dict(m)
         del rest[g1], rest[g2]
         alpha = D[m]
         if k1 == k2:  # cos A cos B with sin A sin B (or the other way round)
-            other = "s" if k1 == "c" else "c"
-            h1, h2 = self._register(A, other), self._register(B, other)
             partner = _monomial(rest, h1, h2)
             beta = D.get(partner)
             if beta is None or (beta != alpha and beta != -alpha):
@@ -358,7 +364,7 @@ class _Writer:
         else:  # sin A cos B with cos A sin B
             if k1 == "c":
                 A, B, g1, g2 = B, A, g2, g1
-            h1, h2 = self._register(A, "c"), self._register(B, "s")
+                h1, h2 = h2, h1
             partner = _monomial(rest, h1, h2)
             beta = D.get(partner)
             if beta is None or (beta != alpha and beta != -alpha):
