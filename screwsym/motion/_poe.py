@@ -41,8 +41,9 @@ formula", 1984.  Lynch & Park, *Modern Robotics*, 2017, Sections 4.1, 5.1.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from itertools import combinations
-from typing import Any
+from typing import Any, cast
 
 from sympy import (
     Add,
@@ -50,7 +51,6 @@ from sympy import (
     Expr,
     ImmutableMatrix,
     Mul,
-    S,
     Symbol,
     cos,
     count_ops,
@@ -112,7 +112,8 @@ class _Engine:
                 self.angle_of.append(None)
                 continue
             g, s = self.group[i]
-            coeffs = list(self.angle_of[i - 1]) if g != i else [0] * self.n
+            before = self.angle_of[i - 1] if g != i else None
+            coeffs = list(before) if before is not None else [0] * self.n
             coeffs[i] = s * sign
             self.angle_of.append(tuple(coeffs))
         angles = sorted({_canonical(a)[0] for a in self.angle_of if a is not None})
@@ -413,7 +414,7 @@ class _Writer:
         costs = [count_ops(x) for x in forms]
         return forms[costs.index(min(costs))]
 
-    def _plan(self, D: dict) -> tuple[int, tuple]:
+    def _plan(self, D: dict) -> tuple[int, Any]:
         """The cheapest way to write ``D`` (its cost in ``count_ops``' units, and the plan)."""
         key = tuple(sorted(D.items()))
         hit = self.cache.get(key)
@@ -423,21 +424,21 @@ class _Writer:
         self.cache[key] = out
         return out
 
-    def _plan_uncached(self, D: dict) -> tuple[int, tuple]:
-        flat = (self._sum_cost(D), ("flat", D))
-        self.options = [flat]
+    def _plan_uncached(self, D: dict) -> tuple[int, Any]:
+        flat: tuple[int, Any] = (self._sum_cost(D), ("flat", D))
+        self.options: list[tuple[int, Any]] = [flat]
         if not D:
             return flat
         if len(D) == 1:
             return flat
         best = flat
-        options = [flat]
+        options: list[tuple[int, Any]] = [flat]
         content, common, rest = _pull(D)
         outer = self._coeff_cost(content) + self._monomial_cost(common)
         n_outer = (content != 1) + len(common)
         if n_outer:
             pulled = outer + n_outer + self._sum_cost(rest)
-            option = pulled, ("pulled", content, common, ("flat", rest))
+            option: tuple[int, Any] = (pulled, ("pulled", content, common, ("flat", rest)))
             options.append(option)
             if pulled < best[0]:
                 best = option
@@ -454,6 +455,7 @@ class _Writer:
                 plans = []
                 for k, v in parts.items():
                     sub_cost, sub = self._plan(v)
+                    sub = cast(Any, sub)
                     if sub[0] == "flat" and len(sub[1]) > 1 and all(c < 0 for c in sub[1].values()):
                         # -(a + b) k: the sign joins the outer sum as a subtraction
                         sub = ("pulled", -QQ.one, (), ("flat", {m: -c for m, c in sub[1].items()}))
@@ -463,7 +465,7 @@ class _Writer:
                         - (1 if negative and len(parts) > 1 else 0)
                     plans.append((k, sub))
                 cost += outer + n_outer
-                option = cost, ("pulled", content, common, ("split", plans))
+                option = (cost, ("pulled", content, common, ("split", plans)))
                 options.append(option)
                 if cost < best[0]:
                     best = option
@@ -589,7 +591,7 @@ def _pull(D: dict) -> tuple[Any, tuple, dict]:
         content = -content
     common: dict = {}
     monoms = list(D)
-    for gid, k in monoms[0]:
+    for gid, _k in monoms[0]:
         low = min(dict(m).get(gid, 0) for m in monoms)
         if low:
             common[gid] = low
@@ -604,7 +606,7 @@ def _pull(D: dict) -> tuple[Any, tuple, dict]:
     return content, tuple(sorted(common.items())), rest
 
 
-def fast_forward(twists: list, home: Any, q: tuple) -> tuple[ImmutableMatrix, ImmutableMatrix] | None:
+def fast_forward(twists: Sequence[Any], home: Any, q: tuple) -> tuple[ImmutableMatrix, ImmutableMatrix] | None:
     """``(R, p)`` of the forward kinematics by the ring, or None when the chain is outside its class."""
     engine = _engine(twists, home, q)
     if engine is None:
@@ -614,7 +616,7 @@ def fast_forward(twists: list, home: Any, q: tuple) -> tuple[ImmutableMatrix, Im
     return ImmutableMatrix(3, 3, entries[:9]), ImmutableMatrix(3, 1, entries[9:])
 
 
-def fast_space_jacobian(twists: list, home: Any, q: tuple) -> ImmutableMatrix | None:
+def fast_space_jacobian(twists: Sequence[Any], home: Any, q: tuple) -> ImmutableMatrix | None:
     """The space Jacobian by the ring, or None when the chain is outside its class."""
     engine = _engine(twists, home, q)
     if engine is None:
@@ -624,7 +626,7 @@ def fast_space_jacobian(twists: list, home: Any, q: tuple) -> ImmutableMatrix | 
     return ImmutableMatrix(engine.n, 6, entries).T
 
 
-def fast_body_jacobian(body_twists: list, home: Any, q: tuple) -> ImmutableMatrix | None:
+def fast_body_jacobian(body_twists: Sequence[Any], home: Any, q: tuple) -> ImmutableMatrix | None:
     """The body Jacobian by the ring: column ``i`` is ``Ad(exp(-B_n q_n) ... exp(-B_{i+1} q_{i+1})) B_i``.
 
     The space Jacobian's recursion run on the body twists from the tip, with the angles negated.
@@ -637,7 +639,7 @@ def fast_body_jacobian(body_twists: list, home: Any, q: tuple) -> ImmutableMatri
     return ImmutableMatrix(engine.n, 6, entries).T
 
 
-def _engine(twists: list, home: Any, q: tuple, sign: int = 1) -> _Engine | None:
+def _engine(twists: Sequence[Any], home: Any, q: tuple, sign: int = 1) -> _Engine | None:
     if not all(isinstance(x, Symbol) for x in q) or len(set(q)) != len(q):
         return None
     try:
