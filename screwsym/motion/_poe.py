@@ -13,7 +13,7 @@ rings, instead of as expression trees tidied after every factor:
 1. **Sums of angles from the structure.**  Consecutive revolute joints about
    parallel axes (``omega_{j+1} = +-omega_j``) form a group whose product is a
    turn by the cumulative angle ``phi_k = q_g +- ... +- q_k`` about the common
-   direction: ``exp($_g q_g) ... exp($_k q_k) = (R(phi_k), sum_j (R(phi_{j-1}) -
+   direction: ``exp6($_g, q_g) ... exp6($_k, q_k) = (R(phi_k), sum_j (R(phi_{j-1}) -
    R(phi_j)) r_j)`` for points ``r_j`` of the axes.  ``R(phi) = I + sin(phi) K +
    (1 - cos(phi)) K^2`` (Rodrigues) with ``cos(phi)`` and ``sin(phi)`` as ring
    generators: no sum-of-angles search is needed for these.
@@ -23,7 +23,7 @@ rings, instead of as expression trees tidied after every factor:
    ``sin(A)**2 -> 1 - cos(A)**2`` where it shortens: read off the terms of the
    polynomial, several times cheaper than SymPy's ``TR10i`` on the expression.
 3. **The form of the product kept.**  Each entry is written back nested by the
-   joints, the last joint's factors outermost (``T_k = T_{k-1} exp($_k q_k)``), with
+   joints, the last joint's factors outermost (``T_k = T_{k-1} exp6($_k, q_k)``), with
    the content and the common monomial of each level pulled out, or flat where
    that is smaller (by ``count_ops``).
 
@@ -627,7 +627,7 @@ def fast_space_jacobian(twists: Sequence[Any], home: Any, q: tuple) -> Immutable
 
 
 def fast_body_jacobian(body_twists: Sequence[Any], home: Any, q: tuple) -> ImmutableMatrix | None:
-    """The body Jacobian by the ring: column ``i`` is ``Ad(exp(-B_n q_n) ... exp(-B_{i+1} q_{i+1})) B_i``.
+    """The body Jacobian by the ring: column ``i`` is ``Ad(exp6(B_n, -q_n) ... exp6(B_{i+1}, -q_{i+1})) B_i``.
 
     The space Jacobian's recursion run on the body twists from the tip, with the angles negated.
     """
