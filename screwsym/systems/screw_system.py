@@ -925,6 +925,30 @@ def _positive(p, R, depth: int = 0) -> bool:
     return False
 
 
+def _square_split(f, R, depth: int = 0):
+    """``(2 a x + b, 4 a c - b**2)`` where ``f = a x**2 + b x + c >= 0`` is a sum of squares, else None.
+
+    With ``a`` a positive number and ``D = 4 a c - b**2 >= 0`` everywhere
+    (proved: positive, zero, or itself of this form), ``4 a f = (2 a x + b)**2 + D``,
+    so ``f = 0`` exactly where both ``2 a x + b = 0`` and ``D = 0``: two
+    equations in the place of one (``(x - 1)**2 + (y - 1)**2 = 0``: ``x = 1, y = 1``).
+    """
+    if depth >= 4:
+        return None
+    for i in _involved(f, R):
+        if f.degree(i) != 2 or not _solvable(i, R):
+            continue
+        g = R.gens[i]
+        a, b = f.coeff_wrt(g, 2), f.coeff_wrt(g, 1)
+        if not a.is_ground or not R.domain.to_sympy(a.LC) > 0:
+            continue
+        c = f - a * g**2 - b * g
+        D = 4 * a * c - b**2
+        if not D or _positive(D, R) or _square_split(D, R, depth + 1) is not None:
+            return 2 * a * g + b, D
+    return None
+
+
 def _no_real_zero(f, R) -> bool:
     """True if ``f`` has no real zero: ``f`` or ``-f`` proved positive (:func:`_positive`)."""
     return _positive(f, R) or _positive(-f, R)
@@ -1220,6 +1244,11 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
     lin = _linear_in(f, R)
     if lin is None:
         points = _points(f, R)
+        squares = _square_split(f, R) if points is None else None
+        if squares is not None:  # a sum of squares: each square is zero
+            _impose(M, conds + (Eq(fe, 0),), subs, nonzero,
+                    [_poly_expr(e, R) for e in squares] + rest, out)
+            return
         if points is None:  # not decided here: listed with rank None
             out.append(_Node(_condition(conds + (Eq(fe, 0),)), None, subs, M))
             return

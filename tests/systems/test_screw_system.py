@@ -6,7 +6,7 @@ import pickle
 import random
 
 import pytest
-from sympy import Eq, Matrix, Ne, Rational, Symbol, expand, sqrt, symbols, tan, true
+from sympy import Eq, Matrix, Ne, Rational, Symbol, cos, expand, sqrt, symbols, tan, true
 
 from screwsym import Screw, ScrewSystem, Twist, Wrench, reciprocal_product, vector
 from screwsym.systems.screw_system import _cases
