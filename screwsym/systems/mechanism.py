@@ -52,8 +52,16 @@ from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
-from .joints import _E, Joint, check_joints
-from .screw_system import BUDGET, MAX_CASES, ScrewSystem, _analysis, _substitute, case_budget
+from .joints import Joint, check_joints
+from .screw_system import (
+    BUDGET,
+    MAX_CASES,
+    ScrewSystem,
+    _analysis,
+    _pure_translations,
+    _substitute,
+    case_budget,
+)
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -483,8 +491,7 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     rotations = spin.rank
     translations = twists.rank - rotations
     # the pure translations the platform has: its twists with omega = 0 (generic, polynomial)
-    pure = twists & ScrewSystem(*(Twist.translation(e) for e in _E)) if translations else None
-    moves = pure.basis().matrix[3:, :] if pure is not None else ImmutableMatrix.zeros(3, 0)
+    moves = _pure_translations(twists.matrix, rotations) if translations else ImmutableMatrix.zeros(3, 0)
     return Mobility(
         mobility=dof,
         order=order,
