@@ -1328,8 +1328,7 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
         points = _points(f, R)
         squares = _square_split(f, R) if points is None else None
         if squares is not None:  # a sum of squares: each square is zero
-            _impose(M, conds + (Eq(fe, 0),), subs, nonzero,
-                    [_poly_expr(e, R) for e in squares] + rest, out)
+            _impose(M, conds, subs, nonzero, [_poly_expr(e, R) for e in squares] + rest, out)
             return
         if points is None:  # not decided here: listed with rank None
             out.append(_Node(_condition(conds + (Eq(fe, 0),)), None, subs, M))

@@ -186,3 +186,26 @@ def test_a_symbol_with_cannot_decide_is_none():
     cases = W.rank_conditions()
     assert cases == [(Ne(u**2 - v**3 - 2, 0), 2), (Eq(u**2 - v**3 - 2, 0), None)]
     assert Symbol("u", real=True) in cases[1][0].free_symbols
+
+
+def test_pure_translations_agree_with_the_intersection():
+    # the platform's pure translations by Cramer's rule on the omega block, against the
+    # definition: the intersection of its twist system with the three translations
+    from _mechanisms import three_rps
+
+    from screwsym.systems.screw_system import _pure_translations
+
+    r = symbols("r", real=True)
+    rho = (r, Rational(-1, 2), Rational(-1, 2))
+    at = {r: 1}
+    for mech in (three_rps(rho), three_rps()):
+        T = mech.twists
+        m = mech.mobility()
+        ours = _pure_translations(T.matrix, m.rotations)
+        pure = T & ScrewSystem(*(Twist.translation(e) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+        theirs = pure.basis().matrix[3:, :]
+        A, B = Matrix(ours.xreplace(at)), Matrix(theirs.xreplace(at))
+        assert A.rank() == B.rank() == Matrix.hstack(A, B).rank() == m.translations
+    # and it rejects a wrong answer: a rotation's v part is not a pure translation here
+    wrong = Matrix(T.matrix[3:, :1].xreplace(at))
+    assert Matrix.hstack(Matrix(ours.xreplace(at)), wrong).rank() > m.translations
