@@ -188,6 +188,7 @@ def test_a_symbol_with_cannot_decide_is_none():
     assert Symbol("u", real=True) in cases[1][0].free_symbols
 
 
+@pytest.mark.slow
 def test_pure_translations_agree_with_the_intersection():
     # the platform's pure translations by Cramer's rule on the omega block, against the
     # definition: the intersection of its twist system with the three translations
