@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import operator
 import sys
-from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar
+from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar, cast
 
 from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
 from sympy.logic.boolalg import simplify_logic
@@ -354,7 +354,11 @@ class ParallelMechanism(ScrewsymBasic):
         merge = check_flag(merge, "merge")
         with case_budget(budget, "mobility_cases"):
             cases = self._mobility_cases(max_cases)
-        return _merge_cases(cases) if merge else cases
+        if not merge:
+            return cases
+        # both kinds of result have an answer(): merged as _Answered, given back as they were
+        answered = cast("list[tuple[Any, _Answered | None]]", cases)
+        return cast("list[tuple[Any, Mobility | Degenerate | None]]", _merge_cases(answered))
 
     def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | Degenerate | None]]:
         leaves: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = [((), {})]
@@ -375,7 +379,7 @@ class ParallelMechanism(ScrewsymBasic):
             try:
                 mech = _substitute(self, subs) if subs else self
             except ValueError as error:  # a later limb's case unmakes a joint of an earlier one
-                degenerate.append((And(*conds), Degenerate(_which_limb(self, subs, error))))
+                degenerate.append((And(*conds), Degenerate(_which_limb(self, subs or {}, error))))
                 continue
             for conds2, subs2 in _refine(conds, subs, mech.constraints, max_cases):
                 condition = And(*conds2) if conds2 else true

@@ -13,9 +13,11 @@ of the constraints on a platform are its instantaneous motions.
 
 Everything is exact.  The entries are taken as polynomials (rational functions
 are brought to polynomials column by column) in their symbols, with rational
-or algebraic-number coefficients such as ``sqrt(3)``; the arithmetic is
-fraction-free in SymPy's ``DomainMatrix`` over that polynomial ring, so zero is
-decided exactly and no ``simplify`` is ever called.
+or algebraic-number coefficients such as ``sqrt(3)``; ``sin(q)`` and ``cos(q)``
+of a symbol (after ``expand_trig`` of sums and multiples) are two more ring
+symbols, reduced modulo ``sin(q)**2 + cos(q)**2 - 1``.  The arithmetic is
+fraction-free over that polynomial ring, so zero is decided exactly and no
+``simplify`` is ever called.
 
 *Generic* means: for all values of the symbols outside a proper algebraic
 subset, the one that :meth:`ScrewSystem.rank_conditions` lists exhaustively.
@@ -398,16 +400,28 @@ class ScrewSystem(ScrewsymBasic):
         ===========
 
         The first pair is the generic case.  Every real value of the symbols
-        satisfies at least one condition, and where several hold they give
-        the same rank.  The conditions are SymPy booleans (``Eq``, ``Ne``,
-        ``And``) on irreducible factors of the minors of the system: the rank
+        satisfies exactly one condition: the special cases of one minor are
+        taken factor by factor, each with the earlier factors non-zero.  The
+        conditions are SymPy booleans (``Eq``, ``Ne``, ``And``) on irreducible
+        factors of the minors of the system, in the user's symbols: the rank
         is at least ``r`` exactly where some r x r minor is non-zero.  Each
         case is found by solving one factor for a symbol in which it is linear
         (splitting off the case where its coefficient vanishes) and analysing
-        the system again there; factors that the symbols' assumptions prove
-        non-zero are dropped.  Where a factor is linear in no symbol, the
-        case is listed with rank ``None`` (at most the rank of the case above
-        it; not analysed further).  A system with many free symbols can have
+        the system again there.  A factor in one symbol is decided at each of
+        its real roots (``real_roots``: rationals, surds, ``CRootOf``), and a
+        factor in ``sin(q)`` and ``cos(q)`` of one angle at each of its points
+        on the circle (through ``tan(q/2)``, with ``q = pi`` apart), the
+        condition then ``Eq(sin(q), s) & Eq(cos(q), c)``.  A sum of squares
+        (``(x - 1)**2 + (y - 2)**2``) is zero where each square is.  Factors
+        with no real zero are dropped: proved non-zero by the symbols'
+        assumptions, positive definite (a positive constant, a one-symbol
+        polynomial without real roots, or a quadratic with a positive leading
+        coefficient and a positive definite discriminant: ``(x + 2)**2 +
+        (y + 2)**2 + 4``), or with no real root or point of the circle.  Where
+        a factor is in two or more symbols and linear in none (``x**2 + y**2 =
+        2``, ``q sin(q) = 1``), the case is listed with rank ``None`` (at most
+        the rank of the case above it; not analysed further): the only cases
+        SymPy's tools here cannot decide.  A system with many free symbols can have
         very many cases: past ``max_cases`` a ``ValueError`` says so.  The
         work is bounded too: ``budget`` units of polynomial arithmetic
         (:data:`BUDGET`; a ``k x k`` determinant whose rows have at most
@@ -415,13 +429,28 @@ class ScrewSystem(ScrewsymBasic):
         polynomial of ``t`` terms ``t**2``, about a microsecond each), past
         which a ``ValueError`` names it instead of running for minutes.
 
-        >>> from sympy import symbols
-        >>> from screwsym import ScrewSystem, Wrench
+        >>> from sympy import Eq, symbols
+        >>> from screwsym import ScrewSystem, Twist, Wrench
         >>> t = symbols("t", real=True)
         >>> forces = ScrewSystem(Wrench.force([1, 0, 0], point=[0, 0, 0]),
         ...                      Wrench.force([1, t, 0], point=[0, 0, 1]))
         >>> forces.rank_conditions()
         [(True, 2)]
+
+        Entries in ``sin`` and ``cos``: a planar 3R arm (Lynch & Park, *Modern
+        Robotics*, 2017, Section 5.3) is singular exactly where ``sin(q2) = 0``,
+        at ``q2 = 0`` and at ``q2 = pi``:
+
+        >>> from sympy import cos, sin
+        >>> q1, q2 = symbols("q1 q2", real=True)
+        >>> p2 = [cos(q1), sin(q1), 0]
+        >>> p3 = [cos(q1) + cos(q1 + q2), sin(q1) + sin(q1 + q2), 0]
+        >>> arm = ScrewSystem(*(Twist.rotation([0, 0, 1], point=p) for p in ([0, 0, 0], p2, p3)))
+        >>> cases = arm.rank_conditions()
+        >>> cases[0]
+        (Ne(sin(q2), 0), 3)
+        >>> sorted({r for _, r in cases[1:]}), all(c.has(Eq(sin(q2), 0)) for c, _ in cases[1:])
+        ([2], True)
         """
         cases = _budgeted_cases(self.matrix, max_cases, budget, "rank_conditions")
         return [(n.condition, n.rank) for n in cases]
@@ -455,7 +484,10 @@ class ScrewSystem(ScrewsymBasic):
         """For each case of :meth:`rank_conditions`, the substitution of symbols that it makes.
 
         Applying the substitution (``system.xreplace(subs)``) gives a system
-        whose generic rank is the case's rank.
+        whose generic rank is the case's rank.  At a point of the circle the
+        substitution sets ``sin(q)`` and ``cos(q)`` (``{sin(q): 0, cos(q): -1}``,
+        not ``q``); where the entries hold ``sin(2*q)`` or ``cos(q + r)``,
+        expand them first (``expand_trig``) so that it reaches them.
 
         >>> from sympy import symbols
         >>> from screwsym import ScrewSystem, Twist
