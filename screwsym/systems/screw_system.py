@@ -1024,7 +1024,7 @@ def _positive(p, R, depth: int = 0) -> bool:
     if len(involved) == 1:
         x = R.symbols[involved[0]]
         u = Poly(R.to_sympy(p), x)
-        return u.count_roots() == 0 and bool(u.eval(0) > 0)
+        return u.count_roots() == 0 and bool(u.nth(0) > 0)  # no root, positive at 0
     if depth >= 3:
         return False
     for i in involved:
