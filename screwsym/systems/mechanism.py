@@ -45,7 +45,7 @@ import operator
 import sys
 from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar, cast
 
-from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
+from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, cos, false, sin, true
 from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
@@ -58,6 +58,7 @@ from .screw_system import (
     MAX_CASES,
     ScrewSystem,
     _analysis,
+    _circle_simplify,
     _pure_translations,
     _substitute,
     case_budget,
@@ -348,7 +349,7 @@ class ParallelMechanism(ScrewsymBasic):
         >>> crank = ParallelMechanism(Limb(R([0, 0, 0], z), R([cos(q), sin(q), 0], z)),
         ...                           Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
         >>> [(case, m.mobility) for case, m in crank.mobility_cases()]
-        [(Ne(sin(q), 0), 1), (Eq(sin(q), 0) & (Eq(cos(q), -1) | Eq(cos(q), 1)), 2)]
+        [(Ne(sin(q), 0), 1), (Eq(sin(q), 0), 2)]
         """
         max_cases = check_count(max_cases, "max_cases")
         merge = check_flag(merge, "merge")
@@ -415,9 +416,10 @@ def _union(a: Any, b: Any) -> Any:
     expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
     if len(expr.atoms(Eq)) > 6:
         return Or(a, b)
-    expr = simplify_logic(expr, deep=False)
-    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
-                        lambda x: Ne(*x.args[0].args))
+    # points of the circle read best as a disjunction of points (and _circle_simplify joins them)
+    expr = simplify_logic(expr, form="dnf" if expr.has(sin, cos) else None, deep=False)
+    return _circle_simplify(expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
+                                         lambda x: Ne(*x.args[0].args)))
 
 
 class _Answered(Protocol):

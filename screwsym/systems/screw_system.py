@@ -51,6 +51,7 @@ from sympy import (
     ImmutableMatrix,
     Integer,
     Ne,
+    Or,
     Poly,
     Symbol,
     cancel,
@@ -60,6 +61,7 @@ from sympy import (
     fraction,
     radsimp,
     sin,
+    sqrt,
     true,
     zeros,
 )
@@ -655,6 +657,73 @@ def _sample_point(R, rnd: random.Random) -> list:
         if ci is not None:
             point[ci] = K.convert((1 - t**2) / (1 + t**2))
     return point
+
+
+def _circle_simplify(expr: Any) -> Any:
+    """``expr`` with ``Eq(sin(q), s) & (Eq(cos(q), c) | Eq(cos(q), -c))`` written ``Eq(sin(q), s)``.
+
+    On the unit circle ``sin(q) = s`` holds at exactly the two points
+    ``cos(q) = +-sqrt(1 - s**2)`` (one where ``s = +-1``); likewise with sin and
+    cos exchanged.  For merged cases: the points of one factor given as one
+    condition.
+
+    >>> from sympy import Eq, cos, sin, symbols
+    >>> from screwsym.systems.screw_system import _circle_simplify
+    >>> q = symbols("q", real=True)
+    >>> _circle_simplify(Eq(sin(q), 0) & (Eq(cos(q), 1) | Eq(cos(q), -1)))
+    Eq(sin(q), 0)
+    >>> _circle_simplify((Eq(sin(q), 0) & Eq(cos(q), 1)) | (Eq(sin(q), 0) & Eq(cos(q), -1)))
+    Eq(sin(q), 0)
+    >>> _circle_simplify((Eq(sin(q), 1) & Eq(cos(q), 0)) | (Eq(sin(q), 0) & Eq(cos(q), -1)))
+    (Eq(sin(q), 0) & Eq(cos(q), -1)) | (Eq(sin(q), 1) & Eq(cos(q), 0))
+    """
+    def one(node: Any) -> Any:
+        if not isinstance(node, And):
+            return node
+        args = list(node.args)
+        for i, a in enumerate(args):
+            if not (isinstance(a, Eq) and isinstance(a.lhs, (sin, cos))):
+                continue
+            other = cos if isinstance(a.lhs, sin) else sin
+            q, value = a.lhs.args[0], a.rhs
+            need = {radsimp(cancel(r)) for r in (sqrt(1 - value**2), -sqrt(1 - value**2))}
+            for j, b in enumerate(args):
+                if j == i or not isinstance(b, Or):
+                    continue
+                if all(isinstance(e, Eq) and e.lhs == other(q) for e in b.args) and \
+                        {radsimp(cancel(e.rhs)) for e in b.args} == need:
+                    return And(*(x for k, x in enumerate(args) if k != j))
+        return node
+
+    def pairs(node: Any) -> Any:
+        if not isinstance(node, Or):
+            return node
+        args = [set(a.args) if isinstance(a, And) else {a} for a in node.args]
+        for i in range(len(args)):
+            for j in range(i + 1, len(args)):
+                da, db = args[i] - args[j], args[j] - args[i]
+                if len(da) != 1 or len(db) != 1:
+                    continue
+                (x,), (y,) = da, db
+                common = args[i] & args[j]
+                if not (isinstance(x, Eq) and isinstance(y, Eq) and x.lhs == y.lhs
+                        and isinstance(x.lhs, (sin, cos))):
+                    continue
+                other = cos if isinstance(x.lhs, sin) else sin
+                line = [a for a in common if isinstance(a, Eq) and a.lhs == other(x.lhs.args[0])]
+                if not line:
+                    continue
+                value = line[0].rhs
+                need = {radsimp(cancel(r)) for r in (sqrt(1 - value**2), -sqrt(1 - value**2))}
+                if {radsimp(cancel(x.rhs)), radsimp(cancel(y.rhs))} == need:
+                    rest = [And(*a) for k, a in enumerate(args) if k not in (i, j)]
+                    return pairs(Or(And(*common), *rest))
+        return node
+
+    if not expr.has(sin, cos):
+        return expr
+    return expr.replace(lambda x: isinstance(x, And), one).replace(
+        lambda x: isinstance(x, Or), pairs)
 
 
 def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list, list, list]:

@@ -210,3 +210,17 @@ def test_pure_translations_agree_with_the_intersection():
     # and it rejects a wrong answer: a rotation's v part is not a pure translation here
     wrong = Matrix(T.matrix[3:, :1].xreplace(at))
     assert Matrix.hstack(Matrix(ours.xreplace(at)), wrong).rank() > m.translations
+
+
+def test_a_universal_joint_made_parallel_is_reported():
+    # the U's second axis (1, a, 0) is parallel to its first (1, 0, 0) at a = 0
+    a = symbols("a", real=True)
+    leg1 = Limb(U([0, 0, 0], [1, 0, 0], [1, a, 0]), P([0, 0, 1]), S([0, 0, 2]))
+    leg2 = Limb(R([1, 0, 0], [1, 0, 0]), P([0, 1, 1]), S([1, 1, 1]))
+    mech = ParallelMechanism(leg1, leg2)
+    cases = mech.mobility_cases()
+    assert [c for c, _ in cases] == [Ne(a, 0), Eq(a, 0)]
+    assert cases[0][1].mobility == 5
+    assert isinstance(cases[1][1], Degenerate)
+    assert "a universal joint needs two non-parallel axes" in cases[1][1].reason
+    assert_cases_at(mech, cases, [{a: 0}, {a: 2}, {a: Rational(-1, 3)}])
