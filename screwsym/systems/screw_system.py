@@ -1187,9 +1187,17 @@ def _real_points(e: Any, x: Any) -> tuple:
     _charge(Poly(e, x).degree() ** 3)
     roots: list = []
     for r in Poly(e, x).real_roots():
-        if r not in roots:
+        if r not in roots and _admissible(x, r):
             roots.append(r)
     return tuple((((x, r),), Eq(x, r)) for r in roots)
+
+
+def _admissible(x: Any, r: Any) -> bool:
+    """Whether the value ``r`` may be the symbol ``x``'s: no assumption of ``x`` refutes it."""
+    for prop in ("positive", "nonnegative", "negative", "nonpositive", "nonzero", "integer"):
+        if getattr(x, f"is_{prop}") and getattr(r, f"is_{prop}") is False:
+            return False
+    return True
 
 
 @lru_cache(maxsize=1024)

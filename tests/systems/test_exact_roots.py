@@ -224,3 +224,12 @@ def test_a_universal_joint_made_parallel_is_reported():
     assert isinstance(cases[1][1], Degenerate)
     assert "a universal joint needs two non-parallel axes" in cases[1][1].reason
     assert_cases_at(mech, cases, [{a: 0}, {a: 2}, {a: Rational(-1, 3)}])
+
+
+def test_roots_that_the_assumptions_refute_are_no_case():
+    # h positive: of the roots of h**2 - 2 only h = sqrt(2) is a case
+    h, t = symbols("h", positive=True), symbols("t", real=True)
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[h**2 - 2, 0, 0]))
+    assert W.rank_conditions() == [(Ne(h**2 - 2, 0), 2), (Eq(h, sqrt(2)), 1)]
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[t**2 - 2, 0, 0]))
+    assert W.rank_conditions() == [(Ne(t**2 - 2, 0), 2), (Eq(t, -sqrt(2)), 1), (Eq(t, sqrt(2)), 1)]
