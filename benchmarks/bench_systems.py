@@ -111,7 +111,10 @@ def many_symbols(repeat: int) -> None:
         print(f"3-RPS, {n} symbols: mobility() {t:.2f} s -> {m.mobility} {m.motion}"
               + (" (target < 5 s)" if n == 12 else ""))
         t, cases = best(mech.mobility_cases, repeat)
-        kinds = [getattr(mm, "mobility", type(mm).__name__) for _, mm in cases]
+        kinds: dict = {}
+        for _, mm in cases:
+            key = getattr(mm, "mobility", "None" if mm is None else type(mm).__name__)
+            kinds[key] = kinds.get(key, 0) + 1
         print(f"  mobility_cases(): {len(cases)} cases {kinds} in {t:.2f} s"
               + (" (target < 15 s)" if n == 12 else ""))
         t0 = time.perf_counter()
@@ -124,9 +127,23 @@ def main(argv=None) -> None:
     parser.add_argument("--n", type=int, default=100_000, help="poses for the numeric map")
     parser.add_argument("--repeat", type=int, default=5, help="best of this many runs")
     parser.add_argument("--many-only", action="store_true", help="only the many-symbol part (4.)")
+    parser.add_argument("--before", metavar="DIR", default=None,
+                        help="also run part 4 on the screwsym of another checkout (a PYTHONPATH), "
+                             "in a subprocess, for a side-by-side table")
     args = parser.parse_args(argv)
     if args.many_only:
         many_symbols(max(1, args.repeat // 2))
+        if args.before:
+            import os
+            import subprocess
+            import sys
+
+            print(f"--- the same on {args.before}:", flush=True)
+            env = {**os.environ, "PYTHONPATH": args.before}
+            subprocess.run([sys.executable, "-c", "import sys; sys.path.insert(0, sys.argv[1]); "
+                            "import bench_systems; bench_systems.many_symbols(1)",
+                            os.path.dirname(os.path.abspath(__file__))], env=env, check=True,
+                           cwd=args.before)
         return
 
     T = five_joint_limb()
