@@ -43,22 +43,31 @@ from __future__ import annotations
 
 import operator
 import sys
-from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar
+from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar, cast
 
-from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
+from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, cos, false, sin, true
 from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
-from .joints import _E, Joint, check_joints
-from .screw_system import BUDGET, MAX_CASES, ScrewSystem, _analysis, case_budget
+from .joints import Joint, check_joints
+from .screw_system import (
+    BUDGET,
+    MAX_CASES,
+    ScrewSystem,
+    _analysis,
+    _circle_simplify,
+    _pure_translations,
+    _substitute,
+    case_budget,
+)
 
 if TYPE_CHECKING:
     from typing_extensions import Self
 
-__all__ = ["Limb", "ParallelMechanism", "Mobility", "motion_type"]
+__all__ = ["Limb", "ParallelMechanism", "Mobility", "Degenerate", "motion_type"]
 
 
 class Limb(ScrewsymBasic):
@@ -171,6 +180,27 @@ class Mobility(NamedTuple):
         raise ValueError("Mobility.index(value): value not found")
 
 
+class Degenerate(NamedTuple):
+    """A case of ``mobility_cases`` where a joint degenerates: the case's values unmake it.
+
+    The values of the symbols on the case make a joint impossible to build
+    (a zero axis direction; the two axes of a universal joint made parallel),
+    so no mechanism is there to analyse: this is a finding, reported in the
+    place of a :class:`Mobility`.  ``reason`` is what the joint says (the
+    ``ValueError`` it raises when built with those values).
+
+    >>> from screwsym.systems.mechanism import Degenerate
+    >>> Degenerate("limbs[0]: direction: a joint axis needs a non-zero direction").answer()
+    ('degenerate joint', 'limbs[0]: direction: a joint axis needs a non-zero direction')
+    """
+
+    reason: str  #: the joint's own error message, prefixed by the limb: ``limbs[i]: ...``
+
+    def answer(self) -> tuple[str, str]:
+        """What two cases compare when they are merged: degenerate, and why."""
+        return ("degenerate joint", self.reason)
+
+
 def _same(field: Any, value: Any) -> bool:
     """``field == value``, ``False`` where a SymPy ``field`` would meet a string in ``value``."""
     if isinstance(field, Basic) and not isinstance(value, Basic) and find_string(value) is not None:
@@ -261,7 +291,7 @@ class ParallelMechanism(ScrewsymBasic):
 
     def mobility_cases(
         self, *, max_cases: int = MAX_CASES, budget: int = BUDGET, merge: bool = True
-    ) -> list[tuple[Any, Mobility | None]]:
+    ) -> list[tuple[Any, Mobility | Degenerate | None]]:
         """The mobility in each case where the symbols change a rank: an exhaustive split.
 
         Explanation
@@ -272,12 +302,21 @@ class ParallelMechanism(ScrewsymBasic):
         limb, then, within each, by those of the union of the limbs'
         constraint systems (:meth:`ScrewSystem.rank_conditions`); the
         conditions of a case are the conjunction.  Every real value of the
-        symbols satisfies at least one case.  Each case's mobility is the
+        symbols satisfies exactly one case (before merging; after it, still
+        exactly one).  Each case's mobility is the
         analysis of the mechanism with the case's substitution made, so
         ``mobility``, ``passive`` and the platform's twists are exact on the whole
-        case, ``common`` and ``redundant`` generic within it.  A case whose
-        rank could not be decided (a condition linear in no symbol) comes with
-        ``None``.  At most ``max_cases`` cases (a ``ValueError`` beyond), and
+        case, ``common`` and ``redundant`` generic within it.  A condition
+        in one symbol (or in ``sin(q)``, ``cos(q)`` of one angle), once the
+        earlier ones are substituted, is decided at each of its real roots
+        (points of the circle); a condition with no real solution is dropped.
+        A case whose rank SymPy cannot decide here (a condition in two or
+        more symbols linear in none of them, ``x**2 + y**2 = 2``) comes with
+        ``None``.  A case whose values unmake a joint (a zero axis, a
+        universal joint's axes made parallel) comes with a
+        :class:`Degenerate` that says which and why.  Geometry may be
+        polynomial in ``sin`` and ``cos`` of the symbols: the conditions are
+        then in ``sin(q)`` and ``cos(q)``, and a substitution sets both.  At most ``max_cases`` cases (a ``ValueError`` beyond), and
         at most ``budget`` units of polynomial arithmetic for the whole split
         (:meth:`ScrewSystem.rank_conditions`; a ``ValueError`` naming it beyond).
 
@@ -301,25 +340,48 @@ class ParallelMechanism(ScrewsymBasic):
         ...                             Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
         >>> [(case, m.mobility, m.motion) for case, m in fourbar.mobility_cases()]
         [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1R1T')]
+
+        The coupler pivot on a circle, at angle ``q``: the four-bar folds where
+        the pivot reaches the x axis, at ``q = 0`` and ``q = pi``.
+
+        >>> from sympy import cos, sin
+        >>> q = symbols("q", real=True)
+        >>> crank = ParallelMechanism(Limb(R([0, 0, 0], z), R([cos(q), sin(q), 0], z)),
+        ...                           Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
+        >>> [(case, m.mobility) for case, m in crank.mobility_cases()]
+        [(Ne(sin(q), 0), 1), (Eq(sin(q), 0), 2)]
         """
         max_cases = check_count(max_cases, "max_cases")
         merge = check_flag(merge, "merge")
         with case_budget(budget, "mobility_cases"):
             cases = self._mobility_cases(max_cases)
-        return _merge_cases(cases) if merge else cases
+        if not merge:
+            return cases
+        # both kinds of result have an answer(): merged as _Answered, given back as they were
+        answered = cast("list[tuple[Any, _Answered | None]]", cases)
+        return cast("list[tuple[Any, Mobility | Degenerate | None]]", _merge_cases(answered))
 
-    def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | None]]:
+    def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | Degenerate | None]]:
         leaves: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = [((), {})]
+        out: list[tuple[Any, Mobility | Degenerate | None]] = []
+        degenerate: list[tuple[Any, Mobility | Degenerate | None]] = []  # listed last
         for i in range(len(self.args)):
             grown = []
             for conds, subs in leaves:
-                limb = self.args[i].xreplace(subs) if subs else self.args[i]
+                try:
+                    limb = _substitute(self.args[i], subs) if subs else self.args[i]
+                except ValueError as error:  # the case's values unmake a joint of this limb
+                    degenerate.append((And(*conds), Degenerate(f"limbs[{i}]: {error}")))
+                    continue
                 grown.extend(_refine(conds, subs, limb.twists, max_cases))
             leaves = grown
             _check_cases(len(leaves), max_cases)
-        out: list[tuple[Any, Mobility | None]] = []
         for conds, subs in leaves:
-            mech = self.xreplace(subs) if subs else self
+            try:
+                mech = _substitute(self, subs) if subs else self
+            except ValueError as error:  # a later limb's case unmakes a joint of an earlier one
+                degenerate.append((And(*conds), Degenerate(_which_limb(self, subs or {}, error))))
+                continue
             for conds2, subs2 in _refine(conds, subs, mech.constraints, max_cases):
                 condition = And(*conds2) if conds2 else true
                 if condition is false:  # contradicts the limb's case: no point
@@ -327,18 +389,37 @@ class ParallelMechanism(ScrewsymBasic):
                 if subs2 is None:
                     out.append((condition, None))
                     continue
-                out.append((condition, _mobility(self.xreplace(subs2) if subs2 else self)))
+                try:
+                    here = _substitute(self, subs2) if subs2 else self
+                except ValueError as error:  # the constraints' case unmakes a joint
+                    degenerate.append((condition, Degenerate(_which_limb(self, subs2, error))))
+                    continue
+                out.append((condition, _mobility(here)))
                 _check_cases(len(out), max_cases)
-        return out
+        return out + degenerate
+
+
+def _which_limb(mech: ParallelMechanism, subs: dict[Any, Any], error: ValueError) -> str:
+    """``"limbs[i]: <the joint's error>"`` for the first limb that ``subs`` unmakes."""
+    for i, limb in enumerate(mech.args):
+        try:
+            _substitute(limb, subs)
+        except ValueError as found:
+            return f"limbs[{i}]: {found}"
+    return str(error)  # pragma: no cover - the error came from one of the limbs
 
 
 def _union(a: Any, b: Any) -> Any:
     """``a | b`` in the fewest terms: SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq``
-    (the atoms are the rank conditions' equations; it gives up beyond 8 of them)."""
+    (the atoms are the rank conditions' equations).  Beyond 6 atoms the plain ``Or``: the
+    minimisation grows exponentially with them (13 of 43 s of a 3-RPS with 12 symbols at 8)."""
     expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
-    expr = simplify_logic(expr)
-    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
-                        lambda x: Ne(*x.args[0].args))
+    if len(expr.atoms(Eq)) > 6:
+        return Or(a, b)
+    # points of the circle read best as a disjunction of points (and _circle_simplify joins them)
+    expr = simplify_logic(expr, form="dnf" if expr.has(sin, cos) else None, deep=False)
+    return _circle_simplify(expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
+                                         lambda x: Ne(*x.args[0].args)))
 
 
 class _Answered(Protocol):
@@ -391,7 +472,7 @@ def _refine(conds: tuple[Any, ...], subs: dict[Any, Any] | None, system: ScrewSy
         if rank is None or subs is None:
             out.append((new_conds, None))
             continue
-        composed = {k: cancel(v.xreplace(more)) for k, v in subs.items()}
+        composed = {k: cancel(_substitute(v, more)) for k, v in subs.items()}
         composed.update(more)
         out.append((new_conds, composed))
     return out
@@ -419,8 +500,7 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     rotations = spin.rank
     translations = twists.rank - rotations
     # the pure translations the platform has: its twists with omega = 0 (generic, polynomial)
-    pure = twists & ScrewSystem(*(Twist.translation(e) for e in _E)) if translations else None
-    moves = pure.basis().matrix[3:, :] if pure is not None else ImmutableMatrix.zeros(3, 0)
+    moves = _pure_translations(twists.matrix, rotations) if translations else ImmutableMatrix.zeros(3, 0)
     return Mobility(
         mobility=dof,
         order=order,

@@ -13,9 +13,11 @@ of the constraints on a platform are its instantaneous motions.
 
 Everything is exact.  The entries are taken as polynomials (rational functions
 are brought to polynomials column by column) in their symbols, with rational
-or algebraic-number coefficients such as ``sqrt(3)``; the arithmetic is
-fraction-free in SymPy's ``DomainMatrix`` over that polynomial ring, so zero is
-decided exactly and no ``simplify`` is ever called.
+or algebraic-number coefficients such as ``sqrt(3)``; ``sin(q)`` and ``cos(q)``
+of a symbol (after ``expand_trig`` of sums and multiples) are two more ring
+symbols, reduced modulo ``sin(q)**2 + cos(q)**2 - 1``.  The arithmetic is
+fraction-free over that polynomial ring, so zero is decided exactly and no
+``simplify`` is ever called.
 
 *Generic* means: for all values of the symbols outside a proper algebraic
 subset, the one that :meth:`ScrewSystem.rank_conditions` lists exhaustively.
@@ -47,11 +49,19 @@ from sympy import (
     Dummy,
     Eq,
     ImmutableMatrix,
+    Integer,
     Ne,
+    Or,
+    Poly,
     Symbol,
     cancel,
+    cos,
+    expand_trig,
     factor_list,
     fraction,
+    radsimp,
+    sin,
+    sqrt,
     true,
     zeros,
 )
@@ -392,16 +402,28 @@ class ScrewSystem(ScrewsymBasic):
         ===========
 
         The first pair is the generic case.  Every real value of the symbols
-        satisfies at least one condition, and where several hold they give
-        the same rank.  The conditions are SymPy booleans (``Eq``, ``Ne``,
-        ``And``) on irreducible factors of the minors of the system: the rank
+        satisfies exactly one condition: the special cases of one minor are
+        taken factor by factor, each with the earlier factors non-zero.  The
+        conditions are SymPy booleans (``Eq``, ``Ne``, ``And``) on irreducible
+        factors of the minors of the system, in the user's symbols: the rank
         is at least ``r`` exactly where some r x r minor is non-zero.  Each
         case is found by solving one factor for a symbol in which it is linear
         (splitting off the case where its coefficient vanishes) and analysing
-        the system again there; factors that the symbols' assumptions prove
-        non-zero are dropped.  Where a factor is linear in no symbol, the
-        case is listed with rank ``None`` (at most the rank of the case above
-        it; not analysed further).  A system with many free symbols can have
+        the system again there.  A factor in one symbol is decided at each of
+        its real roots (``real_roots``: rationals, surds, ``CRootOf``), and a
+        factor in ``sin(q)`` and ``cos(q)`` of one angle at each of its points
+        on the circle (through ``tan(q/2)``, with ``q = pi`` apart), the
+        condition then ``Eq(sin(q), s) & Eq(cos(q), c)``.  A sum of squares
+        (``(x - 1)**2 + (y - 2)**2``) is zero where each square is.  Factors
+        with no real zero are dropped: proved non-zero by the symbols'
+        assumptions, positive definite (a positive constant, a one-symbol
+        polynomial without real roots, or a quadratic with a positive leading
+        coefficient and a positive definite discriminant: ``(x + 2)**2 +
+        (y + 2)**2 + 4``), or with no real root or point of the circle.  Where
+        a factor is in two or more symbols and linear in none (``x**2 + y**2 =
+        2``, ``q sin(q) = 1``), the case is listed with rank ``None`` (at most
+        the rank of the case above it; not analysed further): the only cases
+        SymPy's tools here cannot decide.  A system with many free symbols can have
         very many cases: past ``max_cases`` a ``ValueError`` says so.  The
         work is bounded too: ``budget`` units of polynomial arithmetic
         (:data:`BUDGET`; a ``k x k`` determinant whose rows have at most
@@ -409,13 +431,28 @@ class ScrewSystem(ScrewsymBasic):
         polynomial of ``t`` terms ``t**2``, about a microsecond each), past
         which a ``ValueError`` names it instead of running for minutes.
 
-        >>> from sympy import symbols
-        >>> from screwsym import ScrewSystem, Wrench
+        >>> from sympy import Eq, symbols
+        >>> from screwsym import ScrewSystem, Twist, Wrench
         >>> t = symbols("t", real=True)
         >>> forces = ScrewSystem(Wrench.force([1, 0, 0], point=[0, 0, 0]),
         ...                      Wrench.force([1, t, 0], point=[0, 0, 1]))
         >>> forces.rank_conditions()
         [(True, 2)]
+
+        Entries in ``sin`` and ``cos``: a planar 3R arm (Lynch & Park, *Modern
+        Robotics*, 2017, Section 5.3) is singular exactly where ``sin(q2) = 0``,
+        at ``q2 = 0`` and at ``q2 = pi``:
+
+        >>> from sympy import cos, sin
+        >>> q1, q2 = symbols("q1 q2", real=True)
+        >>> p2 = [cos(q1), sin(q1), 0]
+        >>> p3 = [cos(q1) + cos(q1 + q2), sin(q1) + sin(q1 + q2), 0]
+        >>> arm = ScrewSystem(*(Twist.rotation([0, 0, 1], point=p) for p in ([0, 0, 0], p2, p3)))
+        >>> cases = arm.rank_conditions()
+        >>> cases[0]
+        (Ne(sin(q2), 0), 3)
+        >>> sorted({r for _, r in cases[1:]}), all(c.has(Eq(sin(q2), 0)) for c, _ in cases[1:])
+        ([2], True)
         """
         cases = _budgeted_cases(self.matrix, max_cases, budget, "rank_conditions")
         return [(n.condition, n.rank) for n in cases]
@@ -449,7 +486,10 @@ class ScrewSystem(ScrewsymBasic):
         """For each case of :meth:`rank_conditions`, the substitution of symbols that it makes.
 
         Applying the substitution (``system.xreplace(subs)``) gives a system
-        whose generic rank is the case's rank.
+        whose generic rank is the case's rank.  At a point of the circle the
+        substitution sets ``sin(q)`` and ``cos(q)`` (``{sin(q): 0, cos(q): -1}``,
+        not ``q``); where the entries hold ``sin(2*q)`` or ``cos(q + r)``,
+        expand them first (``expand_trig``) so that it reaches them.
 
         >>> from sympy import symbols
         >>> from screwsym import ScrewSystem, Twist
@@ -513,19 +553,190 @@ def _to_ring(M: ImmutableMatrix) -> _Ring:
 
     A column multiplied by a non-zero polynomial spans the same screw wherever
     that polynomial is non-zero, and where it vanishes the column itself is
-    undefined.  Raises ``ValueError`` for entries that are not rational
-    functions of symbols (``cos(t)``, ``sqrt(x)``): their relations
-    (``sin**2 + cos**2 = 1``) would be lost.
+    undefined.  ``sin(q)`` and ``cos(q)`` of a symbol ``q`` become two ring
+    symbols on the unit circle (see :func:`_trig_entries`); raises
+    ``ValueError`` for other entries that are not rational functions of
+    symbols (``tan(t)``, ``sqrt(x)``).
     """
     return _to_ring_cached(ImmutableMatrix(M))
 
 
-def _rational_parts(entries: list, what: str) -> tuple[list, list, list]:
+# ---------------------------------------------------------------------------
+# Trigonometric entries: sin(q) and cos(q) as two ring symbols on the unit circle
+# ---------------------------------------------------------------------------
+#
+# Why s = sin(q), c = cos(q) with s**2 + c**2 = 1, and not t = tan(q/2): the half-angle
+# substitution misses q = pi (t infinite) and writes every condition in t, a symbol the
+# user never wrote; with s and c the factors of the minors are polynomials in the user's
+# own sin(q) and cos(q), and every point of the circle is in the ring's reach.  The ring
+# Q[s, c] / (s**2 + c**2 - 1) is an integral domain (the circle's polynomial is
+# irreducible), and the polynomial of degree at most 1 in c is the unique normal form of
+# a class (c**2 -> 1 - s**2: ``_reduce``), so zero is decided exactly by reducing.  The
+# rational points (2t/(1+t**2), (1-t**2)/(1+t**2)) are dense on the circle, so a minor
+# non-zero at one of them is a non-zero element, and a rank found there is the generic
+# rank.  Factoring a reduced minor in Q[s, c, ...] covers its zeros on the circle (each
+# zero is a zero of a factor).  A condition on sin(q) and cos(q) alone is decided at its
+# points, found exactly through t (the real roots of the numerator of f(2t/(1+t**2),
+# (1-t**2)/(1+t**2))) together with q = pi, which t cannot reach (``_circle_points``).
+# A symbol ``q`` that also appears outside sin and cos is never solved for (a condition
+# ``q sin(q) = 1`` is not a substitution): such a case is left undecided (None).
+
+#: the ring symbol of ``sin(q)`` or ``cos(q)``, by ``(sin or cos, q)``; and back
+_TRIG_SYMBOL: dict[tuple[Any, Any], Dummy] = {}
+_TRIG_BACK: dict[Dummy, Any] = {}
+
+
+def _trig_symbol(f: Any, q: Any) -> Dummy:
+    d = _TRIG_SYMBOL.get((f, q))
+    if d is None:
+        d = Dummy(f"{f.__name__}_{q}", real=True)
+        _TRIG_SYMBOL[(f, q)] = d
+        _TRIG_BACK[d] = f(q)
+    return d
+
+
+def _trig_normal(e: Any) -> Any:
+    """``e`` with sin and cos of sums and integer multiples of symbols expanded (``expand_trig``)."""
+    if not e.has(sin, cos) or all(a.args[0].is_Symbol for a in e.atoms(sin, cos)):
+        return e
+    return expand_trig(e)
+
+
+def _trig_entries(entries: list) -> list:
+    """``entries`` with ``sin(q)``, ``cos(q)`` (``q`` a symbol) replaced by their ring symbols."""
+    out = []
+    for e in entries:
+        e = _trig_normal(e)
+        atoms = e.atoms(sin, cos)
+        if atoms:
+            e = e.xreplace({a: _trig_symbol(a.func, a.args[0]) for a in atoms
+                            if a.args[0].is_Symbol})
+        out.append(e)
+    return out
+
+
+@lru_cache(maxsize=256)
+def _relations(R) -> tuple:
+    """``(q, index of cos(q) or None, index of sin(q) or None)`` for each angle in the ring."""
+    found: dict[Any, list] = {}
+    for i, x in enumerate(R.symbols):
+        back = _TRIG_BACK.get(x)
+        if back is not None:
+            found.setdefault(back.args[0], [None, None])[0 if back.func is cos else 1] = i
+    return tuple((q, ci, si) for q, (ci, si) in found.items())
+
+
+def _reduce(p, R):
+    """``p`` reduced modulo ``sin(q)**2 + cos(q)**2 - 1`` for each angle: degree <= 1 in cos(q)."""
+    pairs = _relations(R)
+    if not pairs or not p:
+        return p
+    ring = p.ring
+    for _, ci, si in pairs:
+        if ci is None or si is None:
+            continue
+        one_minus_s2 = ring.one - ring.gens[si] ** 2
+        while True:
+            high = {m: v for m, v in p.items() if m[ci] >= 2}
+            if not high:
+                break
+            lowered = ring.from_dict({m[:ci] + (m[ci] - 2,) + m[ci + 1:]: v
+                                      for m, v in high.items()})
+            p = p - ring.from_dict(high) + lowered * one_minus_s2
+    return p
+
+
+def _sample_point(R, rnd: random.Random) -> list:
+    """A random rational point of the ring's symbols, ``(sin q, cos q)`` on the unit circle."""
+    K = R.domain
+    point = [K.convert(rnd.randint(-97, 97)) for _ in R.gens]
+    for _, ci, si in _relations(R):
+        t = QQ(rnd.randint(-97, 97), rnd.randint(1, 97))
+        if si is not None:
+            point[si] = K.convert(2 * t / (1 + t**2))
+        if ci is not None:
+            point[ci] = K.convert((1 - t**2) / (1 + t**2))
+    return point
+
+
+def _circle_simplify(expr: Any) -> Any:
+    """``expr`` with ``Eq(sin(q), s) & (Eq(cos(q), c) | Eq(cos(q), -c))`` written ``Eq(sin(q), s)``.
+
+    On the unit circle ``sin(q) = s`` holds at exactly the two points
+    ``cos(q) = +-sqrt(1 - s**2)`` (one where ``s = +-1``); likewise with sin and
+    cos exchanged.  For merged cases: the points of one factor given as one
+    condition.
+
+    >>> from sympy import Eq, cos, sin, symbols
+    >>> from screwsym.systems.screw_system import _circle_simplify
+    >>> q = symbols("q", real=True)
+    >>> _circle_simplify(Eq(sin(q), 0) & (Eq(cos(q), 1) | Eq(cos(q), -1)))
+    Eq(sin(q), 0)
+    >>> _circle_simplify((Eq(sin(q), 0) & Eq(cos(q), 1)) | (Eq(sin(q), 0) & Eq(cos(q), -1)))
+    Eq(sin(q), 0)
+    >>> _circle_simplify((Eq(sin(q), 1) & Eq(cos(q), 0)) | (Eq(sin(q), 0) & Eq(cos(q), -1)))
+    (Eq(sin(q), 0) & Eq(cos(q), -1)) | (Eq(sin(q), 1) & Eq(cos(q), 0))
+    """
+    def one(node: Any) -> Any:
+        if not isinstance(node, And):
+            return node
+        args = list(node.args)
+        for i, a in enumerate(args):
+            if not (isinstance(a, Eq) and isinstance(a.lhs, (sin, cos))):
+                continue
+            other = cos if isinstance(a.lhs, sin) else sin
+            q, value = a.lhs.args[0], a.rhs
+            need = {radsimp(cancel(r)) for r in (sqrt(1 - value**2), -sqrt(1 - value**2))}
+            for j, b in enumerate(args):
+                if j == i or not isinstance(b, Or):
+                    continue
+                if all(isinstance(e, Eq) and e.lhs == other(q) for e in b.args) and \
+                        {radsimp(cancel(e.rhs)) for e in b.args} == need:
+                    return And(*(x for k, x in enumerate(args) if k != j))
+        return node
+
+    def pairs(node: Any) -> Any:
+        if not isinstance(node, Or):
+            return node
+        args = [set(a.args) if isinstance(a, And) else {a} for a in node.args]
+        for i in range(len(args)):
+            for j in range(i + 1, len(args)):
+                da, db = args[i] - args[j], args[j] - args[i]
+                if len(da) != 1 or len(db) != 1:
+                    continue
+                (x,), (y,) = da, db
+                common = args[i] & args[j]
+                if not (isinstance(x, Eq) and isinstance(y, Eq) and x.lhs == y.lhs
+                        and isinstance(x.lhs, (sin, cos))):
+                    continue
+                other = cos if isinstance(x.lhs, sin) else sin
+                line = [a for a in common if isinstance(a, Eq) and a.lhs == other(x.lhs.args[0])]
+                if not line:
+                    continue
+                value = line[0].rhs
+                need = {radsimp(cancel(r)) for r in (sqrt(1 - value**2), -sqrt(1 - value**2))}
+                if {radsimp(cancel(x.rhs)), radsimp(cancel(y.rhs))} == need:
+                    rest = [And(*a) for k, a in enumerate(args) if k not in (i, j)]
+                    return pairs(Or(And(*common), *rest))
+        return node
+
+    if not expr.has(sin, cos):
+        return expr
+    return expr.replace(lambda x: isinstance(x, And), one).replace(
+        lambda x: isinstance(x, Or), pairs)
+
+
+def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list, list, list]:
     """The symbols, the algebraic numbers and the numerators and denominators of ``entries``.
 
-    Raises ``ValueError`` naming ``what`` (``"screws: expected entries"``, ...) for an entry
-    that is not a rational function of symbols with rational or algebraic coefficients.
+    With ``trig``, ``sin(q)`` and ``cos(q)`` of symbols are first replaced by their
+    ring symbols (:func:`_trig_entries`).  Raises ``ValueError`` naming ``what``
+    (``"screws: expected entries"``, ...) for an entry that is not a rational function
+    of symbols (and, with ``trig``, of sin and cos of symbols) with rational or
+    algebraic coefficients.
     """
+    if trig:
+        entries = _trig_entries(entries)
     syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
     numbers: list = []
     parts = [part for e in entries for part in e.as_numer_denom()]
@@ -538,9 +749,10 @@ def _rational_parts(entries: list, what: str) -> tuple[list, list, list]:
                 numbers.append(g)
                 continue
             raise ValueError(
-                f"{what} that are rational functions of symbols with rational or algebraic "
-                f"coefficients, got {g} in an entry (write cos/sin as a rational "
-                "parametrisation or as point coordinates)"
+                f"{what} that are rational functions of symbols"
+                f"{' and polynomial in sin and cos of symbols' if trig else ''} with rational "
+                f"or algebraic coefficients, got {g} in an entry"
+                f"{'' if trig else ' (write cos/sin as a rational parametrisation or as point coordinates)'}"
             )
     return syms, numbers, parts
 
@@ -548,7 +760,7 @@ def _rational_parts(entries: list, what: str) -> tuple[list, list, list]:
 @lru_cache(maxsize=512)
 def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
     entries = list(M)
-    syms, numbers, parts = _rational_parts(entries, "screws: expected entries")
+    syms, numbers, parts = _rational_parts(entries, "screws: expected entries", trig=True)
     K = _field(tuple(sorted(numbers, key=str)))
     gens = tuple(syms) if syms else (Dummy("c"),)
     R = K[gens]
@@ -571,6 +783,8 @@ def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
         for d in dens:
             den = R.lcm(den, d)
         cols.append(tuple(n * R.exquo(den, d) for n, d in zip(nums, dens, strict=True)))
+    if _relations(R):
+        cols = [tuple(_reduce(e, R) for e in col) for col in cols]
     return _Ring(R, tuple(syms), tuple(cols))
 
 
@@ -593,6 +807,10 @@ def _det(rows, R):
         return R.one
     _charge(math.factorial(n) * math.prod(max((len(e.terms()) for e in r), default=1) or 1
                                           for r in rows))
+    return _reduce(_det_unreduced(rows, R, n), R)
+
+
+def _det_unreduced(rows, R, n):
     if n == 1:
         return rows[0][0]
     if n == 2:
@@ -622,19 +840,19 @@ class _Analysis:
 _SEEDS = (1, 2, 3)
 
 
-def _cramer(B, rows, cols, R, m=None) -> list:
+def _cramer(B, rows, cols, R, m=None, width: int = 6) -> list:
     """Null vectors of the rows ``B[rows]`` by Cramer's rule on the minor ``(rows, cols)``.
 
     Each is multiplied through by the minor ``m``, so it is polynomial; they
-    are independent wherever ``m`` is non-zero.
+    are independent wherever ``m`` is non-zero.  ``width``: the length of the rows.
     """
     if m is None:
         m = _det([[B[i][j] for j in cols] for i in rows], R)
     vectors = []
-    for k in range(6):
+    for k in range(width):
         if k in cols:
             continue
-        v = [R.zero] * 6
+        v = [R.zero] * width
         v[k] = m
         for jj, j in enumerate(cols):
             replaced = [[B[i][k] if c == jj else B[i][cc] for c, cc in enumerate(cols)]
@@ -662,8 +880,7 @@ def _analysis(M: ImmutableMatrix) -> _Analysis:
     K = R.domain
     B = [_swap(c) for c in rg.cols]
     for seed in _SEEDS:
-        rnd = random.Random(seed)
-        point = [K.convert(rnd.randint(-97, 97)) for _ in R.gens]
+        point = _sample_point(R, random.Random(seed))
         B0 = DomainMatrix([[b(*point) if b else K.zero for b in row] for row in B],
                           (len(B), 6), K)
         _, rows = B0.transpose().rref()
@@ -671,12 +888,27 @@ def _analysis(M: ImmutableMatrix) -> _Analysis:
             continue
         _, cols = B0.extract(list(rows), list(range(6))).rref()
         if all(
-            not sum((b * x for b, x in zip(B[i], v, strict=True)), R.zero)
+            not _reduce(sum((b * x for b, x in zip(B[i], v, strict=True)), R.zero), R)
             for v in _cramer(B, rows, cols, R)
             for i in range(len(B))
             if i not in rows
         ):
             return _Analysis(len(rows), tuple(rows), tuple(cols))
+    if _relations(R):  # pragma: no cover - unlucky points on the circle: more of them
+        for seed in range(len(_SEEDS) + 1, 64):
+            point = _sample_point(R, random.Random(seed))
+            B0 = DomainMatrix([[b(*point) if b else K.zero for b in row] for row in B],
+                              (len(B), 6), K)
+            _, rows = B0.transpose().rref()
+            _, cols = B0.extract(list(rows), list(range(6))).rref() if rows else (None, ())
+            if all(
+                not _reduce(sum((b * x for b, x in zip(B[i], v, strict=True)), R.zero), R)
+                for v in _cramer(B, rows, cols, R)
+                for i in range(len(B))
+                if i not in rows
+            ):
+                return _Analysis(len(rows), tuple(rows), tuple(cols))
+        raise RuntimeError("rank: no point on the circle proved the rank")  # pragma: no cover
     A = _dm([[c[i] for c in rg.cols] for i in range(6)], R)  # pragma: no cover - unlucky points
     _, _, pivots = A.rref_den()  # pragma: no cover
     if not pivots:  # pragma: no cover
@@ -684,6 +916,49 @@ def _analysis(M: ImmutableMatrix) -> _Analysis:
     Bp = _dm([B[i] for i in pivots], R)  # pragma: no cover
     _, _, cols = Bp.rref_den()  # pragma: no cover
     return _Analysis(len(pivots), tuple(pivots), tuple(cols))  # pragma: no cover
+
+
+def _pure_translations(T: ImmutableMatrix, rotations: int) -> ImmutableMatrix:
+    """The ``v`` parts of a basis of the twists in the span of ``T`` with ``omega = 0``, generic.
+
+    ``T`` (6 x k, polynomial columns, independent) spans the twists;
+    ``rotations`` is the generic rank of its ``omega`` block.  The
+    combinations ``x`` with ``omega x = 0`` come by Cramer's rule on a non-zero
+    minor of that block (found at a random point, so non-zero generically):
+    ``k - rotations`` of them, polynomial, then ``T x``.  Cheaper than the
+    intersection with the translations (a reciprocal of reciprocals).
+    """
+    k = T.cols
+    if k == rotations:
+        return ImmutableMatrix.zeros(3, 0)
+    if rotations == 0:
+        return ImmutableMatrix(T[3:, :])
+    rg = _to_ring(ImmutableMatrix.vstack(T[:3, :], ImmutableMatrix.zeros(3, k)))
+    R, K = rg.ring, rg.ring.domain
+    A = [[rg.cols[j][i] for j in range(k)] for i in range(3)]  # the omega rows
+    for seed in _SEEDS:
+        point = _sample_point(R, random.Random(seed))
+        A0 = DomainMatrix([[a(*point) if a else K.zero for a in row] for row in A], (3, k), K)
+        _, rows = A0.transpose().rref()
+        if len(rows) == rotations:
+            break
+    _, cols = A0.extract(list(rows), list(range(k))).rref()
+    vectors = [_primitive(v, R) for v in _cramer(A, rows, cols, R, width=k)]
+    xs = ImmutableMatrix([[_poly_expr(e, R) for e in v] for v in vectors]).T
+    # y in the null space of the omega block with its columns scaled by D (``_to_ring``
+    # clears denominators column by column): D y in the null space of the block itself
+    moves = (ImmutableMatrix(T[3:, :]) * _column_scales(T, rg, R) * xs).applyfunc(cancel)
+    return ImmutableMatrix(moves)
+
+
+def _column_scales(T: ImmutableMatrix, rg: _Ring, R) -> ImmutableMatrix:
+    """The diagonal of the factors ``_to_ring`` multiplied the columns of ``T``'s omega block by."""
+    k = T.cols
+    d = []
+    for j in range(k):
+        i = next((i for i in range(3) if T[i, j] != 0), None)
+        d.append(1 if i is None else cancel(_poly_expr(rg.cols[j][i], R) / T[i, j]))
+    return ImmutableMatrix.diag(*d) if k else ImmutableMatrix.zeros(0, 0)
 
 
 @dataclass(frozen=True)
@@ -699,41 +974,83 @@ class _Node:
 
 
 def _poly_expr(p, R) -> Any:
-    return R.to_sympy(p)
+    """A ring element as a SymPy expression in the user's symbols (``sin(q)``, not its ring symbol)."""
+    e = R.to_sympy(p)
+    return e.xreplace(_TRIG_BACK) if _relations(R) else e
 
 
 def _minor(B, rows, cols, R):
     return _det([[B[i][j] for j in cols] for i in rows], R)
 
 
+#: below this estimated work (``_charge`` units) every candidate minor is computed to choose
+#: the simplest; above it, candidates are ranked by a degree bound and checked at a point first
+_EXACT_CHOICE = 200_000
+
+
+def _det_cost(rows) -> int:
+    """The work ``_det`` charges for these rows (see :data:`BUDGET`)."""
+    return math.factorial(len(rows)) * math.prod(
+        max((len(e.terms()) for e in r), default=1) or 1 for r in rows)
+
+
 def _choose_minor(rg: _Ring, rank: int, pivots: tuple):
-    """A non-zero ``rank x rank`` minor of the swapped rows, as simple as can be found."""
+    """A non-zero ``rank x rank`` minor of the swapped rows, as simple as can be found.
+
+    Small systems: every candidate is computed and the one of least degree
+    (then fewest terms) kept.  Where that would cost more than
+    :data:`_EXACT_CHOICE`, the candidates are ranked by a bound on their
+    degree (the sum over rows of the largest total degree), those that vanish
+    at a random point (of the circle, for angles) are passed over, and the
+    best of the first three non-zero ones is kept: the determinants of many
+    symbols are the dearest part of a mobility analysis (profiled on a 3-RPS
+    with 12 symbols: 29 of 44 s in choosing the minor).
+    """
     R = rg.ring
     B = [_swap(c) for c in rg.cols]
     all_rows = list(combinations(range(len(B)), rank))
     col_sets = list(combinations(range(6), rank))
     row_sets = all_rows if len(all_rows) * len(col_sets) <= _MINOR_BUDGET else [tuple(pivots)]
+    candidates = [(rows, cols) for rows in row_sets for cols in col_sets]
+    subs = {c: [[B[i][j] for j in c[1]] for i in c[0]] for c in candidates}
+    if sum(_det_cost(m) for m in subs.values()) > _EXACT_CHOICE:
+        K = R.domain
+        point = _sample_point(R, random.Random(7))
+        B0 = [[b(*point) if b else K.zero for b in row] for row in B]
+
+        def bound(c):
+            deg = sum(max((sum(e.LM) if e else 0) for e in r) for r in subs[c])
+            return (deg, _det_cost(subs[c]))
+
+        picked = []
+        for c in sorted(candidates, key=bound):
+            rows, cols = c
+            if _dm([[B0[i][j] for j in cols] for i in rows], K).det():
+                picked.append(c)
+                if len(picked) == 3:
+                    break
+        candidates = picked or candidates
     best = None
-    for rows in row_sets:
-        for cols in col_sets:
-            m = _minor(B, rows, cols, R)
-            if not m:
-                continue
-            key = (max(sum(e) for e in m.monoms()), len(m.terms()))
-            if best is None or key < best[0]:
-                best = (key, m, rows, cols)
-                if key[0] == 0:
-                    return best[1:]
+    for rows, cols in candidates:
+        m = _det(subs[(rows, cols)], R)
+        if not m:
+            continue
+        key = (max(sum(e) for e in m.monoms()), len(m.terms()))
+        if best is None or key < best[0]:
+            best = (key, m, rows, cols)
+            if key[0] == 0:
+                return best[1:]
     assert best is not None, "a system of rank r has a non-zero r x r minor on its pivot rows"
     return best[1:]
 
 
 def _factors(p, R) -> list:
-    """The irreducible factors of ``p`` that can vanish: not proved non-zero.
+    """The irreducible factors of ``p`` that can vanish at a real point: not proved non-zero.
 
-    A factor is proved non-zero by the symbols' assumptions (``is_zero``) or,
-    for a factor quadratic in a real symbol with a constant leading
-    coefficient, by a negative discriminant (:func:`_no_real_zero`).
+    A factor is proved non-zero by the symbols' assumptions (``is_zero``), by
+    :func:`_no_real_zero` (a definite polynomial), or by having no real root
+    (a polynomial in one symbol) or no point on the unit circle (a
+    polynomial in ``sin(q)`` and ``cos(q)`` alone).
     """
     if p.is_ground:
         return []
@@ -744,36 +1061,96 @@ def _factors(p, R) -> list:
         if f.is_ground:
             continue
         e = _poly_expr(f, R)
-        if is_zero(e) is False or _no_real_zero(f, R):
+        if is_zero(e) is False or _no_real_zero(f, R) or _points(f, R) == ():
             continue
         out.append(f)
     return out
 
 
-def _no_real_zero(f, R) -> bool:
-    """True if ``f = a x**2 + b x + c`` (``a`` a number, ``x`` real) has no real zero.
+def _involved(f, R) -> list:
+    """The indices of the ring symbols that ``f`` depends on."""
+    return [i for i in range(len(R.gens)) if f.degree(i) > 0]
 
-    That is when ``4 a c - b**2 > 0`` for every value of the other symbols,
-    as their assumptions prove (``(x + 1)**2 + z**2 + 1``: ``4 z**2 + 4 > 0``).
+
+def _positive(p, R, depth: int = 0) -> bool:
+    """True if ``p > 0`` at every real point, as proved here (False: not proved).
+
+    Proofs: a positive constant; the symbols' assumptions (``is_positive``);
+    a polynomial in one symbol without a real root, positive at one point
+    (``count_roots``); a quadratic ``a x**2 + b x + c`` in a symbol with
+    ``a > 0`` and ``4 a c - b**2 > 0`` everywhere, each proved the same way
+    (``(x + 2)**2 + (y + 2)**2 + 4``: ``4 (y + 2)**2 + 16 > 0``).  The ring
+    symbols of ``sin(q)`` and ``cos(q)`` are read as free real symbols, which
+    is stronger than needed.
     """
-    for i, x in enumerate(R.symbols):
-        if f.degree(i) != 2 or not x.is_real:
+    if not p:
+        return False
+    if p.is_ground:
+        return bool(R.domain.to_sympy(p.LC) > 0)
+    if _poly_expr(p, R).is_positive:
+        return True
+    involved = _involved(p, R)
+    if len(involved) == 1:
+        x = R.symbols[involved[0]]
+        u = Poly(R.to_sympy(p), x)
+        return u.count_roots() == 0 and bool(u.nth(0) > 0)  # no root, positive at 0
+    if depth >= 3:
+        return False
+    for i in involved:
+        x = R.symbols[i]
+        if p.degree(i) != 2 or x.is_real is False:
             continue
         g = R.gens[i]
-        a, b = f.coeff_wrt(g, 2), f.coeff_wrt(g, 1)
-        if not a.is_ground:
-            continue
-        c = f - a * g**2 - b * g
-        if (_poly_expr(4 * a * c - b**2, R)).is_positive:
+        a, b = p.coeff_wrt(g, 2), p.coeff_wrt(g, 1)
+        c = p - a * g**2 - b * g
+        if _positive(a, R, depth + 1) and _positive(4 * a * c - b**2, R, depth + 1):
             return True
     return False
 
 
+def _square_split(f, R, depth: int = 0):
+    """``(2 a x + b, 4 a c - b**2)`` where ``f = a x**2 + b x + c >= 0`` is a sum of squares, else None.
+
+    With ``a`` a positive number and ``D = 4 a c - b**2 >= 0`` everywhere
+    (proved: positive, zero, or itself of this form), ``4 a f = (2 a x + b)**2 + D``,
+    so ``f = 0`` exactly where both ``2 a x + b = 0`` and ``D = 0``: two
+    equations in the place of one (``(x - 1)**2 + (y - 1)**2 = 0``: ``x = 1, y = 1``).
+    """
+    if depth >= 4:
+        return None
+    for i in _involved(f, R):
+        if f.degree(i) != 2 or not _solvable(i, R):
+            continue
+        g = R.gens[i]
+        a, b = f.coeff_wrt(g, 2), f.coeff_wrt(g, 1)
+        if not a.is_ground or not R.domain.to_sympy(a.LC) > 0:
+            continue
+        c = f - a * g**2 - b * g
+        D = 4 * a * c - b**2
+        if not D or _positive(D, R) or _square_split(D, R, depth + 1) is not None:
+            return 2 * a * g + b, D
+    return None
+
+
+def _no_real_zero(f, R) -> bool:
+    """True if ``f`` has no real zero: ``f`` or ``-f`` proved positive (:func:`_positive`)."""
+    return _positive(f, R) or _positive(-f, R)
+
+
+def _solvable(i: int, R) -> bool:
+    """Whether ring symbol ``i`` may be solved for: a user symbol that is not an angle of sin/cos."""
+    x = R.symbols[i]
+    return x not in _TRIG_BACK and not any(q == x for q, _, _ in _relations(R))
+
+
 def _linear_in(f, R):
-    """``(symbol, a, b)`` with ``f = a*symbol + b``; a constant ``a`` preferred; or None."""
+    """``(symbol, a, b)`` with ``f = a*symbol + b``; a constant ``a`` preferred; or None.
+
+    Only a symbol that :func:`_solvable` allows (never ``sin(q)``'s ring symbol, nor ``q``).
+    """
     best = None
     for i, g in enumerate(R.gens):
-        if f.degree(i) != 1:
+        if f.degree(i) != 1 or not _solvable(i, R):
             continue
         a = f.coeff_wrt(g, 1)
         b = f - a * g
@@ -781,6 +1158,71 @@ def _linear_in(f, R):
         if best is None or key < best[0]:
             best = (key, R.symbols[i], a, b)
     return None if best is None else best[1:]
+
+
+def _points(f, R) -> tuple | None:
+    """The real zeros of ``f`` when they are finitely many and found exactly; else None.
+
+    Each zero is ``(pairs, condition)``: the substitution (``((x, root),)``, or
+    ``((sin(q), s), (cos(q), c))``) and its condition in the user's symbols.
+    Decided: ``f`` in one symbol (its real roots: ``real_roots``, surds or
+    ``CRootOf``) and ``f`` in ``sin(q)``, ``cos(q)`` of one angle (the points of
+    the circle, :func:`_circle_points`).  ``()`` where there is no real zero.
+    """
+    involved = _involved(f, R)
+    if not involved:
+        return None
+    angles = {_TRIG_BACK[R.symbols[i]].args[0] for i in involved if R.symbols[i] in _TRIG_BACK}
+    if len(angles) == 1 and all(R.symbols[i] in _TRIG_BACK for i in involved):
+        return _circle_points(R.to_sympy(f), next(iter(angles)))
+    if len(involved) == 1 and _solvable(involved[0], R):
+        x = R.symbols[involved[0]]
+        return _real_points(R.to_sympy(f), x)
+    return None
+
+
+@lru_cache(maxsize=1024)
+def _real_points(e: Any, x: Any) -> tuple:
+    """The distinct real roots ``r`` of the polynomial ``e`` in ``x``, as ``(((x, r),), Eq(x, r))``."""
+    _charge(Poly(e, x).degree() ** 3)
+    roots: list = []
+    for r in Poly(e, x).real_roots():
+        if r not in roots and _admissible(x, r):
+            roots.append(r)
+    return tuple((((x, r),), Eq(x, r)) for r in roots)
+
+
+def _admissible(x: Any, r: Any) -> bool:
+    """Whether the value ``r`` may be the symbol ``x``'s: no assumption of ``x`` refutes it."""
+    for prop in ("positive", "nonnegative", "negative", "nonpositive", "nonzero", "integer"):
+        if getattr(x, f"is_{prop}") and getattr(r, f"is_{prop}") is False:
+            return False
+    return True
+
+
+@lru_cache(maxsize=1024)
+def _circle_points(e: Any, q: Any) -> tuple:
+    """The points ``(sin q, cos q)`` of the unit circle where the polynomial ``e`` vanishes.
+
+    ``e`` is in the ring symbols of ``sin(q)`` and ``cos(q)``.  Through
+    ``t = tan(q/2)``: the real roots of the numerator of ``e(2t/(1+t**2),
+    (1-t**2)/(1+t**2))`` give every point but ``q = pi``, ``(0, -1)``, which is
+    checked apart.  Each point is ``(((sin(q), s), (cos(q), c)), condition)``.
+    """
+    S, C = _trig_symbol(sin, q), _trig_symbol(cos, q)
+    t = Dummy("t", real=True)
+    num = fraction(cancel(e.xreplace({S: 2 * t / (1 + t**2), C: (1 - t**2) / (1 + t**2)})))[0]
+    values: list = []
+    if num.has(t):
+        _charge(Poly(num, t).degree() ** 3)
+        for r in Poly(num, t).real_roots():
+            value = (radsimp(cancel(2 * r / (1 + r**2))), radsimp(cancel((1 - r**2) / (1 + r**2))))
+            if value not in values:
+                values.append(value)
+    if e.xreplace({S: 0, C: -1}) == 0 and (0, -1) not in values:
+        values.append((Integer(0), Integer(-1)))
+    return tuple((((sin(q), s), (cos(q), c)), And(Eq(sin(q), s), Eq(cos(q), c)))
+                 for s, c in values)
 
 
 class _TooManyCases(Exception):
@@ -849,7 +1291,7 @@ class _Cases(list):
 def _cases(M: ImmutableMatrix, limit: int = MAX_CASES) -> tuple[_Node, ...]:
     out = _Cases(limit)
     try:
-        _node(M, (), (), (), out)
+        _node(_normal(M), (), (), (), out)
     except _TooManyCases:
         raise ValueError(
             f"rank_conditions: the case split of this system has more than {limit} cases; "
@@ -861,7 +1303,12 @@ def _cases(M: ImmutableMatrix, limit: int = MAX_CASES) -> tuple[_Node, ...]:
 @lru_cache(maxsize=256)
 def _top(M: ImmutableMatrix) -> _Node:
     """The generic case alone (what ``reciprocal`` needs), without the case split."""
-    return _here(M, (), (), (), split=False)[0]
+    return _here(_normal(M), (), (), (), split=False)[0]
+
+
+def _normal(M: ImmutableMatrix) -> ImmutableMatrix:
+    """``M`` with sin and cos of sums and multiples of symbols expanded (:func:`_trig_normal`)."""
+    return M.applyfunc(_trig_normal) if M.has(sin, cos) else M
 
 
 def _condition(conds) -> Boolean:
@@ -872,9 +1319,31 @@ def _condition(conds) -> Boolean:
     return And(*seen) if seen else true
 
 
+def _substitute(obj: Any, subs: Any) -> Any:
+    """``obj.xreplace(subs)``, where keys ``sin(q)`` and ``cos(q)`` reach ``sin(2 q)``, ``cos(q + r)``.
+
+    The substitutions of a case split may set ``sin(q)`` and ``cos(q)`` of an
+    angle ``q`` (a point of the circle); sin and cos of sums and integer
+    multiples of ``q`` are expanded (``expand_trig``) before they are replaced.
+
+    >>> from sympy import symbols, sin, cos
+    >>> from screwsym.systems.screw_system import _substitute
+    >>> q, r = symbols("q r", real=True)
+    >>> _substitute(sin(q + r) + cos(q), {sin(q): 0, cos(q): -1})
+    -sin(r) - 1
+    """
+    d = dict(subs)
+    angles = {k.args[0] for k in d if isinstance(k, (sin, cos))}
+    if angles and hasattr(obj, "atoms"):
+        for a in obj.atoms(sin, cos):
+            if a not in d and not a.args[0].is_Symbol and a.args[0].free_symbols & angles:
+                d[a] = expand_trig(a).xreplace(d)
+    return obj.xreplace(d) if d else obj
+
+
 def _apply(M: ImmutableMatrix, subs) -> ImmutableMatrix:
     """``M`` with the substitution made, each entry brought to lowest terms (``cancel``)."""
-    return M.xreplace(dict(subs)).applyfunc(cancel) if subs else M
+    return _substitute(M, subs).applyfunc(cancel) if subs else M
 
 
 def _known_nonzero(f_expr, nonzero: tuple) -> bool:
@@ -882,18 +1351,22 @@ def _known_nonzero(f_expr, nonzero: tuple) -> bool:
     return any(cancel(f_expr / g).is_number for g in nonzero)
 
 
-def _substitute_nonzero(nonzero: tuple, x, value) -> tuple:
-    """The polynomials a case assumes non-zero, after the substitution ``x = value``.
+def _substitute_nonzero(nonzero: tuple, pairs: tuple) -> tuple | None:
+    """The polynomials a case assumes non-zero, after the substitution ``pairs``.
 
     Each becomes the irreducible factors of its numerator (the denominators
-    of ``value`` are themselves assumed non-zero).
+    of the values are themselves assumed non-zero).  None where one of them
+    becomes zero: the substitution contradicts the case, which has no point.
     """
+    keys = [x for x, _ in pairs]
     out = []
     for g in nonzero:
-        if not g.has(x):
+        if not any(g.has(x) for x in keys):
             out.append(g)
             continue
-        num = fraction(cancel(g.xreplace({x: value})))[0]
+        num = fraction(cancel(_substitute(g, pairs)))[0]
+        if num == 0:
+            return None
         out.extend(f for f, _ in factor_list(num)[1] if not f.is_number)
     return tuple(out)
 
@@ -919,11 +1392,16 @@ def _here(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, split: 
 
 
 def _node(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, out: list) -> None:
-    """Analyse ``M`` under ``conds`` (already substituted into ``M``); append the cases."""
+    """Analyse ``M`` under ``conds`` (already substituted into ``M``); append the cases.
+
+    The special cases are those of the factors of the minor, one after the
+    other, each with the earlier ones non-zero: the cases do not overlap.
+    """
     node, factors = _here(M, conds, subs, nonzero)
     out.append(node)
-    for f in factors:
-        _impose(M, conds, subs, nonzero, [f], out)
+    for k, f in enumerate(factors):
+        earlier = tuple(factors[:k])
+        _impose(M, conds + tuple(Ne(g, 0) for g in earlier), subs, nonzero + earlier, [f], out)
 
 
 def _impose(M, conds, subs, nonzero, pending: list, out: list) -> None:
@@ -933,7 +1411,7 @@ def _impose(M, conds, subs, nonzero, pending: list, out: list) -> None:
         return
     expr, rest = pending[0], pending[1:]
     if subs:
-        expr = cancel(expr.xreplace(dict(subs)))
+        expr = cancel(_substitute(expr, subs))
     # the equation as a polynomial in the remaining symbols, through the same ring
     rg = _to_ring(ImmutableMatrix([expr, 0, 0, 0, 0, 0]))
     p = rg.cols[0][0]
@@ -941,25 +1419,51 @@ def _impose(M, conds, subs, nonzero, pending: list, out: list) -> None:
         _impose(M, conds, subs, nonzero, rest, out)
         return
     R = rg.ring
+    done: list = []  # the factors imposed so far: a later one's case has them non-zero
     for f in _factors(p, R):
         fe = _poly_expr(f, R)
         if _known_nonzero(fe, nonzero):
             continue  # contradicts the case: no real point
-        eq = Eq(fe, 0)
-        lin = _linear_in(f, R)
-        if lin is None:
-            out.append(_Node(_condition(conds + (eq,)), None, subs, M))
-            continue
-        x, a, b = lin
-        value = -_poly_expr(b, R) / _poly_expr(a, R)
-        a_factors = [_poly_expr(g, R) for g in _factors(a, R)]
-        a_factors = [g for g in a_factors if not _known_nonzero(g, nonzero)]
-        new_subs = tuple((k, cancel(v.xreplace({x: value}))) for k, v in subs) + ((x, value),)
+        earlier = tuple(done)
+        done.append(fe)
+        _solve(M, conds + tuple(Ne(g, 0) for g in earlier), subs, nonzero + earlier,
+               f, fe, R, rest, out)
+
+
+def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
+    """The cases of ``f = 0`` (``fe`` its expression): solved for a symbol, at its points, or None."""
+    lin = _linear_in(f, R)
+    if lin is None:
+        points = _points(f, R)
+        squares = _square_split(f, R) if points is None else None
+        if squares is not None:  # a sum of squares: each square is zero
+            _impose(M, conds, subs, nonzero, [_poly_expr(e, R) for e in squares] + rest, out)
+            return
+        if points is None:  # not decided here: listed with rank None
+            out.append(_Node(_condition(conds + (Eq(fe, 0),)), None, subs, M))
+            return
+        for pairs, condition in points:
+            new_nonzero = _substitute_nonzero(nonzero, pairs)
+            if new_nonzero is None:
+                continue
+            new_subs = tuple((k, cancel(_substitute(v, pairs))) for k, v in subs) + pairs
+            _impose(_apply(M, pairs), conds + (condition,), new_subs, new_nonzero, rest, out)
+        return
+    eq = Eq(fe, 0)
+    x, a, b = lin
+    value = -_poly_expr(b, R) / _poly_expr(a, R)
+    a_factors = [_poly_expr(g, R) for g in _factors(a, R)]
+    a_factors = [g for g in a_factors if not _known_nonzero(g, nonzero)]
+    pairs = ((x, value),)
+    new_nonzero = _substitute_nonzero(nonzero, pairs)
+    if new_nonzero is not None:
+        new_subs = tuple((k, cancel(v.xreplace({x: value}))) for k, v in subs) + pairs
         new_conds = conds + (eq,) + tuple(Ne(g, 0) for g in a_factors)
-        new_nonzero = _substitute_nonzero(nonzero, x, value) + tuple(a_factors)
-        _impose(_apply(M, ((x, value),)), new_conds, new_subs, new_nonzero, rest, out)
-        for g in a_factors:  # the coefficient vanishes: then so must the rest
-            _impose(M, conds + (eq,), subs, nonzero, [g, _poly_expr(b, R)] + rest, out)
+        _impose(_apply(M, pairs), new_conds, new_subs, new_nonzero + tuple(a_factors), rest, out)
+    for k, g in enumerate(a_factors):  # the coefficient vanishes: then so must the rest
+        earlier = tuple(a_factors[:k])
+        _impose(M, conds + (eq,) + tuple(Ne(h, 0) for h in earlier), subs, nonzero + earlier,
+                [g, _poly_expr(b, R)] + rest, out)
 
 
 def _basis_system(node: _Node, kind: type[Screw]) -> ScrewSystem:

@@ -626,18 +626,32 @@ def test_mobility_cases_of_the_three_upu_as_a_graph():
     assert_graph_cases_exhaustive(mech, pm, pts, splits=[cases])
 
 
-def test_mobility_cases_says_none_where_sympy_cannot_decide():
+def test_mobility_cases_decides_a_quadratic_at_its_roots():
     # the coupler joint at (1, t**2 - 2): the four-bar folds where t = +-sqrt(2), an equation
-    # linear in no symbol, so that case is listed undecided (None), never guessed
-    from sympy import Eq, Ne, sqrt
+    # linear in no symbol but in one symbol: decided at its two real roots
+    from sympy import Eq, Ne, Or, sqrt
 
     t = symbols("t", real=True)
     mech = four_r([[0, 0, 0], [1, t**2 - 2, 0], [3, 0, 0], [4, 0, 0]], [Z] * 4)
     cases = mech.mobility_cases()
     assert [(c, None if m is None else m.mobility) for c, m in cases] == [
-        (Ne(t**2 - 2, 0), 1), (Eq(t**2 - 2, 0), None)]
-    # and it is undecided, not wrong: at t = sqrt(2) the four-bar is folded (2 freedoms)
+        (Ne(t**2 - 2, 0), 1), (Or(Eq(t, sqrt(2)), Eq(t, -sqrt(2))), 2)]
+    # independently: at t = sqrt(2) the four-bar is folded (2 freedoms)
     assert mech.xreplace({t: sqrt(2)}).mobility().mobility == 2
+
+
+def test_mobility_cases_says_none_where_sympy_cannot_decide():
+    # the coupler joint at (1, t**2 + u**2 - 2): a circle of folded four-bars, an equation
+    # in two symbols linear in neither: that case is listed undecided (None), never guessed
+    from sympy import Eq, Ne, sqrt
+
+    t, u = symbols("t u", real=True)
+    mech = four_r([[0, 0, 0], [1, t**2 + u**2 - 2, 0], [3, 0, 0], [4, 0, 0]], [Z] * 4)
+    cases = mech.mobility_cases()
+    assert [(c, None if m is None else m.mobility) for c, m in cases] == [
+        (Ne(t**2 + u**2 - 2, 0), 1), (Eq(t**2 + u**2 - 2, 0), None)]
+    # and it is undecided, not wrong: at t = sqrt(2), u = 0 the four-bar is folded
+    assert mech.xreplace({t: sqrt(2), u: 0}).mobility().mobility == 2
 
 
 def test_mobility_cases_keeps_to_its_budget():

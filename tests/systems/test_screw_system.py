@@ -6,7 +6,7 @@ import pickle
 import random
 
 import pytest
-from sympy import Eq, Matrix, Ne, Rational, Symbol, cos, expand, sqrt, symbols, true
+from sympy import Eq, Matrix, Ne, Rational, Symbol, cos, expand, sqrt, symbols, tan, true
 
 from screwsym import Screw, ScrewSystem, Twist, Wrench, reciprocal_product, vector
 from screwsym.systems.screw_system import _cases
@@ -210,13 +210,21 @@ def test_exhaustive_five_joint_limb_with_one_symbolic_joint():
     assert_exhaustive(T, seed=1)
 
 
-def test_nonlinear_factor_is_listed_with_rank_none():
+def test_a_factor_in_one_symbol_is_decided_at_its_roots():
     t = symbols("t", real=True)
-    # parallel force lines through (0,0,0) and (t**2 - 2, 0, 0)... coincide where t**2 = 2
+    # parallel force lines through (0,0,0) and (t**2 - 2, 0, 0) coincide where t**2 = 2
     W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[t**2 - 2, 0, 0]))
+    assert W.rank_conditions() == [(Ne(t**2 - 2, 0), 2), (Eq(t, -sqrt(2)), 1), (Eq(t, sqrt(2)), 1)]
+    assert_exhaustive(W, special=[{t: sqrt(2)}, {t: -sqrt(2)}])
+
+
+def test_nonlinear_factor_is_listed_with_rank_none():
+    t, u = symbols("t u", real=True)
+    # the second line through (t**2 + u**2 - 2, 0, 0): a circle of (t, u), solved for neither
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]),
+                    Wrench.force(Z, point=[t**2 + u**2 - 2, 0, 0]))
     conds = W.rank_conditions()
-    assert conds[0][1] == 2
-    assert any(r is None for _, r in conds)
+    assert conds == [(Ne(t**2 + u**2 - 2, 0), 2), (Eq(t**2 + u**2 - 2, 0), None)]
     assert all(w is None for (_, r), (_, w) in zip(conds, W.reciprocal_cases(), strict=True)
                if r is None)
 
@@ -251,8 +259,10 @@ def test_bad_input():
     with pytest.raises(TypeError, match="other: expected a ScrewSystem, got list"):
         ScrewSystem([1, 0, 0, 0, 0, 0]).union([1, 0, 0, 0, 0, 0])
     th = symbols("theta", real=True)
-    with pytest.raises(ValueError, match=r"rational functions of symbols.*got cos\(theta\)"):
-        _ = ScrewSystem(Twist.rotation([cos(th), 0, 1], point=[0, 0, 0])).rank
+    with pytest.raises(ValueError, match=r"polynomial in sin and cos of symbols.*got tan\(theta\)"):
+        _ = ScrewSystem(Twist.rotation([tan(th), 0, 1], point=[0, 0, 0])).rank
+    with pytest.raises(ValueError, match=r"polynomial in sin and cos.*got cos\(theta\*\*2\)"):
+        _ = ScrewSystem(Twist.rotation([cos(th**2), 0, 1], point=[0, 0, 0])).rank
     with pytest.raises(ValueError, match="max_cases: expected a positive integer, got 0"):
         ScrewSystem().rank_conditions(max_cases=0)
     with pytest.raises(TypeError, match="max_cases: expected a positive integer, got float"):

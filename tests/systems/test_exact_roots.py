@@ -1,0 +1,235 @@
+"""Case conditions decided exactly: at real roots, dropped without real points, never overlapping.
+
+A condition in one symbol is decided at each real root (surds, ``CRootOf``);
+a sum of squares at the point where each square vanishes; a polynomial with no
+real zero (a positive definite one) is no case at all; a case whose values
+unmake a joint is reported as :class:`Degenerate`.  Every split is checked at
+sample points: exactly one case holds there, and its answer is the one of the
+mechanism (or system) built at that point.
+"""
+
+from __future__ import annotations
+
+import random
+
+import numpy as np
+import pytest
+from _mechanisms import Z
+from sympy import Eq, Matrix, Ne, Or, Rational, Symbol, sqrt, symbols, true
+
+from screwsym import ScrewSystem, Twist, Wrench
+from screwsym.systems.joints import P, R, S, U
+from screwsym.systems.mechanism import Degenerate, Limb, ParallelMechanism
+
+
+def sub(a, b):
+    return [x - y for x, y in zip(a, b, strict=True)]
+
+
+def upu_leg(b, a1, top):
+    """Tsai's UPU leg (as in test_mechanism): base U (a1, a2), P along the leg, top U (a2, a1)."""
+    d = sub(top, b)
+    a2 = list(Matrix(a1).cross(Matrix(d)))
+    return Limb(U(b, a1, a2), P(d), U(top, a2, a1))
+
+
+UPU_BASE = [[2, 0, 0], [-1, 2, 0], [-1, -2, 0]]
+UPU_AXIS = [[0, 1, 0], [-2, -1, 0], [2, -1, 0]]
+
+
+def turned_upu(c, s):
+    """Tsai's 3-UPU (Tsai 1996) with the third platform joint turned about z: (-5c, -5s, 3)."""
+    tops = [[1, 0, 3], [0, 1, 3], [-5 * c, -5 * s, 3]]
+    return ParallelMechanism(*(upu_leg(*leg) for leg in zip(UPU_BASE, UPU_AXIS, tops, strict=True)))
+
+
+def assert_cases_at(mech, cases, points):
+    """At each point exactly one case holds, and its mobility is that of the mechanism there."""
+    for point in points:
+        holding = [m for c, m in cases if c.xreplace(point) is true]
+        assert len(holding) == 1, f"{len(holding)} cases hold at {point}"
+        m = holding[0]
+        try:
+            here = mech.xreplace(point)
+        except ValueError:  # the joint cannot be built there
+            assert isinstance(m, Degenerate), (point, m)
+            continue
+        assert not isinstance(m, Degenerate), (point, m)
+        if m is not None:
+            assert m.answer()[0] == here.mobility().mobility, (point, m)
+
+
+@pytest.fixture(scope="module")
+def turned():
+    tau = symbols("tau", real=True)
+    mech = turned_upu((1 - tau**2) / (1 + tau**2), 2 * tau / (1 + tau**2))
+    return tau, mech, mech.mobility_cases()
+
+
+@pytest.mark.slow
+def test_three_upu_turned_is_decided_at_the_roots_of_a_quadratic(turned):
+    # Constraint singularity of the 3-UPU (Zlatanov, Bonev & Gosselin, "Constraint
+    # singularities of parallel mechanisms", ICRA 2002): where the three constraint couples
+    # become dependent the platform gains a rotation, 4 freedoms (1R3T) instead of 3T.  With
+    # the third platform joint turned by theta, tau = tan(theta/2), the couples' determinant
+    # is a multiple of 25 tau**2 - 44 tau + 3: singular at tau = (22 +- sqrt(409))/25.
+    tau, mech, cases = turned
+    assert [(m.mobility, m.motion) for _, m in cases] == [(3, "3T"), (4, "1R3T")]
+    roots = [Rational(22, 25) - sqrt(409) / 25, Rational(22, 25) + sqrt(409) / 25]
+    assert cases[1][0].has(Or(*(Eq(tau, r) for r in roots)))
+    # independently: the couples' rank, exactly, at the roots and beside them
+    for value, rank in ((roots[0], 2), (roots[1], 2), (0, 3), (1, 3)):
+        couples = Matrix.hstack(*(limb.constraints.matrix[3:, :]
+                                  for limb in mech.xreplace({tau: value}).limbs))
+        assert couples.rank(simplify=True) == rank
+    assert_cases_at(mech, cases, [{tau: r} for r in (*roots, 0, 2, Rational(1, 3), -5)])
+
+
+@pytest.mark.slow
+def test_three_upu_turned_by_sin_and_cos():
+    # the same mechanism written with cos(theta), sin(theta): the two singular points of
+    # the circle, exact, in the user's symbols
+    th = symbols("theta", real=True)
+    from sympy import cos, sin
+
+    mech = turned_upu(cos(th), sin(th))
+    cases = mech.mobility_cases(merge=False)
+    assert [m.mobility for _, m in cases] == [3, 4, 4]
+    # the two points are those of tau = tan(theta/2) = (22 +- sqrt(409))/25 (in floats)
+    expected = sorted((float(2 * r / (1 + r**2)), float((1 - r**2) / (1 + r**2)))
+                      for r in (Rational(22, 25) - sqrt(409) / 25, Rational(22, 25) + sqrt(409) / 25))
+    got = []
+    for cond, _ in cases[1:]:
+        values = {eq.lhs: eq.rhs for eq in cond.args}
+        got.append((float(values[sin(th)]), float(values[cos(th)])))
+    assert np.allclose(sorted(got), expected)
+
+
+@pytest.mark.slow
+def test_the_checker_rejects_overlaps_and_wrong_answers(turned):
+    tau, mech, cases = turned
+    root = Rational(22, 25) + sqrt(409) / 25
+    with pytest.raises(AssertionError, match="2 cases hold"):
+        assert_cases_at(mech, [(true, cases[0][1]), *cases[1:]], [{tau: root}])
+    with pytest.raises(AssertionError):
+        assert_cases_at(mech, [(c, cases[0][1]) for c, _ in cases], [{tau: root}])
+
+
+def test_conditions_without_real_solutions_are_dropped():
+    x, y = symbols("x y", real=True)
+    # (x + 2)**2 + (y + 2)**2 + 4 is never zero: the two axes never coincide
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]),
+                    Wrench.force(Z, point=[(x + 2)**2 + (y + 2)**2 + 4, 0, 0]))
+    assert W.rank_conditions() == [(True, 2)]
+    # t**2 + t + 1 has no real root: no case either
+    t = symbols("t", real=True)
+    W2 = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[t**2 + t + 1, 0, 0]))
+    assert W2.rank_conditions() == [(True, 2)]
+    # a checker of that: a positive value at samples (it rejects t**2 - 1, which vanishes at 1)
+    for expr, positive in ((t**2 + t + 1, True), (t**2 - 1, False)):
+        values = [expr.xreplace({t: Rational(k, 4)}) for k in range(-12, 13)]
+        assert all(v > 0 for v in values) is positive
+
+
+def test_a_sum_of_squares_is_decided_square_by_square():
+    x, y = symbols("x y", real=True)
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]),
+                    Wrench.force(Z, point=[(x - 1)**2 + (y + 2)**2, 0, 0]))
+    cases = W.rank_conditions()
+    assert [r for _, r in cases] == [2, 1]
+    assert cases[1][0].xreplace({x: 1, y: -2}) is true
+    assert W.xreplace({x: 1, y: -2}).rank == 1
+    rng = random.Random(0)
+    for _ in range(5):
+        point = {x: Rational(rng.randint(-9, 9), 2), y: Rational(rng.randint(-9, 9), 3)}
+        holding = [r for c, r in cases if c.xreplace(point) is true]
+        assert holding == [W.xreplace(point).rank]
+
+
+def test_cases_do_not_overlap():
+    # two axes that become parallel (t = 0) and then coincide (b = 0 too), and a third
+    # that meets them: at sample points, including the special ones, one case holds
+    t, b = symbols("t b", real=True)
+    T = ScrewSystem(Twist.rotation(Z, point=[0, 0, 0]), Twist.rotation([t, 0, 1], point=[0, b, 0]),
+                    Twist.rotation(Z, point=[b, t, 0]))
+    cases = T.rank_conditions()
+    points = [{t: 0, b: 0}, {t: 0, b: 1}, {t: 1, b: 0}, {t: 2, b: 3}, {t: -1, b: Rational(1, 2)}]
+    for point in points:
+        holding = [r for c, r in cases if c.xreplace(point) is true]
+        assert holding == [Matrix(T.matrix.xreplace(point)).rank()], point
+
+
+def test_a_case_that_unmakes_a_joint_is_reported():
+    # an R-P-S leg whose base point is symbolic: where it reaches the sphere's centre the
+    # prismatic direction vanishes (no joint); a second leg holds the platform
+    a = symbols("a1:3", real=True)
+    top = [1, 1, 2]
+    base = [a[0], a[1], 2]
+    leg1 = Limb(R(base, [0, 0, 1]), P(sub(top, base)), S(top))
+    leg2 = Limb(R([0, 0, 0], [1, 0, 0]), P([0, 1, 1]), S([0, 1, 1]))
+    mech = ParallelMechanism(leg1, leg2)
+    cases = mech.mobility_cases()
+    degenerate = [(c, m) for c, m in cases if isinstance(m, Degenerate)]
+    assert len(degenerate) == 1
+    cond, m = degenerate[0]
+    assert cond.xreplace({a[0]: 1, a[1]: 1}) is true
+    assert m.reason.startswith("limbs[0]: direction: a joint axis needs a non-zero direction")
+    assert m.answer() == ("degenerate joint", m.reason)
+    points = [{a[0]: 1, a[1]: 1}, {a[0]: 1, a[1]: 0}, {a[0]: 0, a[1]: 3}, {a[0]: 2, a[1]: 1}]
+    assert_cases_at(mech, cases, points)
+
+
+def test_a_symbol_with_cannot_decide_is_none():
+    # an equation in two symbols, linear in neither, without a proof of no real zero
+    u, v = symbols("u v", real=True)
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[u**2 - v**3 - 2, 0, 0]))
+    cases = W.rank_conditions()
+    assert cases == [(Ne(u**2 - v**3 - 2, 0), 2), (Eq(u**2 - v**3 - 2, 0), None)]
+    assert Symbol("u", real=True) in cases[1][0].free_symbols
+
+
+@pytest.mark.slow
+def test_pure_translations_agree_with_the_intersection():
+    # the platform's pure translations by Cramer's rule on the omega block, against the
+    # definition: the intersection of its twist system with the three translations
+    from _mechanisms import three_rps
+
+    from screwsym.systems.screw_system import _pure_translations
+
+    r = symbols("r", real=True)
+    rho = (r, Rational(-1, 2), Rational(-1, 2))
+    at = {r: 1}
+    for mech in (three_rps(rho), three_rps()):
+        T = mech.twists
+        m = mech.mobility()
+        ours = _pure_translations(T.matrix, m.rotations)
+        pure = T & ScrewSystem(*(Twist.translation(e) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
+        theirs = pure.basis().matrix[3:, :]
+        A, B = Matrix(ours.xreplace(at)), Matrix(theirs.xreplace(at))
+        assert A.rank() == B.rank() == Matrix.hstack(A, B).rank() == m.translations
+    # and it rejects a wrong answer: a rotation's v part is not a pure translation here
+    wrong = Matrix(T.matrix[3:, :1].xreplace(at))
+    assert Matrix.hstack(Matrix(ours.xreplace(at)), wrong).rank() > m.translations
+
+
+def test_a_universal_joint_made_parallel_is_reported():
+    # the U's second axis (1, a, 0) is parallel to its first (1, 0, 0) at a = 0
+    a = symbols("a", real=True)
+    leg1 = Limb(U([0, 0, 0], [1, 0, 0], [1, a, 0]), P([0, 0, 1]), S([0, 0, 2]))
+    leg2 = Limb(R([1, 0, 0], [1, 0, 0]), P([0, 1, 1]), S([1, 1, 1]))
+    mech = ParallelMechanism(leg1, leg2)
+    cases = mech.mobility_cases()
+    assert [c for c, _ in cases] == [Ne(a, 0), Eq(a, 0)]
+    assert cases[0][1].mobility == 5
+    assert isinstance(cases[1][1], Degenerate)
+    assert "a universal joint needs two non-parallel axes" in cases[1][1].reason
+    assert_cases_at(mech, cases, [{a: 0}, {a: 2}, {a: Rational(-1, 3)}])
+
+
+def test_roots_that_the_assumptions_refute_are_no_case():
+    # h positive: of the roots of h**2 - 2 only h = sqrt(2) is a case
+    h, t = symbols("h", positive=True), symbols("t", real=True)
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[h**2 - 2, 0, 0]))
+    assert W.rank_conditions() == [(Ne(h**2 - 2, 0), 2), (Eq(h, sqrt(2)), 1)]
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[t**2 - 2, 0, 0]))
+    assert W.rank_conditions() == [(Ne(t**2 - 2, 0), 2), (Eq(t, -sqrt(2)), 1), (Eq(t, sqrt(2)), 1)]
