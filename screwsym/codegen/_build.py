@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from . import _emit
-from ._plan import Out, Plan, with_cse
+from ._plan import Out, Plan, prepared
 from ._printers import PY_HELPERS
 from ._runtime import Arg, Trailings, prepare
 
@@ -274,7 +274,7 @@ def _exec(source: str, plan: Plan, backend: str, ns: dict) -> Callable:
 
 
 def build_numpy(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    plan = with_cse(plan) if use_cse else plan
+    plan = prepared(plan, use_cse)
     fn = _exec(_emit.numpy_source(plan), plan, "numpy", _namespace(plan))
     return _finish(fn, plan, doc)
 
@@ -292,7 +292,7 @@ def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
     sub = _subdir("numba")
     found = None if sub is None else find_artifact(sub, modname, ".py")
     if found is None and sub is not None and not from_index:
-        full = with_cse(plan) if use_cse else plan
+        full = prepared(plan, use_cse)
         data = _emit.numba_source(full, PY_HELPERS).encode()
         path = _store(sub, modname, ".py", data)
         found = None if path is None else (path, data)
@@ -300,7 +300,7 @@ def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
     if found is None:
         if from_index:  # its module is gone, or not what its name says
             raise OSError(f"no cached module for {modname}")
-        full = with_cse(plan) if use_cse else plan
+        full = prepared(plan, use_cse)
         source = _emit.numba_source(full, PY_HELPERS).replace("cache=True", "cache=False")
         _exec(source, full, "numba", mod.__dict__)
         sys.modules[modname] = mod
@@ -415,7 +415,7 @@ def _compile_c(source: str) -> bytes:
 
 
 def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    plan = with_cse(plan) if use_cse else plan
+    plan = prepared(plan, use_cse)
     cname = f"screwsym_k{plan.key}"
     source = _emit.c_source(plan, cname)
     sub = _subdir("c")
