@@ -413,15 +413,15 @@ def build_plan(args: Any, expr: Any, use_cse: bool, name: Any, names: Any, backe
         raise ValueError(f"name: expected a Python identifier not starting with '_', got {name!r}")
     specs, symbols = normalise_args(args, names)
     outs, is_tuple = normalise_expr(expr)
+    for _, exprs in outs:  # first: a supported tree binds no symbol (no Sum, Lambda, ...)
+        for x in exprs:
+            check_supported(x, backend)
     allowed = {s for syms in symbols for s in syms}
     free = _free_symbols([x for _, exprs in outs for x in exprs])
     missing = free - allowed
     if missing:
         listed = ", ".join(sorted(str(s) for s in missing))
         raise ValueError(f"expr: the symbols {listed} are not among args")
-    for _, exprs in outs:
-        for x in exprs:
-            check_supported(x, backend)
     key, flat = key_of(specs, symbols, outs, is_tuple, use_cse, name, backend)
     unpack = []
     k = 0
