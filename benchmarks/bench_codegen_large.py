@@ -24,7 +24,7 @@ import textwrap
 import time
 
 import numpy as np
-from sympy import Add, Integer, count_ops, cos, sin, symbols
+from sympy import Add, Integer, cos, count_ops, sin, symbols
 from sympy import lambdify as sympy_lambdify
 
 from screwsym.codegen import lambdify

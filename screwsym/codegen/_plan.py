@@ -361,7 +361,7 @@ def _rename(roots: Sequence[Basic], mapping: dict) -> tuple[list[Basic], int]:
 def _serial(roots: Sequence[Basic]) -> str:
     """A text that determines the trees ``roots`` (``srepr`` of each leaf), without recursion."""
     index: dict[int, int] = {}
-    lines = []
+    lines: list[str] = []
     for node in _postorder(roots):
         index[id(node)] = len(lines)
         if node.args:
@@ -463,9 +463,12 @@ def frozen(x: Any) -> Any:
 #: expression may be, in generated code (see :func:`straight_line`)
 MAX_ARGS = 32
 MAX_DEPTH = 24
-#: deeper than this, SymPy's ``cse`` (which recurses once per level) is not used: the
-#: subexpressions shared (the same object used twice) become locals instead
+#: deeper than this, or with more distinct nodes, SymPy's ``cse`` (which recurses once
+#: per level, and whose search of sums and products grows faster than their size) is not
+#: used: the repeated subexpressions, found by hashing (:func:`straight_line` with
+#: ``shared``), become locals instead
 CSE_DEPTH = 120
+CSE_NODES = 8000
 
 
 def straight_line(plan: Plan, shared: bool = False) -> Plan:
@@ -478,9 +481,9 @@ def straight_line(plan: Plan, shared: bool = False) -> Plan:
     :data:`MAX_ARGS` terms is summed in chunks, and each subexpression deeper
     than :data:`MAX_DEPTH` is assigned to a local ``_t<m>`` first, walking the
     trees in an explicit post-order (no recursion), so no printed statement is
-    large or deep.  With ``shared``, every subexpression used more than once
-    (the same object) becomes a local too: the common-subexpression
-    elimination of trees too deep for ``sympy.cse``.  The values are unchanged
+    large or deep.  With ``shared``, every subexpression that occurs more than
+    once becomes a local too: the common-subexpression elimination of trees
+    too large or too deep for ``sympy.cse``.  The values are unchanged
     (the same operations, grouped).
     """
     counter = iter(range(10**12))
@@ -490,9 +493,7 @@ def straight_line(plan: Plan, shared: bool = False) -> Plan:
     uses: dict[int, int] = {}
     roots = [e for _, e in plan.assigns] + [e for _, _, e in plan.stores]
     if shared:
-        for node in _postorder(roots):
-            for a in node.args:
-                uses[id(a)] = uses.get(id(a), 0) + 1
+        plan, roots = _canonical(plan, roots, uses)
 
     def emit(e: Basic) -> Symbol:
         t = Symbol(f"_t{next(counter)}", real=True)
@@ -540,6 +541,37 @@ def straight_line(plan: Plan, shared: bool = False) -> Plan:
                 tuple(stores), plan.name, plan.key)
 
 
+def _canonical(plan: Plan, roots: list, uses: dict[int, int]) -> tuple[Plan, list]:
+    """One object per distinct subexpression of ``roots``, and how many parents each has.
+
+    Equal subtrees are found by hashing in post-order (each node after its
+    arguments, which are already one object each, so that comparing two
+    candidates looks one level deep): the common subexpressions of trees too
+    large or too deep for ``sympy.cse``, found in linear time.
+    """
+    table: dict[Basic, Basic] = {}
+    canon: dict[int, Basic] = {}
+    for node in _postorder(roots):
+        args = [canon[id(a)] for a in node.args]
+        same = all(a is b for a, b in zip(args, node.args, strict=True))
+        x = node if same else _make(node, args)
+        found = table.get(x)
+        if found is None:
+            table[x] = found = x
+            for a in set(map(id, args)):
+                uses[a] = uses.get(a, 0) + 1
+        canon[id(node)] = found
+    for r in roots:  # a result used twice is computed once
+        uses[id(canon[id(r)])] = uses.get(id(canon[id(r)]), 0) + 1
+    n = len(plan.assigns)
+    new_roots = [canon[id(r)] for r in roots]
+    plan = Plan(plan.specs, plan.outs, plan.is_tuple, plan.unpack,
+                tuple((sym, e) for (sym, _), e in zip(plan.assigns, new_roots[:n], strict=True)),
+                tuple((j, c, e) for (j, c, _), e in zip(plan.stores, new_roots[n:], strict=True)),
+                plan.name, plan.key)
+    return plan, new_roots
+
+
 def _depth(roots: Sequence[Basic]) -> int:
     depth: dict[int, int] = {}
     for node in _postorder(roots):
@@ -555,5 +587,6 @@ def prepared(plan: Plan, use_cse: bool) -> Plan:
     """
     if not use_cse:
         return straight_line(plan)
-    deep = _depth([e for _, _, e in plan.stores]) > CSE_DEPTH
-    return straight_line(plan, shared=True) if deep else straight_line(with_cse(plan))
+    roots = [e for _, _, e in plan.stores]
+    large = _depth(roots) > CSE_DEPTH or sum(1 for _ in _postorder(roots)) > CSE_NODES
+    return straight_line(plan, shared=True) if large else straight_line(with_cse(plan))

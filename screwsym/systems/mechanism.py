@@ -45,7 +45,7 @@ import operator
 import sys
 from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar
 
-from sympy import And, Basic, Dummy, Eq, ImmutableMatrix, Ne, Not, Or, Poly, cancel, false, roots, true
+from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, false, true
 from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
@@ -275,6 +275,7 @@ def motion_of(twists: ScrewSystem) -> MotionType:
 
 def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple:
     """The pitches of the helical freedoms of ``twists`` (translations ``moves``): see motion_of."""
+    from sympy import Dummy, Poly, roots
     system = twists
     if moves.cols and any(cancel(e) != 0 for e in moves.T * twists.matrix[:3, :]):
         # the twists whose omega is orthogonal to every translation: reciprocal to the

@@ -239,7 +239,7 @@ def test_three_prs():
     T = np.linalg.svd(np.array(F))[2][3:].T  # twists (omega; v), 6 x 3
     horizontal = T @ np.linalg.svd(T[2:3])[2][1:].T  # omega_z = 0: 6 x 2
     x = horizontal @ np.linalg.svd(horizontal[:3])[2][0]  # the one with omega != 0
-    value = float(p.subs(dict(zip(s, h))))
+    value = float(p.subs(dict(zip(s, h, strict=True))))
     assert abs(x[:3] @ x[3:] / (x[:3] @ x[:3]) - value) < 1e-12 and abs(value) > 0.1
 
 

@@ -26,7 +26,7 @@ def loop_pitch(points, axes, pitch, upto):
     link's twist is the sum of the first ``upto`` joints' rates times their twists.
     """
     S = np.array([np.r_[u, np.cross(p, u) + pitch * u]
-                  for p, u in zip(np.array(points, float), np.array(axes, float))]).T
+                  for p, u in zip(np.array(points, float), np.array(axes, float), strict=True)]).T
     rates = np.linalg.svd(S)[2][-1]
     t = S[:, :upto] @ rates[:upto]
     return float(t[:3] @ t[3:] / (t[:3] @ t[:3]))
