@@ -16,8 +16,7 @@ from screwsym.codegen import c_source, lambdify
 from screwsym.codegen._plan import MAX_ARGS, MAX_DEPTH
 
 x, y = symbols("x y", real=True)
-# numba compiles the 400 statements in seconds: in the slow run only
-BACKENDS = ["numpy", "c", pytest.param("numba", marks=pytest.mark.slow)]
+BACKENDS = ["numpy", "c"]  # numba compiles such functions for tens of seconds: see below
 
 
 def _needs(backend):
@@ -82,6 +81,22 @@ def test_a_deep_tree_compiles_and_agrees_with_a_loop(deep, backend):
     _needs(backend)
     e, n = deep
     f = lambdify([x, y], e, backend=backend)
+    expected = [_deep_value(a, b, n) for a, b in zip(X, Y, strict=True)]
+    assert np.allclose(f(X, Y), expected, rtol=1e-12, atol=1e-14)
+    assert not np.allclose(f(X, Y), [_deep_value(a, b, n - 1) for a, b in zip(X, Y, strict=True)])
+
+
+@pytest.mark.slow
+def test_numba_compiles_a_deep_tree():
+    # 160 levels: beyond CSE_DEPTH (the iterative path) and Python's 200 nested parentheses
+    # once printed; numba's compilation takes seconds, so a smaller tree than above
+    _needs("numba")
+    n = 160
+    u, v = symbols("u v", real=True)  # not x, y: building on SymPy's cache of the tree above
+    e = u  # could compare deep trees recursively
+    for k in range(n):
+        e = sin(e) + v if k % 2 else cos(e) * v
+    f = lambdify([u, v], e, backend="numba")
     expected = [_deep_value(a, b, n) for a, b in zip(X, Y, strict=True)]
     assert np.allclose(f(X, Y), expected, rtol=1e-12, atol=1e-14)
     assert not np.allclose(f(X, Y), [_deep_value(a, b, n - 1) for a, b in zip(X, Y, strict=True)])
