@@ -53,7 +53,12 @@ def batched(
     ``fn(*values)``.  Otherwise every value becomes a Dask array with its
     trailing axes in one chunk, the batch chunks are unified, and the results
     come back as lazy Dask arrays chunked like the batch.  Integer results
-    travel as float64 inside a chunk (exact below ``2**53``).
+    travel as float64 inside a chunk (exact below ``2**53``).  For the
+    process-based schedulers and ``dask.distributed``, ``fn`` must pickle: a
+    module-level function or a ``functools.partial`` of one with picklable
+    arguments, not a function made by :func:`screwsym.lambdify` (whose
+    generated namespace does not pickle); rebuild that inside ``fn`` from
+    its recipe, as :func:`~screwsym.numeric.mobility.mobility_map` does.
 
     Examples
     ========

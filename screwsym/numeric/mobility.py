@@ -55,6 +55,7 @@ see ``screwsym.numeric._chunks``).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
@@ -66,7 +67,7 @@ from ..codegen import lambdify
 from ..core.checks import check_positive_float
 from ..core.formulas import SWAP
 from ..systems.mechanism import ParallelMechanism
-from ._chunks import batched
+from ._chunks import batched, is_dask
 
 # UNDEFINED (below) is public too, documented in mobility_map; not in __all__ yet, as the
 # README's module table lists __all__
@@ -194,13 +195,37 @@ def mobility_map(
 
     trailing = [_trailing(a) for a in listed]
     outputs = [((), np.int64), ((), np.int64), ((len(sizes),), np.int64), ((6,), float)]
+    recipe = (mechanism, tuple(ImmutableMatrix(a) if isinstance(a, MatrixBase) else a
+                               for a in listed), rtol, backend)
+    if len(_MADE) >= 64:  # a bounded memory of recent maps
+        _MADE.pop(next(iter(_MADE)))
+    _MADE[recipe] = numpy_mobility
+    # for Dask: a picklable recipe (the generated code is not), rebuilt once per worker
+    chunk = functools.partial(_chunk, recipe)
 
     def mobility(*values):
         """The mobility at each configuration (see screwsym.numeric.mobility.mobility_map)."""
-        return MobilityMap(*batched(numpy_mobility, values, trailing, outputs))
+        if any(is_dask(v) for v in values):
+            return MobilityMap(*batched(chunk, values, trailing, outputs))
+        return MobilityMap(*numpy_mobility(*values))
 
     mobility.__name__ = "mobility_map_of_" + type(mechanism).__name__
     return mobility
+
+
+#: the NumPy functions of the maps made in this process, by their recipe (a Dask worker
+#: that receives a recipe it has not seen makes the map once, then finds it here)
+_MADE: dict[tuple, Callable[..., tuple]] = {}
+
+
+def _chunk(recipe: tuple, *blocks: np.ndarray) -> tuple:
+    """One chunk of a Dask map: ``recipe`` is ``(mechanism, args, rtol, backend)``."""
+    fn = _MADE.get(recipe)
+    if fn is None:
+        mechanism, args, rtol, backend = recipe
+        mobility_map(mechanism, list(args), rtol=rtol, backend=backend)
+        fn = _MADE[recipe]
+    return fn(*blocks)
 
 
 def _trailing(a: Any) -> tuple[int, ...]:

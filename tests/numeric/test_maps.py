@@ -124,3 +124,21 @@ def test_a_grid_of_vectors_in_dask_chunks():
     assert lazy.sigma.shape == (6, 5, 6) and lazy.mobility.numblocks == (2, 3)
     assert np.array_equal(lazy.mobility.compute(), f(P).mobility)
     assert np.allclose(lazy.sigma.compute(), f(P).sigma)
+
+
+def test_a_dask_map_pickles_for_other_processes():
+    # the process and distributed schedulers pickle the graph: it carries the recipe (the
+    # mechanism, its arguments, rtol, back end), not the generated code, and a worker that
+    # has not made the map makes it once (here: the memory of made maps emptied)
+    da = pytest.importorskip("dask.array")
+    cloudpickle = pytest.importorskip("cloudpickle")
+    from screwsym.numeric import mobility as mod
+
+    f = mobility_map(four_ruu(1), [x, y, h])
+    X = np.array([0.1, 0.2, -0.1, 0.3])
+    lazy = f(da.from_array(X, chunks=2), X, np.full(4, 1.5))
+    graph = cloudpickle.loads(cloudpickle.dumps(dict(lazy.mobility.__dask_graph__())))
+    assert len(graph) > 2
+    mod._MADE.clear()
+    assert lazy.mobility.compute(scheduler="sync").tolist() == [4, 4, 4, 4]
+    assert len(mod._MADE) == 1
