@@ -129,7 +129,8 @@ def test_three_rps():
 
 @pytest.mark.slow
 def test_three_rps_symbolic_and_its_constraint_singularity():
-    # generic: 3 DOF 1T2R.  Legs at one height with the three constraint forces concurrent
+    # generic: 3 DOF, two angular velocities of which one is instantaneously helical
+    # ("1T1R1H", the parasitic motion; see test_three_prs).  Legs at one height with the three constraint forces concurrent
     # (here rho1 + rho2 + rho3 = -6 with base radius 2): the forces are coplanar and
     # concurrent, rank 2, and the platform gains a rotation, 4 DOF 1T3R (a constraint
     # singularity: Zlatanov, Bonev & Gosselin, ICRA 2002; for 3-RPS see Schadlbauer,
@@ -138,7 +139,7 @@ def test_three_rps_symbolic_and_its_constraint_singularity():
     h = symbols("h1:4", positive=True)
     mech = three_rps(rho, h)
     cases = mech.mobility_cases()
-    assert cases[0][1].mobility == 3 and cases[0][1].motion == "1T2R"
+    assert cases[0][1].mobility == 3 and cases[0][1].motion == "1T1R1H"
     singular = [(c, m) for c, m in cases if m.mobility != 3]
     assert len(singular) == 1
     cond, m = singular[0]
