@@ -17,6 +17,7 @@ from screwsym.systems.joints import R, U
 from screwsym.systems.mechanism import Limb, ParallelMechanism
 
 x, y, h = symbols("x y h", real=True)
+K = symbols("k", positive=True)
 Z = [0, 0, 1]
 #: (base point, horizontal direction of the two inner U axes, platform attachment)
 LEGS = [((2, 0), (1, 1), (1, 0)), ((0, 2), (-1, 2), (0, 1)),
@@ -48,10 +49,9 @@ def test_the_4ruu_is_3t1r_exactly():
 def test_the_map_does_not_change_with_the_length_unit(backend):
     if backend == "numba":
         pytest.importorskip("numba")
-    maps = []
-    for k in (Rational(1, 10**8), 1, 10**8):
-        f = mobility_map(four_ruu(k), [x, y, h], backend=backend)
-        maps.append(f(*(float(k) * c for c in CONFIGS)))
+    # the unit as an argument k: one generated function (one numba compilation) for all three
+    f = mobility_map(four_ruu(K), [x, y, h, K], backend=backend)
+    maps = [f(*(k * c for c in CONFIGS), k) for k in (1e-8, 1.0, 1e8)]
     # the three units agree, and on a clear gap in sigma (its entries past the first are
     # not unique: pivoting breaks ties between unit null vectors by rounding)
     for m in maps:
@@ -68,12 +68,12 @@ def test_without_the_unit_free_rank_the_scaled_map_was_wrong():
     # the checker rejects the old answer: the same analysis without the unit-free step
     from screwsym.numeric import mobility as mod
 
-    f = mobility_map(four_ruu(10**8), [x, y, h])
-    good = f(*(1e8 * c for c in CONFIGS)).mobility
+    f = mobility_map(four_ruu(K), [x, y, h, K])
+    good = f(*(1e8 * c for c in CONFIGS), 1e8).mobility
     saved = mod._unit_free
     try:
         mod._unit_free = lambda T: T
-        bad = f(*(1e8 * c for c in CONFIGS)).mobility
+        bad = f(*(1e8 * c for c in CONFIGS), 1e8).mobility
     finally:
         mod._unit_free = saved
     assert list(good[:3]) == [4, 4, 4] and not np.array_equal(bad, good)
