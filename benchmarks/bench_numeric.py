@@ -183,7 +183,7 @@ def main() -> None:
         print(f"  numba: generate {t_gen:.3f}, first-call JIT compile {t_jit:.3f} "
               f"({t_jit / len(numeric.NAMES):.3f} per function)")
         backends["numba"] = nb
-    default = codegen.default_backend()
+    default = numeric.screws.default_backend()  # numba once imported (above), else numpy
     same = all(getattr(numeric, k) is getattr(backends[default], k) for k in numeric.NAMES)
     print(f"  default of screwsym.numeric: {default!r} (the same function objects: {same})")
     if shutil.which("cc"):

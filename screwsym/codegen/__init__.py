@@ -318,8 +318,7 @@ def c_source(
     if not isinstance(cse, bool):
         raise TypeError(f"cse: expected True or False, got {type(cse).__name__} {cse!r}")
     plan = build_plan(args, expr, cse, name, names, "c")
-    if cse:
-        from ._plan import with_cse
+    from ._plan import prepared
 
-        plan = with_cse(plan)
+    plan = prepared(plan, cse)
     return _c_source_from_plan(plan, f"screwsym_{plan.name}")

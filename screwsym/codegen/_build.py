@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from . import _emit
-from ._plan import Out, Plan, with_cse
+from ._plan import Out, Plan, prepared
 from ._printers import PY_HELPERS
 from ._runtime import Arg, Trailings, prepare
 
@@ -273,10 +273,28 @@ def _exec(source: str, plan: Plan, backend: str, ns: dict) -> Callable:
     return ns["_fn"]
 
 
+def _meta(plan: Plan, backend: str) -> dict:
+    """What an index needs to find and run a generated function again (no expressions)."""
+    return {
+        "key": plan.key,
+        "name": plan.name,
+        "is_tuple": plan.is_tuple,
+        "specs": [[spec.name, list(spec.trailing), spec.what] for spec in plan.specs],
+        "outs": [list(out.trailing) for out in plan.outs],
+        "backend": backend,
+    }
+
+
 def build_numpy(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    plan = with_cse(plan) if use_cse else plan
-    fn = _exec(_emit.numpy_source(plan), plan, "numpy", _namespace(plan))
-    return _finish(fn, plan, doc)
+    plan = prepared(plan, use_cse)
+    source = _emit.numpy_source(plan)
+    fn = _exec(source, plan, "numpy", _namespace(plan))
+    sub = _subdir("numpy")
+    if sub is not None:  # kept, content-addressed, for load_index in a new process
+        _store(sub, f"screwsym_generated_{plan.key}", ".py", source.encode())
+    fn = _finish(fn, plan, doc)
+    fn._screwsym_meta = _meta(plan, "numpy")
+    return fn
 
 
 def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
@@ -292,7 +310,7 @@ def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
     sub = _subdir("numba")
     found = None if sub is None else find_artifact(sub, modname, ".py")
     if found is None and sub is not None and not from_index:
-        full = with_cse(plan) if use_cse else plan
+        full = prepared(plan, use_cse)
         data = _emit.numba_source(full, PY_HELPERS).encode()
         path = _store(sub, modname, ".py", data)
         found = None if path is None else (path, data)
@@ -300,7 +318,7 @@ def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
     if found is None:
         if from_index:  # its module is gone, or not what its name says
             raise OSError(f"no cached module for {modname}")
-        full = with_cse(plan) if use_cse else plan
+        full = prepared(plan, use_cse)
         source = _emit.numba_source(full, PY_HELPERS).replace("cache=True", "cache=False")
         _exec(source, full, "numba", mod.__dict__)
         sys.modules[modname] = mod
@@ -325,18 +343,12 @@ def _numba_function(mod, plan: Plan, doc: str) -> Callable:
     fn.__kwdefaults__ = dict(base.__kwdefaults__ or {})
     fn = _finish(fn, plan, doc)
     fn.load_kernel = mod._load  # the numba dispatcher (imports numba, compiles or loads)
-    fn._screwsym_meta = {
-        "key": plan.key,
-        "name": plan.name,
-        "is_tuple": plan.is_tuple,
-        "specs": [[spec.name, list(spec.trailing), spec.what] for spec in plan.specs],
-        "outs": [list(out.trailing) for out in plan.outs],
-    }
+    fn._screwsym_meta = _meta(plan, "numba")
     return fn
 
 
-def _index_path(tag: str) -> Path | None:
-    sub = _subdir("numba")
+def _index_path(tag: str, backend: str = "numba") -> Path | None:
+    sub = _subdir(backend)
     return None if sub is None else sub / f"index-{tag}.json"
 
 
@@ -347,16 +359,24 @@ def save_index(tag: str, fn: Callable) -> None:
     source, so that a new process can load them without rebuilding the
     symbolic expressions; any change to the source changes the tag.
     """
-    path = _index_path(tag)
     meta = getattr(fn, "_screwsym_meta", None)
-    if path is not None and meta is not None:
+    if meta is None:
+        return
+    path = _index_path(tag, meta.get("backend", "numba"))
+    if path is not None:
         _write_atomic(path, json.dumps(meta).encode())
 
 
-def load_index(tag: str, doc: str) -> Callable | None:
-    """The numba function saved under ``tag``, or None (never saved, or unreadable)."""
-    path = _index_path(tag)
-    if path is None or importlib.util.find_spec("numba") is None:
+def load_index(tag: str, doc: str, backend: str = "numba") -> Callable | None:
+    """The function (``backend`` numba or numpy) saved under ``tag``, or None (never saved, or unreadable).
+
+    A NumPy function is its generated source, read back (checked against the
+    digest in its file name) and executed: no SymPy work, no numba import, so
+    a new process's first call of a :mod:`screwsym.numeric` function costs
+    milliseconds.
+    """
+    path = _index_path(tag, backend)
+    if path is None or (backend == "numba" and importlib.util.find_spec("numba") is None):
         return None
     text = _read_private(path)
     if text is None:
@@ -371,8 +391,14 @@ def load_index(tag: str, doc: str) -> Callable | None:
             tuple(Out(tuple(int(d) for d in t)) for t in meta["outs"]),
             bool(meta["is_tuple"]), (), (), (), str(meta["name"]), key,
         )  # fmt: skip
-        if find_artifact(path.parent, f"screwsym_generated_{key}", ".py") is None:
+        found = find_artifact(path.parent, f"screwsym_generated_{key}", ".py")
+        if found is None:
             return None
+        if backend == "numpy":
+            fn = _exec(found[1].decode(), plan, "numpy", _namespace(plan))
+            fn = _finish(fn, plan, doc)
+            fn._screwsym_meta = _meta(plan, "numpy")
+            return fn
         return _numba_function(_numba_module(plan, False, from_index=True), plan, doc)
     except (OSError, ValueError, KeyError, TypeError):
         return None
@@ -415,7 +441,7 @@ def _compile_c(source: str) -> bytes:
 
 
 def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    plan = with_cse(plan) if use_cse else plan
+    plan = prepared(plan, use_cse)
     cname = f"screwsym_k{plan.key}"
     source = _emit.c_source(plan, cname)
     sub = _subdir("c")

@@ -108,10 +108,16 @@ def _returns(plan: Plan) -> str:
     return ", ".join(parts) + ("," if plan.is_tuple and len(parts) == 1 else "")
 
 
+#: plans of more statements than this have no single-point fast path (a single point
+#: takes the array code): printing and compiling a huge closed form twice costs seconds
+SCALAR_STATEMENTS = 500
+
+
 def _wrapper(plan: Plan, body: list[str], contiguous: bool) -> list[str]:
     params = _params(plan)
     lines = [f"def _fn({params}, *, out=None):"]
-    lines += _scalar_path(plan)
+    if len(plan.assigns) <= SCALAR_STATEMENTS:  # a huge plan: printed (and compiled) once
+        lines += _scalar_path(plan)
     lines.append(
         f"    ({params},), ({_outs(plan)},), _shape, _n = "
         f"_prepare(_SPECS, ({params},), out, _OUTS, {contiguous})"

@@ -291,11 +291,12 @@ def _scalar(e: Any, where: str) -> Expr:
 
 def check_supported(x: Expr, backend: str) -> None:
     """Raise ``TypeError`` naming the first construct the back ends cannot print."""
-    if x.has(I):
+    nodes = list(_postorder([x]))
+    if any(node is I for node in nodes):
         raise ValueError(
             f"expr: expected real expressions (screwsym generates real arithmetic), got {x}"
         )
-    for node in _preorder(x):
+    for node in reversed(nodes):  # the outermost construct first
         if not isinstance(node, SUPPORTED):
             what = type(node).__name__
             raise TypeError(
@@ -306,12 +307,69 @@ def check_supported(x: Expr, backend: str) -> None:
             raise TypeError(f"expr: backend {backend!r} cannot generate code for {node}")
 
 
-def _preorder(x: Basic):
-    stack = [x]
-    while stack:
-        node = stack.pop()
-        yield node
-        stack.extend(node.args)
+def _postorder(roots: Sequence[Basic]):
+    """Every node of the trees ``roots`` once (by identity), each after its arguments.
+
+    An explicit stack, not recursion: a closed form may be deeper than Python's
+    recursion limit (SymPy's own walks, ``free_symbols``, ``xreplace``,
+    ``srepr``, recurse once per level).
+    """
+    seen: set[int] = set()
+    for root in roots:
+        if id(root) in seen:
+            continue
+        stack: list[tuple[Basic, bool]] = [(root, False)]
+        while stack:
+            node, ready = stack.pop()
+            if ready:
+                yield node
+                continue
+            if id(node) in seen:
+                continue
+            seen.add(id(node))
+            stack.append((node, True))
+            stack.extend((a, False) for a in reversed(node.args) if id(a) not in seen)
+
+
+def _make(node: Basic, args: list) -> Basic:
+    """``node.func(*args)`` without evaluation: the same operations, no assumptions asked."""
+    if isinstance(node, ExprCondPair):
+        return node.func(*args)
+    return node.func(*args, evaluate=False)
+
+
+def _free_symbols(roots: Sequence[Basic]) -> set[Symbol]:
+    return {n for n in _postorder(roots) if isinstance(n, Symbol)}
+
+
+def _rename(roots: Sequence[Basic], mapping: dict) -> tuple[list[Basic], int]:
+    """``xreplace`` of the leaves by ``mapping``, without recursion; and the deepest level."""
+    new: dict[int, Basic] = {}
+    depth: dict[int, int] = {}
+    for node in _postorder(roots):
+        if not node.args:
+            new[id(node)] = mapping.get(node, node) if isinstance(node, Symbol) else node
+            depth[id(node)] = 0
+            continue
+        args = [new[id(a)] for a in node.args]
+        changed = any(a is not b for a, b in zip(args, node.args, strict=True))
+        new[id(node)] = _make(node, args) if changed else node
+        depth[id(node)] = 1 + max(depth[id(a)] for a in node.args)
+    return [new[id(r)] for r in roots], max((depth[id(r)] for r in roots), default=0)
+
+
+def _serial(roots: Sequence[Basic]) -> str:
+    """A text that determines the trees ``roots`` (``srepr`` of each leaf), without recursion."""
+    index: dict[int, int] = {}
+    lines: list[str] = []
+    for node in _postorder(roots):
+        index[id(node)] = len(lines)
+        if node.args:
+            lines.append(f"{type(node).__name__}({','.join(str(index[id(a)]) for a in node.args)})")
+        else:
+            lines.append(srepr(node))
+    lines.append("roots " + ",".join(str(index[id(r)]) for r in roots))
+    return "\n".join(lines)
 
 
 # ---------------------------------------------------------------- the plan
@@ -338,12 +396,12 @@ def key_of(specs, symbols, outs, is_tuple, use_cse, name, backend) -> tuple[str,
         for sym in syms:
             mapping[sym] = Symbol(f"_x{k}", real=True)
             k += 1
-    flat = [x.xreplace(mapping) for _, exprs in outs for x in exprs]
+    flat, _ = _rename([x for _, exprs in outs for x in exprs], mapping)
     text = srepr((
         tuple((s.name, s.trailing, s.what) for s in specs),
         tuple(out.trailing for out, _ in outs),
-        is_tuple, bool(use_cse), name, backend, code_digest(), tuple(flat),
-    ))  # fmt: skip
+        is_tuple, bool(use_cse), name, backend, code_digest(),
+    )) + "\n" + _serial(flat)  # fmt: skip
     return hashlib.sha256(text.encode()).hexdigest()[:24], flat
 
 
@@ -355,15 +413,15 @@ def build_plan(args: Any, expr: Any, use_cse: bool, name: Any, names: Any, backe
         raise ValueError(f"name: expected a Python identifier not starting with '_', got {name!r}")
     specs, symbols = normalise_args(args, names)
     outs, is_tuple = normalise_expr(expr)
+    for _, exprs in outs:  # first: a supported tree binds no symbol (no Sum, Lambda, ...)
+        for x in exprs:
+            check_supported(x, backend)
     allowed = {s for syms in symbols for s in syms}
-    free = set().union(*(x.free_symbols for _, exprs in outs for x in exprs))
+    free = _free_symbols([x for _, exprs in outs for x in exprs])
     missing = free - allowed
     if missing:
         listed = ", ".join(sorted(str(s) for s in missing))
         raise ValueError(f"expr: the symbols {listed} are not among args")
-    for _, exprs in outs:
-        for x in exprs:
-            check_supported(x, backend)
     key, flat = key_of(specs, symbols, outs, is_tuple, use_cse, name, backend)
     unpack = []
     k = 0
@@ -377,7 +435,7 @@ def build_plan(args: Any, expr: Any, use_cse: bool, name: Any, names: Any, backe
             stores.append((j, c, flat[m]))
             m += 1
     for _, _, e in stores:  # after renaming, only screwsym's symbols are left
-        assert all(s.name.startswith("_x") for s in e.free_symbols)
+        assert all(s.name.startswith("_x") for s in _free_symbols([e]))
     return Plan(
         tuple(specs), tuple(out for out, _ in outs), is_tuple, tuple(unpack), (),
         tuple(stores), name or f"lambdified_{key[:10]}", key,
@@ -399,3 +457,136 @@ def frozen(x: Any) -> Any:
     if isinstance(x, MatrixBase):
         return ImmutableMatrix(x)
     return x
+
+
+#: the most arguments one printed sum or product has, and the deepest one printed
+#: expression may be, in generated code (see :func:`straight_line`)
+MAX_ARGS = 32
+MAX_DEPTH = 24
+#: deeper than this, or with more distinct nodes, SymPy's ``cse`` (which recurses once
+#: per level, and whose search of sums and products grows faster than their size) is not
+#: used: the repeated subexpressions, found by hashing (:func:`straight_line` with
+#: ``shared``), become locals instead
+CSE_DEPTH = 120
+CSE_NODES = 8000
+
+
+def straight_line(plan: Plan, shared: bool = False) -> Plan:
+    """The plan with every expression cut into statements of bounded size: straight-line code.
+
+    Python's compiler recurses once per operator of a sum ``a + b + c + ...``
+    (a left-nested chain) and per nested call, so a closed form of 10^5
+    operations raised ``RecursionError`` (or "too many nested parentheses")
+    however it was printed.  Here each sum or product of more than
+    :data:`MAX_ARGS` terms is summed in chunks, and each subexpression deeper
+    than :data:`MAX_DEPTH` is assigned to a local ``_t<m>`` first, walking the
+    trees in an explicit post-order (no recursion), so no printed statement is
+    large or deep.  With ``shared``, every subexpression that occurs more than
+    once becomes a local too: the common-subexpression elimination of trees
+    too large or too deep for ``sympy.cse``.  The values are unchanged
+    (the same operations, grouped).
+    """
+    counter = iter(range(10**12))
+    emitted: list[tuple[Symbol, Expr]] = []
+    new: dict[int, Basic] = {}
+    depth: dict[int, int] = {}  # by id of the new node
+    uses: dict[int, int] = {}
+    roots = [e for _, e in plan.assigns] + [e for _, _, e in plan.stores]
+    if shared:
+        plan, roots = _canonical(plan, roots, uses)
+
+    def emit(e: Basic) -> Symbol:
+        t = Symbol(f"_t{next(counter)}", real=True)
+        emitted.append((t, e))
+        depth[id(t)] = 0
+        return t
+
+    def cut(e: Basic) -> Basic:
+        for node in _postorder([e]):
+            if id(node) in new:
+                continue
+            if not node.args:
+                new[id(node)] = node
+                depth[id(node)] = 0
+                continue
+            args = [new[id(a)] for a in node.args]
+            if isinstance(node, (Add, Mul)):
+                while len(args) > MAX_ARGS:  # sum (multiply) in chunks, each a statement
+                    args = [emit(_make(node, args[i:i + MAX_ARGS]))
+                            for i in range(0, len(args), MAX_ARGS)]
+            same = len(args) == len(node.args) and all(
+                a is b for a, b in zip(args, node.args, strict=False))
+            x = node if same else _make(node, args)
+            d = 1 + max((depth.get(id(a), 0) for a in args), default=0)
+            if isinstance(x, Expr) and x.args and (d > MAX_DEPTH or uses.get(id(node), 0) > 1):
+                x = emit(x)
+            else:
+                depth[id(x)] = d
+            new[id(node)] = x
+        return new[id(e)]
+
+    assigns = []
+    for sym, e in plan.assigns:
+        x = cut(e)
+        assigns.extend(emitted)
+        emitted.clear()
+        assigns.append((sym, x))
+    stores = []
+    for j, c, e in plan.stores:
+        x = cut(e)
+        assigns.extend(emitted)
+        emitted.clear()
+        stores.append((j, c, x))
+    return Plan(plan.specs, plan.outs, plan.is_tuple, plan.unpack, tuple(assigns),
+                tuple(stores), plan.name, plan.key)
+
+
+def _canonical(plan: Plan, roots: list, uses: dict[int, int]) -> tuple[Plan, list]:
+    """One object per distinct subexpression of ``roots``, and how many parents each has.
+
+    Equal subtrees are found by hashing in post-order (each node after its
+    arguments, which are already one object each, so that comparing two
+    candidates looks one level deep): the common subexpressions of trees too
+    large or too deep for ``sympy.cse``, found in linear time.
+    """
+    table: dict[Basic, Basic] = {}
+    canon: dict[int, Basic] = {}
+    for node in _postorder(roots):
+        args = [canon[id(a)] for a in node.args]
+        same = all(a is b for a, b in zip(args, node.args, strict=True))
+        x = node if same else _make(node, args)
+        found = table.get(x)
+        if found is None:
+            table[x] = found = x
+            for a in set(map(id, args)):
+                uses[a] = uses.get(a, 0) + 1
+        canon[id(node)] = found
+    for r in roots:  # a result used twice is computed once
+        uses[id(canon[id(r)])] = uses.get(id(canon[id(r)]), 0) + 1
+    n = len(plan.assigns)
+    new_roots = [canon[id(r)] for r in roots]
+    plan = Plan(plan.specs, plan.outs, plan.is_tuple, plan.unpack,
+                tuple((sym, e) for (sym, _), e in zip(plan.assigns, new_roots[:n], strict=True)),
+                tuple((j, c, e) for (j, c, _), e in zip(plan.stores, new_roots[n:], strict=True)),
+                plan.name, plan.key)
+    return plan, new_roots
+
+
+def _depth(roots: Sequence[Basic]) -> int:
+    depth: dict[int, int] = {}
+    for node in _postorder(roots):
+        depth[id(node)] = 1 + max((depth[id(a)] for a in node.args), default=-1)
+    return max((depth[id(r)] for r in roots), default=0)
+
+
+def prepared(plan: Plan, use_cse: bool) -> Plan:
+    """The plan as the back ends print it: CSE if asked, then :func:`straight_line`.
+
+    ``sympy.cse`` for trees up to :data:`CSE_DEPTH` levels deep; deeper ones
+    share their repeated subexpressions through :func:`straight_line`.
+    """
+    if not use_cse:
+        return straight_line(plan)
+    roots = [e for _, _, e in plan.stores]
+    large = _depth(roots) > CSE_DEPTH or sum(1 for _ in _postorder(roots)) > CSE_NODES
+    return straight_line(plan, shared=True) if large else straight_line(with_cse(plan))

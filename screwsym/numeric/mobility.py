@@ -12,7 +12,13 @@ conditions themselves.
 Rank, numerically
 =================
 
-Every twist is scaled to unit length (as a 6-vector); a limb's twists with
+A rank of twists mixes units (``omega`` a rate, ``v`` a rate times a length),
+so first the moment rows of every configuration's twists are divided by a
+length of that configuration, ``L = sum_j |omega_j| |v_j| / sum_j |omega_j|**2``
+(``1`` where that is zero): the numerical rank is then unit-free, and a
+mechanism and its copy scaled by ``1e8`` (or ``1e-8``) give the same map, as
+the project's float policy is scale-invariant (:mod:`screwsym.core.decide`).
+Then every twist is scaled to unit length (as a 6-vector); a limb's twists with
 their halves swapped are decomposed by Householder QR with column pivoting
 (``B^T P = Q R``), and its rank is the number of diagonal entries ``|R_jj|``
 (non-increasing, estimates of the singular values) greater than ``rtol``
@@ -35,20 +41,33 @@ on a machine compiles for seconds, later processes load it in under one.
 The default stays NumPy (unlike :func:`screwsym.lambdify`'s) because under
 load the two were within 1.3-2.5x of each other on the 3-RPS map, not worth
 a first compilation nobody asked for.
+
+Maps larger than memory
+=======================
+
+The function :func:`mobility_map` returns takes NumPy or Dask arrays.  Given a
+Dask array (``pip install "screwsym[dask]"``), it returns a
+:class:`MobilityMap` of lazy Dask arrays chunked like the configurations:
+each chunk is analysed by the same NumPy (or numba) code when the result is
+computed, on the local scheduler or a cluster (``dask.array.blockwise``;
+see ``screwsym.numeric._chunks``).
 """
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
 from sympy import ImmutableMatrix
+from sympy.matrices import MatrixBase
 
 from ..codegen import lambdify
 from ..core.checks import check_positive_float
 from ..core.formulas import SWAP
 from ..systems.mechanism import ParallelMechanism
+from ._chunks import batched, is_dask
 
 # UNDEFINED (below) is public too, documented in mobility_map; not in __all__ yet, as the
 # README's module table lists __all__
@@ -84,7 +103,11 @@ def mobility_map(
     :class:`MobilityMap`.  See the module docstring for the tolerance.  A
     configuration whose twists are not all finite (a NaN or infinite value)
     is marked :data:`UNDEFINED`: ``-1`` in the integer fields, NaN in
-    ``sigma``, the same on every back end.
+    ``sigma``, the same on every back end.  The rank is unit-free (the
+    moment rows are divided by a length of each configuration): scaling the
+    mechanism and its arguments by ``1e8`` changes no mobility.  Given Dask
+    arrays, the fields come back as lazy Dask arrays, computed chunk by
+    chunk (see the module docstring).
 
     Examples
     ========
@@ -106,6 +129,10 @@ def mobility_map(
     array([1, 2, 1])
     >>> f(np.array([1.0, np.nan]), np.array([np.inf, 0.5])).mobility
     array([-1, -1])
+    >>> da = __import__("pytest").importorskip("dask.array")
+    >>> lazy = f(da.from_array(np.array([1.0, 1.0, 2.0]), chunks=2), np.array([1.0, 0.0, 0.5]))
+    >>> lazy.mobility.chunks, lazy.mobility.compute()
+    (((2, 1),), array([1, 2, 1]))
 
     Parameters
     ==========
@@ -139,8 +166,7 @@ def mobility_map(
     offsets = tuple(int(x) for x in np.cumsum([0, *sizes]))
     analyse = _analyse_numba if backend == "numba" else _analyse_numpy
 
-    def mobility(*values):
-        """The mobility at each configuration (see screwsym.numeric.mobility.mobility_map)."""
+    def numpy_mobility(*values):
         Ts = twists_of(*values)
         if not isinstance(Ts, tuple):  # pragma: no cover - a one-limb mechanism
             Ts = (Ts,)
@@ -153,22 +179,90 @@ def mobility_map(
         undefined = ~np.isfinite(T).all(axis=(1, 2))
         if undefined.any():
             T = np.where(undefined[:, None, None], 0.0, T)
-        ranks, counts, sigma = analyse(T, offsets, rtol)
+        ranks, counts, sigma = analyse(_unit_free(T), offsets, rtol)
         if undefined.any():
             ranks, counts, sigma = ranks.copy(), counts.copy(), sigma.copy()
             ranks[undefined] = 6 - UNDEFINED  # so that mobility = 6 - rank is UNDEFINED
             counts[undefined] = UNDEFINED
             sigma[undefined] = np.nan
         k = len(sizes)
-        return MobilityMap(
-            mobility=(6 - ranks).reshape(batch),
-            constraint_rank=np.where(undefined, UNDEFINED, ranks).reshape(batch),
-            limb_constraints=counts.reshape(batch + (k,)),
-            sigma=sigma.reshape(batch + (6,)),
+        return (
+            (6 - ranks).reshape(batch),
+            np.where(undefined, UNDEFINED, ranks).reshape(batch),
+            counts.reshape(batch + (k,)),
+            sigma.reshape(batch + (6,)),
         )
+
+    trailing = [_trailing(a) for a in listed]
+    outputs = [((), np.int64), ((), np.int64), ((len(sizes),), np.int64), ((6,), float)]
+    recipe = (mechanism, tuple(ImmutableMatrix(a) if isinstance(a, MatrixBase) else a
+                               for a in listed), rtol, backend)
+    if len(_MADE) >= 64:  # a bounded memory of recent maps
+        _MADE.pop(next(iter(_MADE)))
+    _MADE[recipe] = numpy_mobility
+    # for Dask: a picklable recipe (the generated code is not), rebuilt once per worker
+    chunk = functools.partial(_chunk, recipe)
+
+    def mobility(*values):
+        """The mobility at each configuration (see screwsym.numeric.mobility.mobility_map)."""
+        if any(is_dask(v) for v in values):
+            return MobilityMap(*batched(chunk, values, trailing, outputs))
+        return MobilityMap(*numpy_mobility(*values))
 
     mobility.__name__ = "mobility_map_of_" + type(mechanism).__name__
     return mobility
+
+
+#: the NumPy functions of the maps made in this process, by their recipe (a Dask worker
+#: that receives a recipe it has not seen makes the map once, then finds it here)
+_MADE: dict[tuple, Callable[..., tuple]] = {}
+
+
+def _chunk(recipe: tuple, *blocks: np.ndarray) -> tuple:
+    """One chunk of a Dask map: ``recipe`` is ``(mechanism, args, rtol, backend)``."""
+    fn = _MADE.get(recipe)
+    if fn is None:
+        mechanism, args, rtol, backend = recipe
+        mobility_map(mechanism, list(args), rtol=rtol, backend=backend)
+        fn = _MADE[recipe]
+    return fn(*blocks)
+
+
+def _trailing(a: Any) -> tuple[int, ...]:
+    """The trailing shape of one argument's array: ``()`` for a symbol, ``(n,)`` for a vector."""
+    if isinstance(a, MatrixBase):
+        return (len(a),) if 1 in a.shape else tuple(a.shape)
+    hook = getattr(type(a), "_lambdify_argument", None)
+    if hook is not None:
+        return (len(a._lambdify_argument()[0]),)
+    return ()
+
+
+def _unit_free(T: np.ndarray) -> np.ndarray:
+    r"""Twists ``(N, 6, M)`` with their moment rows divided by a length of their configuration.
+
+    A rank of twists mixes units: ``omega`` is a rate, ``v`` a rate times a
+    length.  Dividing ``v`` by the length ``L = sum_j |omega_j| |v_j| /
+    sum_j |omega_j|**2`` of the configuration (``1`` where it is zero or not
+    finite: all translations, or all axes through the origin) leaves the rank
+    unchanged in exact arithmetic and makes the numerical one unit-free: a
+    mechanism scaled by any factor gives the same matrix up to the scale of
+    the prismatic columns, which the unit-length normalisation removes.  This
+    is the float policy of :mod:`screwsym.core.decide` (relative, so scale
+    invariant) applied to a rank.
+
+    >>> T = np.array([[[0, 0], [0, 0], [1, 1], [0, 0], [0, -1e8], [0, 0]]], dtype=float)
+    >>> _unit_free(T)[0, 4]                     # R about z through O and through (1e8, 0, 0)
+    array([ 0., -2.])
+    """
+    w = np.sqrt(np.einsum("nqm,nqm->nm", T[:, :3], T[:, :3]))
+    v = np.sqrt(np.einsum("nqm,nqm->nm", T[:, 3:], T[:, 3:]))
+    num, den = (w * v).sum(axis=-1), (w * w).sum(axis=-1)
+    ok = (num > 0) & (den > 0) & np.isfinite(num) & np.isfinite(den)
+    L = np.where(ok, num / np.where(ok, den, 1.0), 1.0)
+    out = np.array(T, dtype=float, copy=True)
+    out[:, 3:] /= L[:, None, None]
+    return out
 
 
 def _qrcp(C: np.ndarray, want_q: bool):

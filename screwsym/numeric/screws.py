@@ -23,10 +23,12 @@ the pitch of a couple ``(0; C)`` is ``inf`` (the symbolic
 symbolic one raises); the foot point of a couple, whose axis lies at
 infinity, is ``nan`` (the symbolic one raises).
 
-The functions here use the compiled (numba) back end when numba is installed
-(``pip install -e ".[fast]"`` from a clone) and NumPy otherwise; each is generated on
-first use, and numba's on-disk cache (see :func:`screwsym.codegen.cache_dir`)
-spares a new process the compilation.  :func:`functions_for` gives the same set
+The functions here use the compiled (numba) back end once numba is imported
+in the process (``pip install -e ".[fast]"`` from a clone, then ``import numba``),
+and NumPy otherwise (:func:`default_backend`), so that a new process's first
+call pays no numba import; each is generated on first use and kept in the disk
+cache (see :func:`screwsym.codegen.cache_dir`), from which a new process reads
+it back without SymPy work (and numba's cache spares it the compilation).  :func:`functions_for` gives the same set
 for a chosen back end, e.g. ``functions_for("numpy")`` or ``functions_for("c")``.
 
 Examples
@@ -52,6 +54,7 @@ screwsym.codegen.lambdify
 from __future__ import annotations
 
 import hashlib
+import sys
 import threading
 import types
 from collections.abc import Callable
@@ -288,20 +291,35 @@ def _scale_free(fn: Callable, name: str) -> Callable:
     return scaled
 
 
+def default_backend() -> str:
+    """The back end of this module's functions: numba once numba is imported, else NumPy.
+
+    A new process's first call then pays no numba import (0.5 s quiet, seconds
+    under load): the NumPy function is read back from the disk cache in
+    milliseconds.  Import numba first (``import numba``), or use
+    :func:`functions_for` with ``"numba"``, for the compiled loops.
+
+    >>> default_backend() in ("numba", "numpy")
+    True
+    """
+    compiled = resolve_backend(None)
+    return compiled if compiled != "numba" or "numba" in sys.modules else "numpy"
+
+
 def _function(name: str, backend: str | None = None) -> Callable:
-    backend = resolve_backend(backend)
+    backend = default_backend() if backend is None else resolve_backend(backend)
     key = (name, backend)
     fn = _BUILT.get(key)
     if fn is None:
         with _LOCK:
             fn = _BUILT.get(key)
-            if fn is None and backend == "numba":
-                tag = f"{name}-{_source_digest()}"
-                fn = load_index(tag, _DOCS[name])
+            tag = f"{name}-{_source_digest()}"
+            if fn is None and backend in ("numba", "numpy"):
+                fn = load_index(tag, _DOCS[name], backend)
             if fn is None:
                 args, expr, names = _definition(name)
                 fn = lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
-                if backend == "numba":
+                if backend in ("numba", "numpy"):
                     save_index(tag, fn)
             if name in SCALE_FREE:
                 fn = _scale_free(fn, name)
@@ -312,8 +330,8 @@ def _function(name: str, backend: str | None = None) -> Callable:
 def functions_for(backend: str | None = None) -> types.SimpleNamespace:
     """The generated functions for ``backend``, as attributes named as in :data:`NAMES`.
 
-    ``backend=None`` (default) is numba when installed, else NumPy, as for
-    the module's own functions.  Built on first use and cached;
+    ``backend=None`` (default) is :func:`default_backend`, as for the
+    module's own functions.  Built on first use and cached;
     ``functions_for().pitch is pitch``.
 
     Examples

@@ -15,7 +15,7 @@ from .joints import (
     Spherical,
     Universal,
 )
-from .mechanism import Limb, Mobility, ParallelMechanism, motion_type
+from .mechanism import Limb, Mobility, MotionType, ParallelMechanism, motion_of, motion_type
 from .screw_system import ScrewSystem
 
 __all__ = [
@@ -32,6 +32,8 @@ __all__ = [
     "ParallelMechanism",
     "Mobility",
     "motion_type",
+    "motion_of",
+    "MotionType",
     "Mechanism",
     "MechanismMobility",
     "SecondOrder",

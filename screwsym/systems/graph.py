@@ -84,7 +84,7 @@ from ..core.checks import check_count, check_flag
 from ..core.decide import is_zero
 from ..core.twist import Twist
 from .joints import Joint, Parallelogram, Spherical, Universal
-from .mechanism import ParallelMechanism, _check_cases, _merge_cases, motion_type
+from .mechanism import ParallelMechanism, _check_cases, _merge_cases, motion_of
 from .screw_system import (
     BUDGET,
     MAX_CASES,
@@ -731,16 +731,18 @@ class Mechanism(ScrewsymBasic):
         return ScrewSystem(*members).basis()
 
     def motion(self, link: Any, relative_to: Any = None) -> str:
-        """The motion type of ``link`` relative to ``relative_to``: ``"3T"``, ``"1R"``, ...
+        """The motion type of ``link`` relative to ``relative_to``: ``"3T"``, ``"1R"``, ``"1H"``, ...
 
-        The number of independent rotations (the rank of the angular parts of
-        :meth:`twists`) and of translations (the rest), generic in the symbols.
+        The label of :func:`~screwsym.systems.mechanism.motion_of` for
+        :meth:`twists`: translations, rotations, helical freedoms (translations
+        first, "3T1R"), generic in the symbols; :meth:`helical_pitches` gives
+        the pitch of each helical freedom.
         """
-        T = self.twists(link, relative_to)
-        if not len(T):
-            return motion_type(0, 0)
-        rotations = _rank(Matrix(T.matrix[:3, :]))
-        return motion_type(rotations, T.rank - rotations)
+        return motion_of(self.twists(link, relative_to)).motion
+
+    def helical_pitches(self, link: Any, relative_to: Any = None) -> tuple:
+        """The pitches of the helical freedoms ("H" in :meth:`motion`) of ``link`` relative to ``relative_to``."""
+        return motion_of(self.twists(link, relative_to)).helical_pitches
 
     def _link_number(self, link: Any, name: str) -> int:
         key = _check_link(link, name)

@@ -67,7 +67,8 @@ from .screw_system import (
 if TYPE_CHECKING:
     from typing_extensions import Self
 
-__all__ = ["Limb", "ParallelMechanism", "Mobility", "Degenerate", "motion_type"]
+__all__ = ["Limb", "ParallelMechanism", "Mobility", "Degenerate", "MotionType", "motion_type",
+           "motion_of"]
 
 
 class Limb(ScrewsymBasic):
@@ -123,13 +124,15 @@ class Mobility(NamedTuple):
     classical: int  #: 6 (n - g - 1) + sum f_i
     rotations: int  #: independent rotations of the platform
     translations: int  #: independent translations of the platform
-    motion: str  #: e.g. "2R1T"
+    motion: str  #: e.g. "1T2R", "3T1R", "1H" (translations, rotations, helical; :func:`motion_type`)
     twists: ScrewSystem  #: the platform's twist system
     links: int  #: n, base and platform included
     joints: int  #: g
     freedoms: int  #: sum f_i
     rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
     translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
+    #: the pitches of the helical freedoms (one per "H" of ``motion``), principal pitches
+    helical_pitches: tuple = ()
 
     def __repr__(self) -> str:
         """A short summary; every field stays an attribute (``m.twists``, ``m.links``, ...).
@@ -145,10 +148,10 @@ class Mobility(NamedTuple):
                 f"common={self.common}, redundant={self.redundant}, passive={self.passive}, "
                 f"classical={self.classical})")
 
-    def answer(self) -> tuple[int, int, int, int, int, int, str]:
+    def answer(self) -> tuple[int, int, int, int, int, int, str, tuple]:
         """The numbers of the analysis, without the twists: what two cases compare."""
         return (self.mobility, self.order, self.common, self.redundant, self.passive,
-                self.classical, self.motion)
+                self.classical, self.motion, self.helical_pitches)
 
     # a tuple compares its items with ==, and a SymPy matrix's == parses the strings inside
     # a tuple or dict: these compare without handing a string to SymPy (screwsym.core.basic)
@@ -208,14 +211,137 @@ def _same(field: Any, value: Any) -> bool:
     return bool(field == value)
 
 
-def motion_type(rotations: int, translations: int) -> str:
-    """``"2R1T"``, ``"3T"``, ``"1R"``; ``"0"`` for a structure.
+def motion_type(rotations: int, translations: int, helical: int = 0) -> str:
+    """``"3T1R"``, ``"1T2R"``, ``"3T"``, ``"1R"``, ``"1H"``; ``"0"`` for a structure.
 
-    >>> motion_type(2, 1), motion_type(0, 3), motion_type(0, 0)
-    ('2R1T', '3T', '0')
+    Translations first, then rotations, then helical freedoms, as the
+    literature writes them ("3T1R" for the Schoenflies motion).  ``helical``
+    counts those of the ``rotations`` (independent angular velocities) that are
+    helical: they cannot be made rotations (pitch 0) by adding translations of
+    the system (see :func:`motion_of`).
+
+    >>> motion_type(2, 1), motion_type(1, 3), motion_type(0, 3), motion_type(0, 0)
+    ('1T2R', '3T1R', '3T', '0')
+    >>> motion_type(1, 0, helical=1), motion_type(2, 0, helical=1)
+    ('1H', '1R1H')
     """
-    text = (f"{rotations}R" if rotations else "") + (f"{translations}T" if translations else "")
+    for value, name in ((rotations, "rotations"), (translations, "translations"),
+                        (helical, "helical")):
+        if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+            raise ValueError(f"{name}: expected a non-negative integer, got {value!r}")
+    if helical > rotations:
+        raise ValueError(f"helical: expected at most rotations = {rotations}, got {helical}")
+    pure = rotations - helical
+    text = "".join(f"{n}{x}" for n, x in ((translations, "T"), (pure, "R"), (helical, "H")) if n)
     return text or "0"
+
+
+class MotionType(NamedTuple):
+    """What a twist system moves (:func:`motion_of`): counts, directions, helical pitches."""
+
+    motion: str  #: the label of :func:`motion_type`, e.g. "3T1R", "1H"
+    rotations: int  #: independent angular velocities (helical freedoms included)
+    translations: int  #: independent pure translations (twists with omega = 0)
+    helical_pitches: tuple  #: the pitch of each helical freedom (principal pitches)
+    rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
+    translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
+
+
+def motion_of(twists: ScrewSystem) -> MotionType:
+    r"""The motion type of a twist system: translations, rotations and helical freedoms.
+
+    Explanation
+    ===========
+
+    ``rotations`` is the rank of the angular velocities ``omega`` of the
+    system's twists and ``translations`` the dimension of its pure
+    translations ``P`` (its twists with ``omega = 0``).  A rotational freedom
+    is *helical* when no translation of ``P`` turns it into a rotation
+    (pitch 0).  On the twists of the system whose ``omega`` is orthogonal to
+    every translation of ``P`` (the others become rotations by adding one),
+    the pitch form ``q(x) = omega . v`` is well defined modulo ``P``;
+    measured against ``omega . omega``, its eigenvalues are the principal
+    pitches of that part of the system (Hunt 1978, Ch. 12; Huang, Li & Ding
+    2013, §1.6).  If the form takes both signs, its zero-pitch twists
+    (rotations) span that part and there is no helical freedom; if it is
+    semidefinite of rank ``h``, ``h`` freedoms are helical, with the
+    non-zero principal pitches as ``helical_pitches``.  Generic in the
+    symbols, like the ranks.  With symbols and two or more such dimensions,
+    a form whose sign SymPy's assumptions cannot decide is counted as
+    rotations (none is then reported helical).
+
+    Examples
+    ========
+
+    >>> from screwsym import ScrewSystem, Twist
+    >>> helix = Twist.screw_motion([0, 0, 1], point=[1, 0, 0], pitch=3)
+    >>> motion_of(ScrewSystem(helix)).motion, motion_of(ScrewSystem(helix)).helical_pitches
+    ('1H', (3,))
+    >>> moves = [Twist.translation(e) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])]
+    >>> motion_of(ScrewSystem(helix, *moves)).motion        # the helix splits: Schoenflies
+    '3T1R'
+    >>> motion_of(ScrewSystem(helix, moves[0])).motion      # a translation across the axis
+    '1T1H'
+    """
+    zeros = ImmutableMatrix.zeros(3, 0)
+    if not len(twists):
+        return MotionType(motion_type(0, 0), 0, 0, (), zeros, zeros)
+    omega = twists.matrix[:3, :]
+    spin = _analysis(ImmutableMatrix.vstack(omega, ImmutableMatrix.zeros(3, omega.cols)))
+    rotations = spin.rank
+    translations = twists.rank - rotations
+    # the pure translations the platform has: its twists with omega = 0 (generic, polynomial)
+    moves = _pure_translations(twists.matrix, rotations) if translations else zeros
+    pitches = _helical_pitches(twists, moves) if rotations else ()
+    return MotionType(
+        motion=motion_type(rotations, translations, len(pitches)),
+        rotations=rotations,
+        translations=translations,
+        helical_pitches=pitches,
+        rotation_directions=ImmutableMatrix(omega.extract([0, 1, 2], list(spin.pivots))),
+        translation_directions=ImmutableMatrix(moves),
+    )
+
+
+def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple:
+    """The pitches of the helical freedoms of ``twists`` (translations ``moves``): see motion_of."""
+    from sympy import Dummy, Poly, roots
+    system = twists
+    if moves.cols and any(cancel(e) != 0 for e in moves.T * twists.matrix[:3, :]):
+        # the twists whose omega is orthogonal to every translation: reciprocal to the
+        # couples along them (a twist (w; v) and a couple (0; d) have product w . d)
+        couples = ScrewSystem(*(Wrench([0, 0, 0], moves.col(j)) for j in range(moves.cols)))
+        system = (twists.reciprocal() | couples).reciprocal()
+        if not len(system):
+            return ()
+    X = system.matrix
+    spin = _analysis(ImmutableMatrix.vstack(X[:3, :], ImmutableMatrix.zeros(3, X.cols)))
+    X = X.extract(list(range(6)), list(spin.pivots))  # one twist per rotation, modulo moves
+    k = X.cols
+    if k == 0:
+        return ()
+    W, V = X[:3, :], X[3:, :]
+    M = W.T * V
+    Q = ImmutableMatrix(k, k, lambda i, j: cancel((M[i, j] + M[j, i]) / 2))
+    G = ImmutableMatrix(k, k, lambda i, j: cancel(W.col(i).dot(W.col(j))))
+    h = _analysis(ImmutableMatrix.vstack(Q, ImmutableMatrix.zeros(6 - k, k))).rank
+    if h == 0:
+        return ()
+    if k == 1:
+        return (cancel(Q[0, 0] / G[0, 0]),)
+    lam = Dummy("lambda")
+    p = Poly(cancel((Q - lam * G).det(method="berkowitz")), lam)
+    p = Poly(p.as_expr() / lam ** (k - h), lam)  # the zero pitches are rotations
+    c = [cancel(x) for x in p.all_coeffs()]  # real-rooted: Q, G symmetric, G > 0
+    alternate = [(-1) ** i * x for i, x in enumerate(c)]
+    positive = all(x.is_positive for x in alternate) or all(x.is_negative for x in alternate)
+    negative = all(x.is_positive for x in c) or all(x.is_negative for x in c)
+    if not (positive or negative):  # indefinite (or undecided): spanned by rotations
+        return ()
+    found = roots(p, lam)
+    if sum(found.values()) < h and not p.free_symbols - {lam}:  # pragma: no cover - quintics
+        return tuple(p.all_roots())
+    return tuple(r for r, n in found.items() for _ in range(n))
 
 
 class ParallelMechanism(ScrewsymBasic):
@@ -239,7 +365,7 @@ class ParallelMechanism(ScrewsymBasic):
     ...     leg([-1, -sqrt(3), 0], [sqrt(3), -1, 0], [-Rational(1, 2), -sqrt(3)/2, 2]),
     ... ).mobility()
     >>> m.mobility, m.motion, m.classical, (m.common, m.redundant, m.passive)
-    (3, '2R1T', 3, (0, 0, 0))
+    (3, '1T2R', 3, (0, 0, 0))
     >>> m.rotation_directions.shape, m.translation_directions.shape
     ((3, 2), (3, 1))
 
@@ -339,7 +465,7 @@ class ParallelMechanism(ScrewsymBasic):
         >>> fourbar = ParallelMechanism(Limb(R([0, 0, 0], z), R([1, b, 0], z)),
         ...                             Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
         >>> [(case, m.mobility, m.motion) for case, m in fourbar.mobility_cases()]
-        [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1R1T')]
+        [(Ne(b, 0), 1, '1R'), (Eq(b, 0), 2, '1T1R')]
 
         The coupler pivot on a circle, at angle ``q``: the four-bar folds where
         the pivot reaches the x axis, at ``q = 0`` and ``q = pi``.
@@ -495,12 +621,7 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     order = 6 - common
     dof = order * (n - g - 1) + freedoms + redundant - passive
     twists = W.reciprocal()
-    omega = twists.matrix[:3, :] if len(twists) else ImmutableMatrix.zeros(3, 0)
-    spin = _analysis(ImmutableMatrix.vstack(omega, ImmutableMatrix.zeros(3, omega.cols)))
-    rotations = spin.rank
-    translations = twists.rank - rotations
-    # the pure translations the platform has: its twists with omega = 0 (generic, polynomial)
-    moves = _pure_translations(twists.matrix, rotations) if translations else ImmutableMatrix.zeros(3, 0)
+    kinds = motion_of(twists)
     return Mobility(
         mobility=dof,
         order=order,
@@ -508,14 +629,15 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
         redundant=redundant,
         passive=passive,
         classical=6 * (n - g - 1) + freedoms,
-        rotations=rotations,
-        translations=translations,
-        motion=motion_type(rotations, translations),
+        rotations=kinds.rotations,
+        translations=kinds.translations,
+        motion=kinds.motion,
         twists=twists,
         links=n,
         joints=g,
         freedoms=freedoms,
-        rotation_directions=ImmutableMatrix(omega.extract([0, 1, 2], list(spin.pivots))),
-        translation_directions=ImmutableMatrix(moves),
+        rotation_directions=kinds.rotation_directions,
+        translation_directions=kinds.translation_directions,
+        helical_pitches=kinds.helical_pitches,
     )
 

@@ -139,7 +139,7 @@ def test_a_tree_has_no_loop_and_moves_freely():
     m = Mechanism([("g", "a", R(O, Z)), ("a", "b", R([1, 0, 0], Z)), ("b", "c", P(Z))], base="g")
     mo = m.mobility()
     assert (mo.loops, mo.mobility, mo.idle, mo.redundant) == (0, 3, 0, 0)
-    assert m.motion("c") == "1R2T" and m.motion("a") == "1R"
+    assert m.motion("c") == "2T1R" and m.motion("a") == "1R"
     assert m.second_order().mobility == 3
 
 
@@ -328,7 +328,7 @@ def test_h4_is_3t1r():
     m = h4()
     mo = m.mobility()
     assert (mo.links, mo.joints, mo.loops, mo.mobility, mo.idle) == (24, 30, 7, 4, 0)
-    assert m.motion("C") == "1R3T" and m.motion("A") == "3T"
+    assert m.motion("C") == "3T1R" and m.motion("A") == "3T"
     (w,) = [t.omega for t in m.twists("C") if t.omega != Matrix([0, 0, 0])]
     assert w.cross(Matrix(Z)) == Matrix([0, 0, 0])  # the rotation is about z
     c = Closure(m)

@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from _mechanisms import E, O, Z, four_bar, three_rps
-from sympy import Matrix, Rational, expand, symbols, true
+from sympy import Matrix, Rational, cancel, expand, sqrt, symbols, true
 
 from screwsym import ScrewSystem, reciprocal_product
 from screwsym.numeric.mobility import mobility_map
@@ -89,15 +89,15 @@ def test_four_bar_collinear_singularity():
     two = [c for c, m in cases if m.mobility == 2]
     assert two and all(c.xreplace({by: 0, bx: 1}) is true for c in two[:1])
     assert mech.xreplace({by: 0, bx: 1}).mobility().mobility == 2
-    assert mech.xreplace({by: 0, bx: 1}).mobility().motion == "1R1T"
+    assert mech.xreplace({by: 0, bx: 1}).mobility().motion == "1T1R"
 
 
 def test_stewart_gough_6ups():
-    # 6 DOF, 3R3T (Gough 1956; Stewart 1965; Merlet, Parallel Robots, 2006, Ch. 1)
+    # 6 DOF, 3T3R (Gough 1956; Stewart 1965; Merlet, Parallel Robots, 2006, Ch. 1)
     mech = stewart()
     m = mech.mobility()
     assert (m.mobility, m.motion, m.classical, m.common, m.redundant, m.passive) == (
-        6, "3R3T", 6, 0, 0, 0)
+        6, "3T3R", 6, 0, 0, 0)
     assert mech.constraints.rank == 0
     check_consistent(m, mech)
 
@@ -107,7 +107,7 @@ def test_stewart_gough_6sps_has_six_passive_freedoms():
     # 6(14-18-1)+42 = 12, the platform has 6 (Tsai, Robot Analysis, 1999, §1.4:
     # mobility 12 minus 6 idle/passive leg rotations)
     m = stewart(first=S).mobility()
-    assert (m.mobility, m.classical, m.passive, m.motion) == (6, 12, 6, "3R3T")
+    assert (m.mobility, m.classical, m.passive, m.motion) == (6, 12, 6, "3T3R")
 
 
 def test_three_rps():
@@ -116,7 +116,7 @@ def test_three_rps():
     mech = three_rps()
     m = mech.mobility()
     assert (m.mobility, m.motion, m.classical, m.common, m.redundant, m.passive) == (
-        3, "2R1T", 3, 0, 0, 0)
+        3, "1T2R", 3, 0, 0, 0)
     # each leg transmits one force, through its sphere centre along its R axis (Huang,
     # Li & Ding, Ch. 5: constraint analysis of 3-RPS)
     for limb in mech.limbs:
@@ -129,20 +129,21 @@ def test_three_rps():
 
 @pytest.mark.slow
 def test_three_rps_symbolic_and_its_constraint_singularity():
-    # generic: 3 DOF 2R1T.  Legs at one height with the three constraint forces concurrent
+    # generic: 3 DOF, two angular velocities of which one is instantaneously helical
+    # ("1T1R1H", the parasitic motion; see test_three_prs).  Legs at one height with the three constraint forces concurrent
     # (here rho1 + rho2 + rho3 = -6 with base radius 2): the forces are coplanar and
-    # concurrent, rank 2, and the platform gains a rotation, 4 DOF 3R1T (a constraint
+    # concurrent, rank 2, and the platform gains a rotation, 4 DOF 1T3R (a constraint
     # singularity: Zlatanov, Bonev & Gosselin, ICRA 2002; for 3-RPS see Schadlbauer,
     # Walter & Husty, Mech. Mach. Theory 77, 2014)
     rho = symbols("rho1:4", real=True)
     h = symbols("h1:4", positive=True)
     mech = three_rps(rho, h)
     cases = mech.mobility_cases()
-    assert cases[0][1].mobility == 3 and cases[0][1].motion == "2R1T"
+    assert cases[0][1].mobility == 3 and cases[0][1].motion == "1T1R1H"
     singular = [(c, m) for c, m in cases if m.mobility != 3]
     assert len(singular) == 1
     cond, m = singular[0]
-    assert (m.mobility, m.motion) == (4, "3R1T")
+    assert (m.mobility, m.motion) == (4, "1T3R")
     at = {rho[0]: 1, rho[1]: -3, rho[2]: -4, h[0]: 2, h[1]: 2, h[2]: 2}
     assert cond.xreplace(at) is true
     assert all(c.xreplace(at) is not true for c, mm in cases if mm.mobility == 3)
@@ -200,12 +201,12 @@ def test_three_rrr_planar():
         Limb(R([2, 4, 0], Z), R([1, 3, 0], Z), R([2, 2, 0], Z)),
     )
     m = mech.mobility()
-    assert (m.mobility, m.motion, m.classical, m.common, m.redundant) == (3, "1R2T", -3, 3, 0)
+    assert (m.mobility, m.motion, m.classical, m.common, m.redundant) == (3, "2T1R", -3, 3, 0)
     check_consistent(m, mech)
 
 
 def test_three_prs():
-    # 3 DOF, 2R1T (Carretero, Podhorodeski, Nahon & Gosselin 2000, J. Mech. Des. 122:
+    # 3 DOF, 1T2R (Carretero, Podhorodeski, Nahon & Gosselin 2000, J. Mech. Des. 122:
     # vertical P, R tangent to the base circle, S on the platform)
     s = symbols("s1:4", real=True)
 
@@ -217,8 +218,30 @@ def test_three_prs():
 
     mech = ParallelMechanism(*(leg(i) for i in range(3)))
     m = mech.mobility()
-    assert (m.mobility, m.motion, m.classical) == (3, "2R1T", 3)
+    # the literature's 1T2R holds where two sliders are at one height; at a generic pose one
+    # of the two rotations is instantaneously a helix (the parasitic motion couples it with a
+    # horizontal translation), with the pitch below, zero where two heights agree
+    assert (m.mobility, m.motion, m.classical) == (3, "1T1R1H", 3)
+    (p,) = m.helical_pitches
+    s1, s2, s3 = s
+    q = s1**2 + s2**2 + s3**2 - s1 * s2 - s1 * s3 - s2 * s3
+    assert cancel(p + sqrt(3) * (s1 - s2) * (s1 - s3) * (s2 - s3) / (2 * q)) == 0
+    assert mech.xreplace({s2: s1}).mobility().motion == "1T2R"
     check_consistent(m, mech)
+    # independent (NumPy): at heights (0, 1, 3) the constraint forces run through the S
+    # centres along the R axes; their reciprocal twists with omega horizontal (orthogonal to
+    # the vertical translation) are that translation and one helix, whose pitch is the one
+    h = np.array([0.0, 1.0, 3.0])
+    F = []
+    for i in range(3):
+        e = np.array([float(x) for x in E[i]])
+        u, top = np.array([-e[1], e[0], 0.0]), np.array([e[0], e[1], h[i] + 2])
+        F.append(np.r_[np.cross(top, u), u])  # the force's row of (Delta W)^T: (C; f)
+    T = np.linalg.svd(np.array(F))[2][3:].T  # twists (omega; v), 6 x 3
+    horizontal = T @ np.linalg.svd(T[2:3])[2][1:].T  # omega_z = 0: 6 x 2
+    x = horizontal @ np.linalg.svd(horizontal[:3])[2][0]  # the one with omega != 0
+    value = float(p.subs(dict(zip(s, h, strict=True))))
+    assert abs(x[:3] @ x[3:] / (x[:3] @ x[:3]) - value) < 1e-12 and abs(value) > 0.1
 
 
 # ----------------------------------------------------------------- joints
@@ -238,7 +261,7 @@ def test_joint_twists():
 
 def test_motion_type_names():
     assert [motion_type(*x) for x in ((3, 3), (2, 1), (0, 3), (1, 0), (0, 0))] == [
-        "3R3T", "2R1T", "3T", "1R", "0"]
+        "3T3R", "1T2R", "3T", "1R", "0"]
 
 
 def test_objects_are_basic():
@@ -331,7 +354,7 @@ def test_three_upu_constraint_singularity():
     legs = zip(UPU_BASE[:3], UPU_AXIS[:3], tops, strict=True)
     mech = ParallelMechanism(*(upu_leg(*leg) for leg in legs))
     cases = mech.mobility_cases()
-    assert [(m.mobility, m.motion) for _, m in cases] == [(3, "3T"), (4, "1R3T")]
+    assert [(m.mobility, m.motion) for _, m in cases] == [(3, "3T"), (4, "3T1R")]
     singular = cases[1][0]
     assert singular.xreplace({x: Rational(-48, 11), z: 3}) is true
     # the three couples are dependent there, independent elsewhere (exactly and in floats)
@@ -421,7 +444,7 @@ def test_mobility_cases_with_the_same_answer_are_merged():
     merged = fourbar.mobility_cases()
     assert [m.answer() for _, m in each][:2] == [each[0][1].answer()] * 2 and len(each) == 3
     assert [(cond, m.mobility, m.motion) for cond, m in merged] == [
-        (Ne(b, 0) | Ne(c, 0), 1, "1R"), (Eq(b, 0) & Eq(c, 0), 2, "1R1T")]
+        (Ne(b, 0) | Ne(c, 0), 1, "1R"), (Eq(b, 0) & Eq(c, 0), 2, "1T1R")]
     assert merged[0][1] == each[0][1]  # the first case's analysis, twists included
     # the merged conditions still cover every point, the same answer at each
     for point in ({b: 0, c: 0}, {b: 1, c: 0}, {b: 0, c: 2}, {b: 3, c: -1}):
@@ -438,7 +461,7 @@ def test_mobility_prints_as_a_short_summary_and_keeps_its_fields():
                           Limb(R([4, 0, 0], z), R([3, 3, 0], z))).mobility()
     assert repr(m) == ("Mobility(mobility=1, motion='1R', common=3, redundant=0, passive=0, "
                        "classical=-2)")
-    assert m.links == 4 and m.joints == 4 and m.twists.rank == 1 and len(m) == 15
+    assert m.links == 4 and m.joints == 4 and m.twists.rank == 1 and len(m) == 16 and m.helical_pitches == ()
 
 
 def test_a_universal_joint_with_parallel_axes_is_refused():
