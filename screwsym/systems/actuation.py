@@ -21,7 +21,8 @@ and that of a S-P-S or U-P-S leg (no constraint) the only one.  The choice is
 invariant under rigid motions of the frame.  It is written polynomial (exact)
 in the symbols: the null vector of a ``c x (c + 1)`` matrix, its denominators
 cleared and the common factor of its entries divided out (it keeps its
-sign, so ``w o $_a`` may be of either sign; :func:`jacobian`'s ``Jq`` says).
+sign, its sign chosen so that ``w o $_a``, the actuated joint's entry of
+:func:`jacobian`'s ``Jq``, has a positive leading coefficient).
 
 Jacobian (Joshi & Tsai 2002, eq. 6-9): the rows of ``Jx`` are the actuation
 wrenches followed by a basis of the mechanism's constraint system, each
@@ -67,6 +68,7 @@ from sympy import (
     Integer,
     Matrix,
     Min,
+    Poly,
     Rational,
     cancel,
     eye,
@@ -215,8 +217,9 @@ def limb_actuation_wrench(limb: Limb, k: int) -> Wrench:
             f"actuated: joint {k} of the limb adds no freedom to its other joints "
             "(its twist lies in theirs), so it transmits no actuation wrench"
         )
+    twist = limb.joints[k]._twists()[0]
     if not C:
-        return _wrench_from(B[0].matrix)
+        return _signed(_wrench_from(B[0].matrix), twist)
     X = _last_point(limb)
     G = Matrix([[_euclid(c, b, X) for b in B] for c in C])
     null = G.nullspace(simplify=False)
@@ -224,12 +227,22 @@ def limb_actuation_wrench(limb: Limb, k: int) -> Wrench:
         raise ValueError("actuated: the actuation wrench is not unique here")
     beta = _primitive(list(null[0]))
     w = sum((beta[j] * B[j].matrix for j in range(len(B))), ImmutableMatrix.zeros(6, 1))
-    return _wrench_from(w)
+    return _signed(_wrench_from(w), twist)
 
 
 def _wrench_from(column: Any) -> Wrench:
     entries = _primitive([column[i] for i in range(6)])
     return Wrench(entries[:3], entries[3:])
+
+
+def _signed(w: Wrench, twist: Twist) -> Wrench:
+    """``w`` or ``-w``: the one whose ``w o $_a`` has a positive leading coefficient."""
+    p = cancel(w.S.dot(twist.S0) + w.S0.dot(twist.S))
+    if p == 0:
+        return w
+    gens = sorted(p.free_symbols, key=str)
+    lead = Poly(p, *gens).LC() if gens else p
+    return Wrench(-w.S, -w.S0) if lead.is_negative else w
 
 
 def _actuated(mech: ParallelMechanism) -> list[tuple[int, int]]:
@@ -244,14 +257,16 @@ def _actuated(mech: ParallelMechanism) -> list[tuple[int, int]]:
 def actuation_wrenches(mech: ParallelMechanism) -> tuple[Wrench, ...]:
     """The actuation wrench of each actuated joint, limb by limb, in the order of the indices.
 
+    >>> from sympy import Rational
     >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> z = [0, 0, 1]
-    >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R([1, 2, 0], z), actuated=0),
-    ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R([1, 2, 0], z), actuated=0),
+    >>> e = [Rational(3, 2), Rational(5, 2), 0]      # the end point
+    >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R(e, z), actuated=0),
+    ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R(e, z), actuated=0),
     ...                       Limb(P([1, 0, 0]), P([0, 1, 0])))   # a P-P leg locks the spin
     >>> actuation_wrenches(m)       # the forces along the distal links of a five-bar
-    (Wrench([1, 1, 0], [0, 0, 1]), Wrench([-1, 1, 0], [0, 0, 3]))
+    (Wrench([-1, -1, 0], [0, 0, 1]), Wrench([-1, 1, 0], [0, 0, 4]))
     """
     return tuple(limb_actuation_wrench(mech.limbs[i], k) for i, k in _actuated(mech))
 
@@ -266,17 +281,19 @@ def jacobian(mech: ParallelMechanism) -> tuple[ImmutableMatrix, ImmutableMatrix]
     for the constraints (Joshi & Tsai 2002, eq. 9).  ``Jx`` is 6 x 6 when the
     actuators and the constraints together number six.
 
+    >>> from sympy import Rational
     >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> z = [0, 0, 1]
-    >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R([1, 2, 0], z), actuated=0),
-    ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R([1, 2, 0], z), actuated=0),
+    >>> e = [Rational(3, 2), Rational(5, 2), 0]      # the end point
+    >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R(e, z), actuated=0),
+    ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R(e, z), actuated=0),
     ...                       Limb(P([1, 0, 0]), P([0, 1, 0])))
     >>> Jx, Jq = jacobian(m)
     >>> Jx.shape, Jq
     ((6, 6), Matrix([
     [1, 0],
-    [0, 3],
+    [0, 1],
     [0, 0],
     [0, 0],
     [0, 0],
@@ -315,12 +332,21 @@ class Singularities(NamedTuple):
 
 
 def _drops(system: ScrewSystem, also: Any = true) -> list:
+    """The cases where ``system`` has less than its generic rank; those of one rank merged."""
+    from .mechanism import _union  # the mechanism's merge of cases (imported late: a cycle)
+
     cases = system.rank_conditions()
     generic = cases[0][1]
-    out = []
+    out: list = []
     for cond, rank in cases[1:]:
-        if rank is None or rank < generic:
-            out.append((And(cond, also) if also is not true else cond, rank))
+        if rank is not None and rank >= generic:
+            continue
+        cond = And(cond, also) if also is not true else cond
+        same = [i for i, (_, r) in enumerate(out) if r == rank and rank is not None]
+        if same:
+            out[same[0]] = (_union(out[same[0]][0], cond), rank)
+        else:
+            out.append((cond, rank))
     return out
 
 
@@ -358,8 +384,13 @@ def singularities(mech: ParallelMechanism) -> Singularities:
     ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R(p, z), actuated=0),
     ...                       Limb(P([1, 0, 0]), P([0, 1, 0])))
     >>> s = singularities(m)
-    >>> [c for c, _ in s.limb]        # a leg stretched or folded: the end point above its base
-    [Eq(x, 0), Eq(x, 3)]
+    >>> s.limb
+    [(Eq(x, 0), 2), (Eq(x, 0) & Eq(y - 1, 0), 3), (Eq(x - 3, 0), 2), (Eq(y - 1, 0) & Eq(x - 3*y, 0), 3)]
+
+    Leg 1 is stretched or folded where ``x = 0`` (the end point above its base:
+    its three axes in one plane, rank 2); its actuation wrench degenerates
+    where moreover the end point is its elbow ``(0, 1)``, and leg 2's where the
+    end point is its elbow ``(3, 1)``.
     >>> [c for c, _ in s.actuation]   # both distal links along one line
     [Eq(y, 1)]
     >>> s.constraint
@@ -475,11 +506,13 @@ def transmission(mech: ParallelMechanism) -> Transmission:
     The five-bar of :func:`actuation_wrenches`: cranks along y, distal links
     at 45 degrees to them and at 90 degrees to each other.
 
+    >>> from sympy import Rational
     >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> z = [0, 0, 1]
-    >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R([1, 2, 0], z), actuated=0),
-    ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R([1, 2, 0], z), actuated=0),
+    >>> e = [Rational(3, 2), Rational(5, 2), 0]      # the end point
+    >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R(e, z), actuated=0),
+    ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R(e, z), actuated=0),
     ...                       Limb(P([1, 0, 0]), P([0, 1, 0])))
     >>> tr = transmission(m)
     >>> tr.input, tr.output, tr.local

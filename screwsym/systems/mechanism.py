@@ -58,9 +58,9 @@ from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
-from .joints import _E, Joint, check_joints
 from . import actuation as _actuation
 from .actuation import check_actuated, generic_limb_rank
+from .joints import _E, Joint, check_joints
 from .screw_system import BUDGET, MAX_CASES, ScrewSystem, _analysis, case_budget
 
 if TYPE_CHECKING:
