@@ -71,6 +71,7 @@ from sympy import (
     Poly,
     Rational,
     cancel,
+    expand,
     eye,
     fraction,
     gcd,
@@ -240,8 +241,9 @@ def _signed(w: Wrench, twist: Twist) -> Wrench:
     p = cancel(w.S.dot(twist.S0) + w.S0.dot(twist.S))
     if p == 0:
         return w
+    num, den = fraction(p)
     gens = sorted(p.free_symbols, key=str)
-    lead = Poly(p, *gens).LC() if gens else p
+    lead = Poly(num, *gens).LC() * Poly(den, *gens).LC() if gens else p
     return Wrench(-w.S, -w.S0) if lead.is_negative else w
 
 
@@ -450,18 +452,19 @@ def transmission_index(wrench: Any, twist: Any, point: Any) -> Any:
         return Abs(cancel(m.dot(omega))) / (sqrt(m.dot(m)) * sqrt(omega.dot(omega)))
     if w_zero is True:
         return Abs(cancel(f.dot(v))) / (sqrt(f.dot(f)) * sqrt(v.dot(v)))
-    ff, ww = f.dot(f), omega.dot(omega)
-    hT = f.dot(m) / ff
-    h = omega.dot(v) / ww
-    # the wrench's axis: the foot r_w = f x C_O / |f|^2; X the point projected onto it
+    # with a = f . C_O, b = omega . v_O (so h_T = a/|f|^2, h = b/|omega|^2), the point
+    # X = (f x C_O + (P . f) f)/|f|^2 and r0 = omega x v_O/|omega|^2 of the twist's axis,
+    # |f|^2 |omega|^2 ((h_T + h)^2 + d_max^2) = E / (|f|^2 |omega|^4) with E polynomial:
+    # E = |omega|^2 (|omega|^2 a + |f|^2 b)^2 + |Q x omega|^2,
+    # Q = |omega|^2 (f x C_O + (P . f) f) - |f|^2 (omega x v_O)
+    ff, ww = expand(f.dot(f)), expand(omega.dot(omega))
+    a, b = expand(f.dot(m)), expand(omega.dot(v))
     P = ImmutableMatrix(point)
-    rw = f.cross(m) / ff
-    X = rw + ((P - rw).dot(f) / ff) * f
-    r0 = omega.cross(v) / ww  # a point of the twist's axis
-    arm = (X - r0).cross(omega)
-    dmax2 = arm.dot(arm) / ww
-    unit = sqrt(ff) * sqrt(ww)
-    return Abs(cancel(power)) / (unit * sqrt(cancel((hT + h) ** 2 + dmax2)))
+    Q = ww * (f.cross(m) + P.dot(f) * f) - ff * omega.cross(v)
+    arm = Q.cross(omega)
+    E = expand(ww * (ww * a + ff * b) ** 2 + arm.dot(arm))
+    num, den = fraction(cancel(ff / E))  # lowest terms: sqrt(ff/E) with common factors gone
+    return Abs(expand(power)) * ww * sqrt(num) / sqrt(den)
 
 
 class Transmission(NamedTuple):
