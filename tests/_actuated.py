@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from sympy import Matrix, Rational, cancel, sqrt
+from sympy import Matrix, Rational, cancel, eye, sqrt
 
 from screwsym.systems.joints import P, R, S
 from screwsym.systems.mechanism import Limb, ParallelMechanism
@@ -33,22 +33,20 @@ def _rz(s):
     return Matrix([[c, -n, 0], [n, c, 0], [0, 0, 1]])
 
 
-def _ry(s):
-    c, n = (1 - s**2) / (1 + s**2), 2 * s / (1 + s**2)
-    return Matrix([[c, 0, n], [0, 1, 0], [-n, 0, c]])
+def three_rps_pose(p, q, z, rb=2, rp=1):
+    """Tsai's symmetric 3-RPS at a symbolic pose: a tilt and the height ``z``.
 
-
-def three_rps_pose(s, t, z, rb=2, rp=1):
-    """Tsai's symmetric 3-RPS at the pose R = Rz(phi) Ry(theta) Rz(-phi), height z.
-
-    ``s = tan(phi/2)``, ``t = tan(theta/2)``; the parasitic translation (c_x, c_y)
-    that keeps every sphere centre in its leg's plane (Tsai 1999, Sec. 3.5; Huang,
-    Li & Ding 2013, Ch. 5) solved in closed form.  P joints actuated.
+    The platform turns about the horizontal axis ``(p, q, 0)`` by ``2 atan(|(p, q)|)``
+    (the Cayley form, rational: the rotations ``Rz(phi) Ry(theta) Rz(-phi)`` of the
+    3-RPS), and the parasitic translation ``(c_x, c_y)`` that keeps every sphere
+    centre in its leg's plane (Tsai 1999, Sec. 3.5; Huang, Li & Ding 2013, Ch. 5) is
+    ``rp (p^2 - q^2, -2 p q) / (1 + p^2 + q^2)``, solved in closed form and checked in
+    the tests.  Base radius ``rb``, platform radius ``rp``; the P joints actuated.
     """
-    Rm = (_rz(s) * _ry(t) * _rz(-s)).applyfunc(cancel)
-    d = (1 + s**2) ** 2 * (1 + t**2)
-    c = Matrix([cancel(-(s**4 - 6 * s**2 + 1) * t**2 / d) * rp,
-                cancel(-4 * s * t**2 * (s**2 - 1) / d) * rp, z])
+    K = Matrix([[0, 0, q], [0, 0, -p], [-q, p, 0]])
+    den = 1 + p**2 + q**2
+    Rm = (eye(3) + 2 / den * (K + K * K)).applyfunc(cancel)
+    c = Matrix([cancel(rp * (p**2 - q**2) / den), cancel(-2 * rp * p * q / den), z])
     legs = []
     for e in E:
         b = rb * e
