@@ -32,7 +32,7 @@ swapped, ``Delta w``), so that for a platform twist ``t = (omega; v_O)``,
 ``diag(w_a o $_a)``.  For every twist reached by actuated rates ``qdot``,
 ``Jx * t = Jq * qdot`` stacked on zeros.
 
-Singularities (:func:`singularities`, Gosselin & Angeles 1990, Zlatanov,
+Singularities (:func:`mechanism_singularities`, the method ``singularities()``, Gosselin & Angeles 1990, Zlatanov,
 Fenton & Benhabib 1995, Zlatanov, Bonev & Gosselin 2002): ``limb`` (a limb's
 twist system or the system of its constraints and actuation wrenches loses
 rank: the inverse-kinematic kind, "type I"), ``actuation`` (``Jx`` loses rank
@@ -59,15 +59,19 @@ from __future__ import annotations
 
 import random
 from functools import reduce
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import Any, NamedTuple
 
 from sympy import (
     Abs,
     And,
+    Eq,
     ImmutableMatrix,
     Integer,
     Matrix,
     Min,
+    Ne,
+    Not,
+    Or,
     Poly,
     Rational,
     cancel,
@@ -79,6 +83,7 @@ from sympy import (
     sqrt,
     true,
 )
+from sympy.logic.boolalg import simplify_logic
 
 from ..core.decide import is_zero_vector
 from ..core.twist import Twist
@@ -95,18 +100,21 @@ from .joints import (
 )
 from .screw_system import ScrewSystem
 
-if TYPE_CHECKING:
-    from .mechanism import Limb, ParallelMechanism
+#: a Limb and a ParallelMechanism (screwsym.systems.mechanism imports this module)
+_Limb = Any
+_Mechanism = Any
 
 __all__ = [
     "actuation_wrenches",
     "jacobian",
-    "singularities",
+    "mechanism_singularities",
     "Singularities",
     "transmission",
     "Transmission",
     "transmission_index",
     "generic_limb_rank",
+    "limb_actuation_wrench",
+    "check_actuated",
 ]
 
 
@@ -146,11 +154,11 @@ def check_actuated(value: Any, count: int) -> tuple[Integer, ...]:
     return tuple(Integer(i) for i in sorted(out))
 
 
-def _joint_twist_groups(limb: Limb) -> list[list[Twist]]:
+def _joint_twist_groups(limb: _Limb) -> list[list[Twist]]:
     return [list(j._twists()) for j in limb.joints]
 
 
-def _check_actuated_joint(limb: Limb, k: int, where: str) -> None:
+def _check_actuated_joint(limb: _Limb, k: int, where: str) -> None:
     j = limb.joints[k]
     if j.freedom != 1:
         raise ValueError(
@@ -168,7 +176,7 @@ def _point_of(j: Joint) -> ImmutableMatrix | None:
     return j.args[0]
 
 
-def _last_point(limb: Limb) -> ImmutableMatrix:
+def _last_point(limb: _Limb) -> ImmutableMatrix:
     for j in reversed(limb.joints):
         p = _point_of(j)
         if p is not None:
@@ -198,7 +206,7 @@ def _primitive(entries: list[Any]) -> list[Any]:
     return [cancel(e / g) for e in entries]
 
 
-def limb_actuation_wrench(limb: Limb, k: int) -> Wrench:
+def limb_actuation_wrench(limb: _Limb, k: int) -> Wrench:
     """The actuation wrench of joint ``k`` of ``limb`` (the module docstring gives the choice).
 
     >>> from screwsym.systems.mechanism import Limb
@@ -247,7 +255,7 @@ def _signed(w: Wrench, twist: Twist) -> Wrench:
     return Wrench(-w.S, -w.S0) if lead.is_negative else w
 
 
-def _actuated(mech: ParallelMechanism) -> list[tuple[int, int]]:
+def _actuated(mech: _Mechanism) -> list[tuple[int, int]]:
     pairs = [(i, int(k)) for i, limb in enumerate(mech.limbs) for k in limb.actuated]
     if not pairs:
         raise ValueError(
@@ -256,7 +264,7 @@ def _actuated(mech: ParallelMechanism) -> list[tuple[int, int]]:
     return pairs
 
 
-def actuation_wrenches(mech: ParallelMechanism) -> tuple[Wrench, ...]:
+def actuation_wrenches(mech: _Mechanism) -> tuple[Wrench, ...]:
     """The actuation wrench of each actuated joint, limb by limb, in the order of the indices.
 
     >>> from sympy import Rational
@@ -273,7 +281,7 @@ def actuation_wrenches(mech: ParallelMechanism) -> tuple[Wrench, ...]:
     return tuple(limb_actuation_wrench(mech.limbs[i], k) for i, k in _actuated(mech))
 
 
-def jacobian(mech: ParallelMechanism) -> tuple[ImmutableMatrix, ImmutableMatrix]:
+def jacobian(mech: _Mechanism) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     r"""``(Jx, Jq)``: ``Jx * t = Jq * qdot`` (stacked on zeros) for every platform twist ``t``.
 
     ``Jx`` has the actuation wrenches and then a basis of the constraint
@@ -320,8 +328,17 @@ def _axis_row(w: Any) -> ImmutableMatrix:
 
 
 # ------------------------------------------------------------------ singularities
+def _union(a: Any, b: Any) -> Any:
+    """``a | b`` in the fewest terms: SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq``
+    (the atoms are the rank conditions' equations; it gives up beyond 8 of them)."""
+    expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
+    expr = simplify_logic(expr)
+    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
+                        lambda x: Ne(*x.args[0].args))
+
+
 class Singularities(NamedTuple):
-    """The result of :func:`singularities`: three lists of ``(condition, rank)`` pairs.
+    """The result of :func:`mechanism_singularities`: three lists of ``(condition, rank)`` pairs.
 
     Each pair is a case of a :meth:`ScrewSystem.rank_conditions` where the
     system concerned has less than its generic rank (``rank`` ``None``: not
@@ -335,13 +352,11 @@ class Singularities(NamedTuple):
 
 def _drops(system: ScrewSystem, also: Any = true) -> list:
     """The cases where ``system`` has less than its generic rank; those of one rank merged."""
-    from .mechanism import _union  # the mechanism's merge of cases (imported late: a cycle)
-
     cases = system.rank_conditions()
     generic = cases[0][1]
     out: list = []
     for cond, rank in cases[1:]:
-        if rank is not None and rank >= generic:
+        if rank is not None and generic is not None and rank >= generic:
             continue
         cond = And(cond, also) if also is not true else cond
         same = [i for i, (_, r) in enumerate(out) if r == rank and rank is not None]
@@ -352,7 +367,7 @@ def _drops(system: ScrewSystem, also: Any = true) -> list:
     return out
 
 
-def singularities(mech: ParallelMechanism) -> Singularities:
+def mechanism_singularities(mech: _Mechanism) -> Singularities:
     r"""The three kinds of singularity, as exhaustive conditions on the symbols.
 
     Explanation
@@ -385,7 +400,7 @@ def singularities(mech: ParallelMechanism) -> Singularities:
     >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R(p, z), actuated=0),
     ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R(p, z), actuated=0),
     ...                       Limb(P([1, 0, 0]), P([0, 1, 0])))
-    >>> s = singularities(m)
+    >>> s = mechanism_singularities(m)
     >>> s.limb
     [(Eq(x, 0), 2), (Eq(x, 0) & Eq(y - 1, 0), 3), (Eq(x - 3, 0), 2), (Eq(y - 1, 0) & Eq(x - 3*y, 0), 3)]
 
@@ -477,7 +492,7 @@ class Transmission(NamedTuple):
     outputs: tuple  #: the output twists, the platform's twist with the other actuators locked
 
 
-def _point_after(limb: Limb, k: int) -> ImmutableMatrix:
+def _point_after(limb: _Limb, k: int) -> ImmutableMatrix:
     for j in limb.joints[k + 1:]:
         p = _point_of(j)
         if p is not None:
@@ -485,7 +500,7 @@ def _point_after(limb: Limb, k: int) -> ImmutableMatrix:
     return _last_point(limb)
 
 
-def transmission(mech: ParallelMechanism) -> Transmission:
+def transmission(mech: _Mechanism) -> Transmission:
     r"""The input, output and local transmission indices of Wang et al. (2010).
 
     Explanation
@@ -617,7 +632,7 @@ def _displaced(joints: list[Joint], rnd: random.Random) -> list[Joint]:
     return joints
 
 
-def generic_limb_rank(limb: Limb, seeds: tuple[int, ...] = (1, 2)) -> int:
+def generic_limb_rank(limb: _Limb, seeds: tuple[int, ...] = (1, 2)) -> int:
     """The rank of the limb's twist system at a generic configuration of the limb.
 
     Explanation
