@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from sympy import Matrix, Rational, cancel, eye, sqrt
+from sympy import Matrix, Rational, cancel, eye, sqrt, sympify
 
 from screwsym.systems.joints import P, R, S
 from screwsym.systems.mechanism import Limb, ParallelMechanism
@@ -29,6 +29,7 @@ def five_bar(p, a1=(0, 0), b1=(0, 1), a2=(3, 0), b2=(3, 1)):
 
 
 def _rz(s):
+    s = sympify(s, strict=True)
     c, n = (1 - s**2) / (1 + s**2), 2 * s / (1 + s**2)
     return Matrix([[c, -n, 0], [n, c, 0], [0, 0, 1]])
 

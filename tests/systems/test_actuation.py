@@ -239,3 +239,19 @@ def test_transmission_index_of_pure_screws():
     c = Wrench.couple([0, 0, 2])
     assert transmission_index(c, Twist.rotation([0, 0, 1], point=[5, 0, 0]), [0, 0, 0]) == 1
     assert transmission_index(c, Twist.translation([1, 0, 0]), [0, 0, 0]) == 0
+
+
+@pytest.mark.slow
+def test_octahedral_gough_stewart_is_singular_turned_by_a_quarter_turn():
+    # Merlet (1989), "Singular configurations of parallel manipulators and Grassmann
+    # geometry", Int. J. Robot. Res. 8(5): the 3-3 (octahedral) platform is singular when
+    # turned by +-90 degrees about the vertical axis from its symmetric position (here
+    # tau = tan(45 deg) = +-1); the six leg forces, Jx's rows, lose rank there, exactly
+    from screwsym import ScrewSystem
+    from tests._actuated import gough_stewart_33
+
+    def rank(tau):
+        return ScrewSystem(*gough_stewart_33(tau).actuation_wrenches()).rank
+
+    assert rank(1) == 5
+    assert rank(0) == 6  # the checker rejects a regular pose
