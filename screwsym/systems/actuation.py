@@ -640,8 +640,9 @@ def generic_limb_rank(limb: _Limb, seeds: tuple[int, ...] = (1, 2)) -> int:
 
     The limb is moved through its own joints (a product of exponentials:
     every joint turned or slid by a random rational amount, rotations in the
-    rational Cayley form) and the rank of its twist system taken there,
-    exactly; the largest over ``seeds`` and the configuration given.  A rank
+    rational Cayley form, its symbols given random rational values) and the
+    rank of its twist system taken there, exactly; the largest over ``seeds``
+    and the configuration given.  A rank
     at one configuration is at most the generic one, so this is a lower bound
     that equals it but at configurations of measure zero.  A limb whose rank
     here is less than this has a *momentary internal motion* (a limb
@@ -663,8 +664,17 @@ def generic_limb_rank(limb: _Limb, seeds: tuple[int, ...] = (1, 2)) -> int:
     best = here
     if best == limb.freedom:
         return best
+    symbols = sorted(limb.free_symbols, key=str)
     for seed in seeds:
-        moved = _displaced(list(limb.joints), random.Random(seed))
+        rnd = random.Random(seed)
+        # the symbols at random rationals too: a rank there is still at most the generic one,
+        # and numbers are fast (a value that degenerates a joint is skipped)
+        values = {x: Rational(rnd.randint(-60, 60), rnd.randint(1, 13)) for x in symbols}
+        try:
+            joints = [j.xreplace(values) for j in limb.joints] if values else list(limb.joints)
+            moved = _displaced(joints, rnd)
+        except ValueError:
+            continue
         rank = ScrewSystem(*(t for j in moved for t in j._twists()), kind=Twist).rank
         best = max(best, rank)
         if best == limb.freedom:
