@@ -329,9 +329,11 @@ def _axis_row(w: Any) -> ImmutableMatrix:
 
 # ------------------------------------------------------------------ singularities
 def _union(a: Any, b: Any) -> Any:
-    """``a | b`` in the fewest terms: SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq``
-    (the atoms are the rank conditions' equations; it gives up beyond 8 of them)."""
+    """``a | b``, minimised by SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq`` (at most
+    6 equations; beyond, the plain ``Or``)."""
     expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
+    if len(expr.atoms(Eq)) > 6:
+        return Or(a, b)
     expr = simplify_logic(expr)
     return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
                         lambda x: Ne(*x.args[0].args))

@@ -51,14 +51,15 @@ import operator
 import sys
 from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar
 
-from sympy import And, Basic, ImmutableMatrix, Tuple, cancel, false, true
+from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, Tuple, cancel, false, true
+from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from . import actuation as _actuation
-from .actuation import _union, check_actuated, generic_limb_rank
+from .actuation import check_actuated, generic_limb_rank
 from .joints import _E, Joint, check_joints
 from .screw_system import BUDGET, MAX_CASES, ScrewSystem, _analysis, case_budget
 
@@ -419,6 +420,15 @@ class ParallelMechanism(ScrewsymBasic):
                 out.append((condition, _mobility(self.xreplace(subs2) if subs2 else self)))
                 _check_cases(len(out), max_cases)
         return out
+
+
+def _union(a: Any, b: Any) -> Any:
+    """``a | b`` in the fewest terms: SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq``
+    (the atoms are the rank conditions' equations; it gives up beyond 8 of them)."""
+    expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
+    expr = simplify_logic(expr)
+    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
+                        lambda x: Ne(*x.args[0].args))
 
 
 class _Answered(Protocol):
