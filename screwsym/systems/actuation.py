@@ -250,8 +250,11 @@ def _signed(w: Wrench, twist: Twist) -> Wrench:
     if p == 0:
         return w
     num, den = fraction(p)
-    gens = sorted(p.free_symbols, key=str)
-    lead = Poly(num, *gens).LC() * Poly(den, *gens).LC() if gens else p
+    # the generators SymPy finds: the symbols, or sin/cos of them (trigonometric geometry)
+    def lc(e: Any) -> Any:
+        return e if e.is_number else Poly(e).LC()
+
+    lead = lc(num) * lc(den)
     return Wrench(-w.S, -w.S0) if lead.is_negative else w
 
 
