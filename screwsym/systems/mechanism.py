@@ -41,8 +41,12 @@ All ranks are generic in the symbols (see :mod:`screwsym.systems.screw_system`);
 the constraint system changes.  The analysis is of the free mechanism (no
 joint is actuated), so the singularities it finds are *constraint*
 singularities (the platform gains a freedom, as the 3-UPU and 3-RPS platforms
-do in the tests); actuation (type II) singularities such as those of the
-planar 3-RRR platform need the actuated joints and are not in its scope.
+do in the tests).  Name the actuated joints (``Limb(*joints, actuated=i)``) for
+the actuation wrenches, the Jacobian, all three kinds of singularity (limb,
+actuation and constraint) and the transmission indices:
+:meth:`ParallelMechanism.actuation_wrenches`, :meth:`~ParallelMechanism.jacobian`,
+:meth:`~ParallelMechanism.singularities`, :meth:`~ParallelMechanism.transmission`
+(:mod:`screwsym.systems.actuation`).
 """
 
 from __future__ import annotations
