@@ -83,6 +83,16 @@ class Limb(ScrewsymBasic):
     (5, 5)
     >>> leg.constraints          # one force through the sphere, along the R axis
     ScrewSystem(Wrench([0, 1, 0], [-1, 0, 1]))
+
+    ``actuated`` names the driven joints, an index or a tuple of indices into
+    ``joints`` (kept in ``args`` as a last ``Tuple``, so the limb stays a value):
+
+    >>> Limb(*leg.joints, actuated=1).actuated
+    (1,)
+    >>> Limb(*leg.joints, actuated=5)
+    Traceback (most recent call last):
+    ...
+    ValueError: actuated: expected indices into the limb's 3 joints (0 to 2), got 5
     """
 
     __slots__ = ()
