@@ -119,6 +119,8 @@ def capped(label: str, name: str, cap: float) -> tuple[str, str, str, str]:
         proc.terminate()
         proc.join()
         return (label, f"> {cap:.0f} s", "< 10 s", "not finished: stopped at the cap")
+    if proc.exitcode != 0 or queue.empty():
+        return (label, "failed", "< 10 s", f"the analysis raised (exit code {proc.exitcode})")
     sec, note = queue.get()
     return (label, f"{sec:.2f} s", "< 10 s", note[:160])
 
