@@ -4,6 +4,8 @@ r"""Floats: the chapter's operations generated as vectorised functions, and nume
   generated from the symbolic core (``numeric.pitch(array)``);
 - :mod:`~screwsym.numeric.mobility`: :func:`mobility_map`, the mobility of a
   parallel mechanism at many configurations at once;
+- :mod:`~screwsym.numeric.transmission`: :func:`transmission_map` and
+  :func:`jacobian_map`, transmission indices and Jacobians over a grid;
 - :mod:`~screwsym.numeric.dynamics`: a chain's dynamics as generated functions,
   :func:`forward_dynamics`.
 
@@ -17,9 +19,11 @@ from . import screws
 from .dynamics import DynamicsFunctions, dynamics_functions, forward_dynamics
 from .mobility import MobilityMap, mobility_map
 from .screws import NAMES, functions_for
+from .transmission import TransmissionMap, jacobian_map, transmission_map
 
 __all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map",
-           "DynamicsFunctions", "dynamics_functions", "forward_dynamics"]
+           "DynamicsFunctions", "dynamics_functions", "forward_dynamics",
+           "TransmissionMap", "transmission_map", "jacobian_map"]
 
 
 def __getattr__(name: str) -> Callable:

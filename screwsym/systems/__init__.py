@@ -15,7 +15,15 @@ from .joints import (
     Spherical,
     Universal,
 )
-from .mechanism import Limb, Mobility, MotionType, ParallelMechanism, motion_of, motion_type
+from .mechanism import (
+    Degenerate,
+    Limb,
+    Mobility,
+    MotionType,
+    ParallelMechanism,
+    motion_of,
+    motion_type,
+)
 from .screw_system import ScrewSystem
 
 __all__ = [
@@ -31,6 +39,7 @@ __all__ = [
     "Limb",
     "ParallelMechanism",
     "Mobility",
+    "Degenerate",
     "motion_type",
     "motion_of",
     "MotionType",

@@ -21,12 +21,18 @@ i, W_i = T_i^r its constraint system, c_i = rank W_i):
   (the rank of the intersection of all W_i);
 - ``nu``, the redundant constraints once the common ones are set aside:
   ``nu = sum_i (c_i - lambda) - (rank(W_1 u ... u W_k) - lambda)``;
-- ``zeta``, the passive (local) freedoms: ``zeta = sum_i (f(limb i) - rank T_i)``,
-  joint motions that move no link of the platform (a S-S leg spinning about
-  itself).
+- ``zeta``, the passive (local) freedoms: ``zeta = sum_i (f(limb i) - g_i)``,
+  ``g_i`` the rank of ``T_i`` at a *generic configuration of the limb*
+  (:func:`~screwsym.systems.actuation.generic_limb_rank`): joint motions that
+  leave the platform at rest at every configuration of the limb (a S-S leg
+  spinning about itself).  An idle motion that the limb has only here, at its
+  own (serial) singularity (an R-R-R leg stretched), is a momentary *internal*
+  motion: ``Mobility.internal = sum_i (g_i - rank T_i)``, which M keeps (the
+  planar five-bar with a leg stretched keeps its 2 freedoms).
 
-With these definitions M equals ``6 - rank(W_1 u ... u W_k)``, the dimension
-of the platform's twist system, which the tests check.  The classical count
+With these definitions M equals ``6 - rank(W_1 u ... u W_k)`` plus the
+internal motions: the dimension of the platform's twist system where no limb
+is at a singularity, which the tests check.  The classical count
 ``6 (n - g - 1) + sum f_i`` is reported beside it; it fails for
 over-constrained mechanisms (the planar four-bar gives -2).
 
@@ -35,8 +41,12 @@ All ranks are generic in the symbols (see :mod:`screwsym.systems.screw_system`);
 the constraint system changes.  The analysis is of the free mechanism (no
 joint is actuated), so the singularities it finds are *constraint*
 singularities (the platform gains a freedom, as the 3-UPU and 3-RPS platforms
-do in the tests); actuation (type II) singularities such as those of the
-planar 3-RRR platform need the actuated joints and are not in its scope.
+do in the tests).  Name the actuated joints (``Limb(*joints, actuated=i)``) for
+the actuation wrenches, the Jacobian, all three kinds of singularity (limb,
+actuation and constraint) and the transmission indices:
+:meth:`ParallelMechanism.actuation_wrenches`, :meth:`~ParallelMechanism.jacobian`,
+:meth:`~ParallelMechanism.singularities`, :meth:`~ParallelMechanism.transmission`
+(:mod:`screwsym.systems.actuation`).
 """
 
 from __future__ import annotations
@@ -45,13 +55,15 @@ import operator
 import sys
 from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar, cast
 
-from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, cancel, cos, false, sin, true
+from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, Tuple, cancel, cos, false, sin, true
 from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
+from . import actuation as _actuation
+from .actuation import check_actuated, generic_limb_rank
 from .joints import Joint, check_joints
 from .screw_system import (
     BUDGET,
@@ -81,26 +93,84 @@ class Limb(ScrewsymBasic):
     (5, 5)
     >>> leg.constraints          # one force through the sphere, along the R axis
     ScrewSystem(Wrench([0, 1, 0], [-1, 0, 1]))
+
+    ``actuated`` names the driven joints, an index or a tuple of indices into
+    ``joints`` (kept in ``args`` as a last ``Tuple``, so the limb stays a value):
+
+    >>> Limb(*leg.joints, actuated=1).actuated
+    (1,)
+    >>> Limb(*leg.joints, actuated=5)
+    Traceback (most recent call last):
+    ...
+    ValueError: actuated: expected indices into the limb's 3 joints (0 to 2), got 5
     """
 
     __slots__ = ()
 
-    def __new__(cls, *joints: Joint) -> Self:
-        return ScrewsymBasic.__new__(cls, *check_joints(joints, "joints"))
+    def __new__(cls, *joints: Joint, actuated: Any = None) -> Self:
+        # the actuated joints are kept as a last argument, a Tuple of indices, so that
+        # ``func(*args)`` rebuilds the limb (screwsym.systems.actuation.check_actuated)
+        if joints and isinstance(joints[-1], Tuple):
+            if actuated is not None:
+                raise TypeError("actuated: given twice (as a keyword and as a last Tuple)")
+            joints, actuated = joints[:-1], tuple(joints[-1])
+        joints = check_joints(joints, "joints")
+        if actuated is None:
+            return ScrewsymBasic.__new__(cls, *joints)
+        marker = Tuple(*check_actuated(actuated, len(joints)))
+        return ScrewsymBasic.__new__(cls, *joints, marker)
+
+    def _sympystr(self, printer: Any) -> str:
+        inner = ", ".join(printer._print(j) for j in self.joints)
+        if self.actuated:
+            act = self.actuated[0] if len(self.actuated) == 1 else self.actuated
+            inner += f", actuated={act}"
+        return f"Limb({inner})"
 
     @property
     def joints(self) -> tuple[Joint, ...]:
-        return self.args
+        """The joints, base to platform."""
+        args = self.args
+        return args[:-1] if args and isinstance(args[-1], Tuple) else args
+
+    @property
+    def actuated(self) -> tuple[int, ...]:
+        """The indices of the actuated joints (into :attr:`joints`); ``()`` if none.
+
+        >>> from screwsym.systems.mechanism import Limb
+        >>> from screwsym.systems.joints import R, P, S
+        >>> leg = Limb(R([1, 0, 0], [0, 1, 0]), P([0, 0, 1]), S([1, 0, 1]), actuated=1)
+        >>> leg.actuated, leg.func(*leg.args) == leg
+        ((1,), True)
+        >>> leg
+        Limb(Revolute(Matrix([
+        [1],
+        [0],
+        [0]]), Matrix([
+        [0],
+        [1],
+        [0]])), Prismatic(Matrix([
+        [0],
+        [0],
+        [1]])), Spherical(Matrix([
+        [1],
+        [0],
+        [1]])), actuated=1)
+        """
+        args = self.args
+        if args and isinstance(args[-1], Tuple):
+            return tuple(int(i) for i in args[-1])
+        return ()
 
     @property
     def freedom(self) -> int:
         """The number of joint variables, the sum of the joints' freedoms."""
-        return sum(j.freedom for j in self.args)
+        return sum(j.freedom for j in self.joints)
 
     @property
     def twists(self) -> ScrewSystem:
         """The limb's twist system: every joint's twists, base to platform."""
-        return ScrewSystem(*(t for j in self.args for t in j._twists()))
+        return ScrewSystem(*(t for j in self.joints for t in j._twists()))
 
     @property
     def constraints(self) -> ScrewSystem:
@@ -109,7 +179,12 @@ class Limb(ScrewsymBasic):
 
     @property
     def passive(self) -> int:
-        """Passive freedoms: ``freedom - rank`` of the twist system (generic)."""
+        """Idle motions here: ``freedom - rank`` of the twist system (generic in the symbols).
+
+        They are passive freedoms and, at a limb singularity, momentary internal
+        motions (:func:`~screwsym.systems.actuation.generic_limb_rank`,
+        :attr:`Mobility.internal`).
+        """
         return self.freedom - self.twists.rank
 
 
@@ -133,6 +208,9 @@ class Mobility(NamedTuple):
     translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
     #: the pitches of the helical freedoms (one per "H" of ``motion``), principal pitches
     helical_pitches: tuple = ()
+    #: momentary internal motions: idle motions of limbs at their own (serial) singularities,
+    #: counted in ``mobility`` (the mechanism keeps them) but not in ``twists``
+    internal: int = 0
 
     def __repr__(self) -> str:
         """A short summary; every field stays an attribute (``m.twists``, ``m.links``, ...).
@@ -144,14 +222,15 @@ class Mobility(NamedTuple):
         ...                   Limb(R([4, 0, 0], z), R([3, 3, 0], z))).mobility()
         Mobility(mobility=1, motion='1R', common=3, redundant=0, passive=0, classical=-2)
         """
+        extra = f", internal={self.internal}" if self.internal else ""
         return (f"Mobility(mobility={self.mobility}, motion={self.motion!r}, "
                 f"common={self.common}, redundant={self.redundant}, passive={self.passive}, "
-                f"classical={self.classical})")
+                f"classical={self.classical}{extra})")
 
-    def answer(self) -> tuple[int, int, int, int, int, int, str, tuple]:
+    def answer(self) -> tuple[int, int, int, int, int, int, str, tuple, int]:
         """The numbers of the analysis, without the twists: what two cases compare."""
         return (self.mobility, self.order, self.common, self.redundant, self.passive,
-                self.classical, self.motion, self.helical_pitches)
+                self.classical, self.motion, self.helical_pitches, self.internal)
 
     # a tuple compares its items with ==, and a SymPy matrix's == parses the strings inside
     # a tuple or dict: these compare without handing a string to SymPy (screwsym.core.basic)
@@ -415,6 +494,31 @@ class ParallelMechanism(ScrewsymBasic):
         """
         return _mobility(self)
 
+    def actuation_wrenches(self) -> tuple[Wrench, ...]:
+        """Per actuated joint, its actuation (transmission) wrench (Joshi & Tsai 2002).
+
+        See :func:`screwsym.systems.actuation.actuation_wrenches`.
+        """
+        return _actuation.actuation_wrenches(self)
+
+    def jacobian(self) -> tuple[ImmutableMatrix, ImmutableMatrix]:
+        """``(Jx, Jq)`` with ``Jx * t = Jq * qdot`` (see :func:`screwsym.systems.actuation.jacobian`)."""
+        return _actuation.jacobian(self)
+
+    def singularities(self) -> _actuation.Singularities:
+        """The limb, actuation and constraint singularities as conditions on the symbols.
+
+        See :func:`screwsym.systems.actuation.mechanism_singularities`.
+        """
+        return _actuation.mechanism_singularities(self)
+
+    def transmission(self) -> _actuation.Transmission:
+        """The input, output and local transmission indices (Wang et al. 2010).
+
+        See :func:`screwsym.systems.actuation.transmission`.
+        """
+        return _actuation.transmission(self)
+
     def mobility_cases(
         self, *, max_cases: int = MAX_CASES, budget: int = BUDGET, merge: bool = True
     ) -> list[tuple[Any, Mobility | Degenerate | None]]:
@@ -607,8 +711,8 @@ def _refine(conds: tuple[Any, ...], subs: dict[Any, Any] | None, system: ScrewSy
 def _mobility(mech: ParallelMechanism) -> Mobility:
     limbs = mech.args
     freedoms = sum(limb.freedom for limb in limbs)
-    g = sum(len(limb.args) for limb in limbs)
-    n = 2 + sum(len(limb.args) - 1 for limb in limbs)
+    g = sum(len(limb.joints) for limb in limbs)
+    n = 2 + sum(len(limb.joints) - 1 for limb in limbs)
     limb_twists = [limb.twists for limb in limbs]
     limb_ranks = [T.rank for T in limb_twists]
     all_twists = ScrewSystem(*(t for T in limb_twists for t in T), kind=Twist)
@@ -617,7 +721,13 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     W = mech.constraints
     union = W.rank
     redundant = sum(c - common for c in constraint_counts) - (union - common)
-    passive = freedoms - sum(limb_ranks)
+    # an idle motion of a limb (freedom - rank) is a passive freedom when the limb has it at
+    # every configuration (a S-S leg's spin), a momentary internal motion when only here
+    # (a leg at its own serial singularity): generic_limb_rank tells them apart
+    generic_ranks = [r if r == limb.freedom else generic_limb_rank(limb)
+                     for limb, r in zip(limbs, limb_ranks, strict=True)]
+    passive = freedoms - sum(generic_ranks)
+    internal = sum(generic_ranks) - sum(limb_ranks)
     order = 6 - common
     dof = order * (n - g - 1) + freedoms + redundant - passive
     twists = W.reciprocal()
@@ -639,5 +749,6 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
         rotation_directions=kinds.rotation_directions,
         translation_directions=kinds.translation_directions,
         helical_pitches=kinds.helical_pitches,
+        internal=internal,
     )
 

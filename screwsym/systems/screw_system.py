@@ -1093,6 +1093,8 @@ def _positive(p, R, depth: int = 0) -> bool:
     if len(involved) == 1:
         x = R.symbols[involved[0]]
         u = Poly(R.to_sympy(p), x)
+        if not _rational_domain(u):
+            return False  # count_roots counts over the rationals only (sqrt(3) x: not proved)
         return u.count_roots() == 0 and bool(u.nth(0) > 0)  # no root, positive at 0
     if depth >= 3:
         return False
@@ -1177,8 +1179,19 @@ def _points(f, R) -> tuple | None:
         return _circle_points(R.to_sympy(f), next(iter(angles)))
     if len(involved) == 1 and _solvable(involved[0], R):
         x = R.symbols[involved[0]]
+        if not _rational_domain(Poly(R.to_sympy(f), x)):
+            return None
         return _real_points(R.to_sympy(f), x)
     return None
+
+
+def _rational_domain(u: Poly) -> bool:
+    """Whether SymPy isolates the real roots of ``u``: integer or rational coefficients.
+
+    ``real_roots`` and ``count_roots`` refuse algebraic coefficients (``sqrt(3) x - 1``:
+    ``DomainError`` over ``EX``); such a condition stays undecided (``None``).
+    """
+    return u.domain.is_ZZ or u.domain.is_QQ
 
 
 @lru_cache(maxsize=1024)
@@ -1201,7 +1214,7 @@ def _admissible(x: Any, r: Any) -> bool:
 
 
 @lru_cache(maxsize=1024)
-def _circle_points(e: Any, q: Any) -> tuple:
+def _circle_points(e: Any, q: Any) -> tuple | None:
     """The points ``(sin q, cos q)`` of the unit circle where the polynomial ``e`` vanishes.
 
     ``e`` is in the ring symbols of ``sin(q)`` and ``cos(q)``.  Through
@@ -1214,6 +1227,8 @@ def _circle_points(e: Any, q: Any) -> tuple:
     num = fraction(cancel(e.xreplace({S: 2 * t / (1 + t**2), C: (1 - t**2) / (1 + t**2)})))[0]
     values: list = []
     if num.has(t):
+        if not _rational_domain(Poly(num, t)):
+            return None
         _charge(Poly(num, t).degree() ** 3)
         for r in Poly(num, t).real_roots():
             value = (radsimp(cancel(2 * r / (1 + r**2))), radsimp(cancel((1 - r**2) / (1 + r**2))))

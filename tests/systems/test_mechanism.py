@@ -461,7 +461,8 @@ def test_mobility_prints_as_a_short_summary_and_keeps_its_fields():
                           Limb(R([4, 0, 0], z), R([3, 3, 0], z))).mobility()
     assert repr(m) == ("Mobility(mobility=1, motion='1R', common=3, redundant=0, passive=0, "
                        "classical=-2)")
-    assert m.links == 4 and m.joints == 4 and m.twists.rank == 1 and len(m) == 16 and m.helical_pitches == ()
+    assert m.links == 4 and m.joints == 4 and m.twists.rank == 1 and len(m) == 17
+    assert m.helical_pitches == () and m.internal == 0
 
 
 def test_a_universal_joint_with_parallel_axes_is_refused():

@@ -1,0 +1,76 @@
+"""Actuated mechanisms for the tests and benchmarks of screwsym.systems.actuation."""
+
+from __future__ import annotations
+
+from sympy import Matrix, Rational, cancel, eye, sqrt, sympify
+
+from screwsym.systems.joints import P, R, S
+from screwsym.systems.mechanism import Limb, ParallelMechanism
+
+Z = [0, 0, 1]
+#: unit radial directions at 0, 120 and 240 degrees
+E = [Matrix([1, 0, 0]), Matrix([-Rational(1, 2), sqrt(3) / 2, 0]),
+     Matrix([-Rational(1, 2), -sqrt(3) / 2, 0])]
+
+
+def five_bar(p, a1=(0, 0), b1=(0, 1), a2=(3, 0), b2=(3, 1)):
+    """The planar five-bar A1-B1-P-B2-A2, cranks at A1 and A2 actuated; end point ``p``.
+
+    Each leg is R-R-R to the end point; a P-P leg (translations x, y) keeps the
+    end link from spinning, so the end point's two translations are the freedoms,
+    as in Wang et al. (2010), Section 4, and Liu, Wang & Pritschow (2006).
+    """
+    pt = [p[0], p[1], 0]
+    return ParallelMechanism(
+        Limb(R([*a1, 0], Z), R([*b1, 0], Z), R(pt, Z), actuated=0),
+        Limb(R([*a2, 0], Z), R([*b2, 0], Z), R(pt, Z), actuated=0),
+        Limb(P([1, 0, 0]), P([0, 1, 0])),
+    )
+
+
+def _rz(s):
+    s = sympify(s, strict=True)
+    c, n = (1 - s**2) / (1 + s**2), 2 * s / (1 + s**2)
+    return Matrix([[c, -n, 0], [n, c, 0], [0, 0, 1]])
+
+
+def three_rps_pose(p, q, z, rb=2, rp=1):
+    """Tsai's symmetric 3-RPS at a symbolic pose: a tilt and the height ``z``.
+
+    The platform turns about the horizontal axis ``(p, q, 0)`` by ``2 atan(|(p, q)|)``
+    (the Cayley form, rational: the rotations ``Rz(phi) Ry(theta) Rz(-phi)`` of the
+    3-RPS), and the parasitic translation ``(c_x, c_y)`` that keeps every sphere
+    centre in its leg's plane (Tsai 1999, Sec. 3.5; Huang, Li & Ding 2013, Ch. 5) is
+    ``rp (p^2 - q^2, -2 p q) / (1 + p^2 + q^2)``, solved in closed form and checked in
+    the tests.  Base radius ``rb``, platform radius ``rp``; the P joints actuated.
+    """
+    K = Matrix([[0, 0, q], [0, 0, -p], [-q, p, 0]])
+    den = 1 + p**2 + q**2
+    Rm = (eye(3) + 2 / den * (K + K * K)).applyfunc(cancel)
+    c = Matrix([cancel(rp * (p**2 - q**2) / den), cancel(-2 * rp * p * q / den), z])
+    legs = []
+    for e in E:
+        b = rb * e
+        u = Matrix([-e[1], e[0], 0])
+        top = (Rm * (rp * e) + c).applyfunc(cancel)
+        legs.append(Limb(R(b, u), P(top - b), S(top), actuated=1))
+    return ParallelMechanism(*legs)
+
+
+def gough_stewart_33(tau, h=1, rb=2, rp=1):
+    """A 3-3 Gough-Stewart (octahedral) platform turned about the vertical axis by
+    ``theta = 2 atan(tau)`` from the position where its triangle is opposite the base's.
+
+    Base vertices at radius ``rb`` (0, 120, 240 degrees), platform vertices at radius
+    ``rp`` (60, 180, 300 degrees before the turn), height ``h``; each base vertex
+    is joined to its two neighbouring platform vertices by S-P-S legs (P actuated).
+    """
+    Rm = _rz(tau).applyfunc(cancel)
+    base = [rb * e for e in E]
+    top = [(Rm * (-rp * e) + Matrix([0, 0, h])).applyfunc(cancel) for e in E]
+    legs = []
+    for i in range(3):
+        for j in ((i + 1) % 3, (i + 2) % 3):
+            b, p = base[i], top[j]
+            legs.append(Limb(S(b), P(p - b), S(p), actuated=1))
+    return ParallelMechanism(*legs)

@@ -1,0 +1,83 @@
+"""Batched transmission indices and Jacobians (screwsym.numeric.transmission), issue 18 item 5.
+
+The five-bar's indices are |sin| of the angles between its links (Wang, Wu & Liu 2010, Sec. 4;
+Liu, Wang & Pritschow 2006); here the batched function is checked against the exact one at
+points, for its input forms and its refusals.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from sympy import Rational, Symbol, symbols
+
+from screwsym.numeric.transmission import jacobian_map, transmission_map
+from tests._actuated import five_bar
+
+x, y = symbols("x y", real=True)
+
+
+@pytest.fixture(scope="module")
+def mech():
+    return five_bar((x, y))
+
+
+@pytest.fixture(scope="module")
+def fn(mech):
+    return transmission_map(mech, [x, y])
+
+
+def test_batched_indices_equal_the_exact_ones(mech, fn):
+    pts = [(Rational(1, 2), 2), (2, Rational(5, 2)), (Rational(3, 2), Rational(5, 2))]
+    out = fn(np.array(pts, dtype=float))
+    tr = mech.transmission()
+    for n, (px, py) in enumerate(pts):
+        tr_n = [[float(v.xreplace({x: px, y: py})) for v in vals] for vals in tr[:2]]
+        assert np.allclose(out.input[:, n], tr_n[0])
+        assert np.allclose(out.output[:, n], tr_n[1])
+    for n, (px, py) in enumerate(pts[:1]):  # and the mechanism built at the point itself
+        tr = mech.xreplace({x: px, y: py}).transmission()
+        assert np.allclose(out.input[:, n], [float(v) for v in tr.input])
+        assert np.allclose(out.output[:, n], [float(v) for v in tr.output])
+        assert np.isclose(out.local[n], float(tr.local))
+    # at (3/2, 5/2) the distal links meet at a right angle (Wang et al.: eta = 1) and make
+    # 45 degrees with the cranks (lambda = sin 45); the checker rejects lambda = 1 there
+    assert np.allclose(out.output[:, 2], 1) and np.allclose(out.input[:, 2], np.sqrt(0.5))
+    assert not np.allclose(out.input[:, 2], 1)
+
+
+def test_columns_or_arrays_and_batch_shape(fn):
+    cfg = np.array([[0.5, 2.0], [2.0, 2.5], [1.0, 3.0]])
+    a, b = fn(cfg), fn(cfg[:, 0], cfg[:, 1])
+    assert a.local.shape == (3,) and a.input.shape == (2, 3)
+    assert np.array_equal(a.local, b.local)
+    # a singular configuration (y = 1: type II) gives eta = 0, not an error
+    assert fn(np.array([[1.0, 1.0]])).output[0, 0] == 0
+
+
+def test_jacobian_map_matches_the_exact_jacobian(mech):
+    # the mechanism built at the point has its own (primitive) scale of each actuation
+    # wrench: each row of Jx and of Jq is the same multiple of the batched one, and the
+    # constraint rows span the same space
+    Jx, Jq = jacobian_map(mech, [x, y])(np.array([[0.5, 2.0]]))
+    ex, eq = mech.xreplace({x: Rational(1, 2), y: 2}).jacobian()
+    ex, eq = np.array(ex, dtype=float), np.array(eq, dtype=float)
+    for i in range(2):
+        k = eq[i, i] / Jq[0, i, i]
+        assert np.allclose(ex[i], k * Jx[0, i]) and np.allclose(eq[i], k * Jq[0, i])
+    assert np.linalg.matrix_rank(np.vstack([ex[2:], Jx[0, 2:]])) == 4
+    assert not np.allclose(ex[0], Jx[0, 1])  # the checker tells the rows apart
+
+
+def test_refusals(mech, fn):
+    with pytest.raises(TypeError, match="symbols"):
+        transmission_map(mech, ["x", "y"])
+    with pytest.raises(TypeError, match="mech: expected a ParallelMechanism"):
+        transmission_map("five-bar", [x, y])
+    with pytest.raises(ValueError, match="symbols: the indices also depend on"):
+        transmission_map(mech, [x])
+    with pytest.raises(ValueError, match=r"configurations: expected an array of shape \(N, 2\)"):
+        fn(np.zeros((4, 3)))
+    with pytest.raises(ValueError, match="configurations: expected one"):
+        fn(np.zeros(4), np.zeros(4), np.zeros(4))
+    assert isinstance(Symbol("t"), Symbol)
