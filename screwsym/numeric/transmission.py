@@ -8,12 +8,14 @@ vectorised function of those symbols' values, generated once with
 ``(Jx, Jq)``.  The functions work elementwise along the batch: they take a
 ``(N, k)`` array of configurations (column ``j`` the values of
 ``symbols[j]``), or ``k`` arrays of one shape, and return arrays of shape
-``(N,)`` (of the batch shape), so a chunked array library can apply them
-chunk by chunk unchanged.
+``(N,)`` (of the batch shape).  The transmission maps also take Dask arrays
+(``pip install "screwsym[dask]"``) and return lazy Dask arrays computed chunk
+by chunk, on any scheduler (``screwsym.numeric._chunks``).
 """
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Sequence
 from typing import Any, NamedTuple
 
@@ -22,6 +24,7 @@ from sympy import Symbol
 
 from ..codegen import lambdify
 from ..systems.mechanism import ParallelMechanism
+from ._chunks import batched, is_dask
 
 __all__ = ["TransmissionMap", "transmission_map", "jacobian_map"]
 
@@ -94,18 +97,56 @@ def transmission_map(mech: ParallelMechanism, symbols: Any, *,
         raise ValueError(f"symbols: the indices also depend on {sorted(map(str, extra))}; "
                          "give them values (xreplace) or list them")
     fn = lambdify(syms, exprs, backend, name="transmission_indices")
+    k = len(syms)
 
-    def indices(*configurations: Any) -> TransmissionMap:
-        cols = _columns(configurations, len(syms))
+    def numpy_indices(*configurations: Any) -> TransmissionMap:
+        cols = _columns(configurations, k)
         values = fn(*cols)
-        arr = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in values))
+        shape = np.broadcast_shapes(*(c.shape for c in cols))
+        arr = [np.broadcast_to(np.asarray(v, dtype=float), shape) for v in values]
         lam = np.stack(arr[:n])
         eta = np.stack(arr[n:])
         local = np.minimum(lam.min(axis=0), eta.min(axis=0))
         return TransmissionMap(lam, eta, local)
 
+    recipe = (mech, tuple(syms), backend)
+    if len(_MADE) >= 64:  # a bounded memory of recent maps
+        _MADE.pop(next(iter(_MADE)))
+    _MADE[recipe] = numpy_indices
+    # for Dask: a picklable recipe (the generated code is not), rebuilt once per worker
+    chunk = functools.partial(_chunk, recipe)
+
+    def indices(*configurations: Any) -> TransmissionMap:
+        if not any(is_dask(c) for c in configurations):
+            return numpy_indices(*configurations)
+        one = len(configurations) == 1 and (k > 1 or np.ndim(configurations[0]) == 2)
+        trailing = [(k,)] if one else [()] * len(configurations)
+        if not one and len(configurations) != k:
+            raise ValueError(f"configurations: expected one (N, {k}) array or {k} arrays, "
+                             f"got {len(configurations)} arrays")
+        lam, eta, local = batched(chunk, configurations, trailing,
+                                  [((n,), float), ((n,), float), ((), float)])
+        first = (lam.ndim - 1, *range(lam.ndim - 1))  # the joints' axis first, as NumPy's
+        return TransmissionMap(lam.transpose(first), eta.transpose(first), local)
+
     indices.__doc__ = f"Transmission indices of a mechanism at configurations of {syms}."
     return indices
+
+
+#: the NumPy functions of the maps made in this process, by their recipe (a Dask worker
+#: that receives a recipe it has not seen makes the map once, then finds it here)
+_MADE: dict[tuple, Callable[..., TransmissionMap]] = {}
+
+
+def _chunk(recipe: tuple, *blocks: np.ndarray) -> tuple:
+    """One chunk of a Dask map: ``recipe`` is ``(mechanism, symbols, backend)``."""
+    fn = _MADE.get(recipe)
+    if fn is None:
+        mech, syms, backend = recipe
+        transmission_map(mech, list(syms), backend=backend)
+        fn = _MADE[recipe]
+    lam, eta, local = fn(*blocks)
+    return np.moveaxis(lam, 0, -1), np.moveaxis(eta, 0, -1), local
 
 
 def jacobian_map(mech: ParallelMechanism, symbols: Any, *,

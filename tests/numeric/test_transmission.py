@@ -81,3 +81,22 @@ def test_refusals(mech, fn):
     with pytest.raises(ValueError, match="configurations: expected one"):
         fn(np.zeros(4), np.zeros(4), np.zeros(4))
     assert isinstance(Symbol("t"), Symbol)
+
+
+def test_a_dask_transmission_map_runs_chunk_by_chunk_and_agrees_with_numpy(fn):
+    """Issue 18 item 7: Dask arrays in, lazy Dask arrays out, equal to the NumPy map."""
+    da = pytest.importorskip("dask.array")
+    rng = np.random.default_rng(7)
+    grid = np.column_stack([rng.uniform(0.2, 2.8, 50), rng.uniform(1.5, 3.5, 50)])
+    want = fn(grid)
+    for args in ((da.from_array(grid, chunks=(16, 2)),),
+                 (da.from_array(grid[:, 0], chunks=16), da.from_array(grid[:, 1], chunks=16))):
+        got = fn(*args)
+        assert isinstance(got.local, da.Array) and got.local.numblocks == (4,)
+        assert got.input.shape == want.input.shape
+        np.testing.assert_array_equal(got.input.compute(), want.input)
+        np.testing.assert_array_equal(got.output.compute(), want.output)
+        np.testing.assert_array_equal(got.local.compute(), want.local)
+    # the check sees a wrong map: another chunk's rows in the place of these
+    shifted = fn(da.from_array(np.roll(grid, 1, axis=0), chunks=(16, 2)))
+    assert not np.array_equal(shifted.local.compute(), want.local)
