@@ -53,13 +53,16 @@ from sympy import (
     Ne,
     Or,
     Poly,
+    Pow,
     Symbol,
     cancel,
     cos,
     expand_trig,
     factor_list,
     fraction,
+    minimal_polynomial,
     radsimp,
+    resultant,
     sin,
     sqrt,
     true,
@@ -1094,7 +1097,10 @@ def _positive(p, R, depth: int = 0) -> bool:
         x = R.symbols[involved[0]]
         u = Poly(R.to_sympy(p), x)
         if not _rational_domain(u):
-            return False  # count_roots counts over the rationals only (sqrt(3) x: not proved)
+            # count_roots counts over the rationals only: a polynomial over them whose roots
+            # include u's (its norm) without a real root proves u of one sign
+            n = _rational_norm(u.as_expr(), x)
+            return n is not None and n.count_roots() == 0 and u.nth(0).is_positive is True
         return u.count_roots() == 0 and bool(u.nth(0) > 0)  # no root, positive at 0
     if depth >= 3:
         return False
@@ -1180,7 +1186,8 @@ def _points(f, R) -> tuple | None:
     if len(involved) == 1 and _solvable(involved[0], R):
         x = R.symbols[involved[0]]
         if not _rational_domain(Poly(R.to_sympy(f), x)):
-            return None
+            n = _rational_norm(R.to_sympy(f), x)
+            return () if n is not None and n.count_roots() == 0 else None
         return _real_points(R.to_sympy(f), x)
     return None
 
@@ -1192,6 +1199,26 @@ def _rational_domain(u: Poly) -> bool:
     ``DomainError`` over ``EX``); such a condition stays undecided (``None``).
     """
     return u.domain.is_ZZ or u.domain.is_QQ
+
+
+def _rational_norm(e: Any, x: Any) -> Poly | None:
+    """A non-zero polynomial in ``x`` over the rationals whose roots include those of ``e``.
+
+    ``e`` is a polynomial in ``x`` whose coefficients hold square roots (or other
+    radicals) of rationals: each radical ``a`` becomes a symbol ``y`` and is
+    eliminated by the resultant with its minimal polynomial, the product of ``e``
+    over the conjugates of ``a``, which vanishes wherever ``e`` does.  None where
+    no such polynomial is found (other algebraic coefficients).
+    """
+    radicals = sorted((a for a in e.atoms(Pow)
+                       if a.base.is_Rational and a.exp.is_Rational and not a.exp.is_Integer),
+                      key=str)
+    for a in radicals:
+        y = Dummy("y")
+        _charge(Poly(e, x).degree() ** 3)
+        e = resultant(e.xreplace({a: y}).expand(), minimal_polynomial(a, y), y)
+    u = Poly(e, x)
+    return u if _rational_domain(u) and not u.is_zero else None
 
 
 @lru_cache(maxsize=1024)
@@ -1226,9 +1253,18 @@ def _circle_points(e: Any, q: Any) -> tuple | None:
     t = Dummy("t", real=True)
     num = fraction(cancel(e.xreplace({S: 2 * t / (1 + t**2), C: (1 - t**2) / (1 + t**2)})))[0]
     values: list = []
-    if num.has(t):
-        if not _rational_domain(Poly(num, t)):
+    if num.has(t) and not _rational_domain(Poly(num, t)):
+        # radical coefficients: decided only where the circle has no point but q = pi
+        n = _rational_norm(num, t)
+        if n is None or n.count_roots() != 0:
             return None
+        at_pi = radsimp(e.xreplace({S: 0, C: -1}))
+        if at_pi.is_zero is None:
+            return None
+        values = [(Integer(0), Integer(-1))] if at_pi.is_zero else []
+        return tuple((((sin(q), s), (cos(q), c)), And(Eq(sin(q), s), Eq(cos(q), c)))
+                     for s, c in values)
+    if num.has(t):
         _charge(Poly(num, t).degree() ** 3)
         for r in Poly(num, t).real_roots():
             value = (radsimp(cancel(2 * r / (1 + r**2))), radsimp(cancel((1 - r**2) / (1 + r**2))))

@@ -70,11 +70,11 @@ def turned():
 def test_three_upu_turned_is_decided_at_the_roots_of_a_quadratic(turned):
     # Constraint singularity of the 3-UPU (Zlatanov, Bonev & Gosselin, "Constraint
     # singularities of parallel mechanisms", ICRA 2002): where the three constraint couples
-    # become dependent the platform gains a rotation, 4 freedoms (1R3T) instead of 3T.  With
+    # become dependent the platform gains a rotation, 4 freedoms (3T1R) instead of 3T.  With
     # the third platform joint turned by theta, tau = tan(theta/2), the couples' determinant
     # is a multiple of 25 tau**2 - 44 tau + 3: singular at tau = (22 +- sqrt(409))/25.
     tau, mech, cases = turned
-    assert [(m.mobility, m.motion) for _, m in cases] == [(3, "3T"), (4, "1R3T")]
+    assert [(m.mobility, m.motion) for _, m in cases] == [(3, "3T"), (4, "3T1R")]
     roots = [Rational(22, 25) - sqrt(409) / 25, Rational(22, 25) + sqrt(409) / 25]
     assert cases[1][0].has(Or(*(Eq(tau, r) for r in roots)))
     # independently: the couples' rank, exactly, at the roots and beside them
@@ -233,3 +233,17 @@ def test_roots_that_the_assumptions_refute_are_no_case():
     assert W.rank_conditions() == [(Ne(h**2 - 2, 0), 2), (Eq(h, sqrt(2)), 1)]
     W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[t**2 - 2, 0, 0]))
     assert W.rank_conditions() == [(Ne(t**2 - 2, 0), 2), (Eq(t, -sqrt(2)), 1), (Eq(t, sqrt(2)), 1)]
+
+
+def test_a_condition_with_surd_coefficients_and_no_real_root_is_dropped():
+    # t**2 + sqrt(3) t + 1 has discriminant 3 - 4 < 0: its norm over the rationals,
+    # (t**2 + 1)**2 - 3 t**2 = t**4 - t**2 + 1, has no real root, so no real t makes the
+    # first twist vanish; t**2 + sqrt(3) t - 1 has real roots and keeps its case
+    t = symbols("t", real=True)
+
+    def cases(f):
+        return ScrewSystem(Twist([f, 0, 0], [0, 0, 0]), Twist([0, 1, 0], [0, 0, 0])).rank_conditions()
+
+    assert cases(t**2 + sqrt(3) * t + 1) == [(true, 2)]
+    real = cases(t**2 + sqrt(3) * t - 1)
+    assert len(real) == 2 and real[1][0] == Eq(t**2 + sqrt(3) * t - 1, 0)
