@@ -13,9 +13,8 @@ after ``--cap`` seconds; the numeric maps the best of ``--repeat``):
    rotation ``Rz(phi) Ry(theta) Rz(-phi)`` in rational form, the parasitic
    translation in closed form) -- target under 10 s;
 2. ``singularities()`` of a 3-3 Gough-Stewart (octahedral) platform turned
-   about its vertical axis by ``theta = 2 atan(tau)`` (rational: screwsym's
-   screw systems take sin/cos entries only once issue 18 item 1 lands) --
-   target under 10 s;
+   about its vertical axis by ``theta = 2 atan(tau)`` (rational) and by ``theta``
+   written with ``cos(theta)``, ``sin(theta)`` -- target under 10 s;
    and, for comparison, the 3-RPS with three symbolic leg heights (not a rigid
    pose: the platform's size changes with them);
 3. the transmission map (input, output, local index) of the planar five-bar
@@ -39,24 +38,10 @@ from sympy import symbols
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
+from bench_systems import best  # noqa: E402  (the script beside this one; clears the caches)
+
 from screwsym.numeric.transmission import transmission_map  # noqa: E402
-from screwsym.systems import screw_system as _system  # noqa: E402
 from tests._actuated import five_bar, gough_stewart_33, three_rps_pose  # noqa: E402
-
-
-def clear() -> None:
-    for f in (_system._analysis, _system._cases, _system._top):
-        f.cache_clear()
-
-
-def best(fn, repeat: int, clear=clear) -> tuple[float, object]:
-    times, out = [], None
-    for _ in range(repeat):
-        clear()
-        t = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t)
-    return min(times), out
 
 
 def hand_five_bar(cfg: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -99,6 +84,8 @@ def _symbolic_case(name: str, queue) -> None:
         hs = symbols("h1:4", real=True)
         mech = ParallelMechanism(*(Limb(*rps_leg(i, Rational(-1, 2), h).joints, actuated=1)
                                    for i, h in enumerate(hs)))
+    elif name == "gs33trig":
+        mech = gough_stewart_33(symbols("theta", real=True), trig=True)
     else:
         mech = gough_stewart_33(symbols("tau", real=True))
     del E
@@ -135,7 +122,8 @@ def main() -> None:
 
     for label, build in (("3-RPS singularities(), pose (p, q, z)", "rps_pose"),
                          ("3-RPS singularities(), leg heights (h1, h2, h3)", "rps_heights"),
-                         ("3-3 Gough-Stewart singularities(), tau", "gs33")):
+                         ("3-3 Gough-Stewart singularities(), tau", "gs33"),
+                         ("3-3 Gough-Stewart singularities(), cos/sin theta", "gs33trig")):
         rows.append(capped(label, build, args.cap))
     syms = symbols("b1x b1y b2x b2y px py", real=True)
     mech = five_bar((syms[4], syms[5]), b1=syms[0:2], b2=syms[2:4])

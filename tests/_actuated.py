@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from sympy import Matrix, Rational, cancel, eye, sqrt, sympify
+from sympy import Matrix, Rational, cancel, cos, eye, sin, sqrt, sympify
 
 from screwsym.systems.joints import P, R, S
 from screwsym.systems.mechanism import Limb, ParallelMechanism
@@ -57,15 +57,20 @@ def three_rps_pose(p, q, z, rb=2, rp=1):
     return ParallelMechanism(*legs)
 
 
-def gough_stewart_33(tau, h=1, rb=2, rp=1):
+def gough_stewart_33(tau, h=1, rb=2, rp=1, trig=False):
     """A 3-3 Gough-Stewart (octahedral) platform turned about the vertical axis by
-    ``theta = 2 atan(tau)`` from the position where its triangle is opposite the base's.
+    ``theta = 2 atan(tau)`` from the position where its triangle is opposite the base's
+    (``trig=True``: by the angle ``tau`` itself, the turn written with its cos and sin).
 
     Base vertices at radius ``rb`` (0, 120, 240 degrees), platform vertices at radius
     ``rp`` (60, 180, 300 degrees before the turn), height ``h``; each base vertex
     is joined to its two neighbouring platform vertices by S-P-S legs (P actuated).
     """
-    Rm = _rz(tau).applyfunc(cancel)
+    if trig:
+        c, n = cos(tau), sin(tau)
+        Rm = Matrix([[c, -n, 0], [n, c, 0], [0, 0, 1]])
+    else:
+        Rm = _rz(tau).applyfunc(cancel)
     base = [rb * e for e in E]
     top = [(Rm * (-rp * e) + Matrix([0, 0, h])).applyfunc(cancel) for e in E]
     legs = []

@@ -865,6 +865,31 @@ def _cramer(B, rows, cols, R, m=None, width: int = 6) -> list:
     return vectors
 
 
+def _proved_at(B: list, R: Any, seed: int, skip_zero: bool) -> _Analysis | None:
+    """The rank found at the seeded rational point and proved for every value; None if not.
+
+    The independent members and the minor are those of the point; the rank is
+    proved when the vectors of Cramer's rule on that minor are reciprocal to
+    every member identically.  ``skip_zero``: a point where every entry vanishes
+    proves nothing (None) instead of being tried as rank 0.
+    """
+    K = R.domain
+    point = _sample_point(R, random.Random(seed))
+    B0 = DomainMatrix([[b(*point) if b else K.zero for b in row] for row in B], (len(B), 6), K)
+    _, rows = B0.transpose().rref()
+    if not rows and skip_zero:
+        return None
+    _, cols = B0.extract(list(rows), list(range(6))).rref() if rows else (None, ())
+    if all(
+        not _reduce(sum((b * x for b, x in zip(B[i], v, strict=True)), R.zero), R)
+        for v in _cramer(B, rows, cols, R)
+        for i in range(len(B))
+        if i not in rows
+    ):
+        return _Analysis(len(rows), tuple(rows), tuple(cols))
+    return None
+
+
 @lru_cache(maxsize=512)
 def _analysis(M: ImmutableMatrix) -> _Analysis:
     """The generic rank, the first independent members and a minor that proves the rank.
@@ -880,37 +905,16 @@ def _analysis(M: ImmutableMatrix) -> _Analysis:
         return _Analysis(0, (), ())
     rg = _to_ring(M)
     R = rg.ring
-    K = R.domain
     B = [_swap(c) for c in rg.cols]
     for seed in _SEEDS:
-        point = _sample_point(R, random.Random(seed))
-        B0 = DomainMatrix([[b(*point) if b else K.zero for b in row] for row in B],
-                          (len(B), 6), K)
-        _, rows = B0.transpose().rref()
-        if not rows:
-            continue
-        _, cols = B0.extract(list(rows), list(range(6))).rref()
-        if all(
-            not _reduce(sum((b * x for b, x in zip(B[i], v, strict=True)), R.zero), R)
-            for v in _cramer(B, rows, cols, R)
-            for i in range(len(B))
-            if i not in rows
-        ):
-            return _Analysis(len(rows), tuple(rows), tuple(cols))
+        found = _proved_at(B, R, seed, skip_zero=True)
+        if found is not None:
+            return found
     if _relations(R):  # pragma: no cover - unlucky points on the circle: more of them
         for seed in range(len(_SEEDS) + 1, 64):
-            point = _sample_point(R, random.Random(seed))
-            B0 = DomainMatrix([[b(*point) if b else K.zero for b in row] for row in B],
-                              (len(B), 6), K)
-            _, rows = B0.transpose().rref()
-            _, cols = B0.extract(list(rows), list(range(6))).rref() if rows else (None, ())
-            if all(
-                not _reduce(sum((b * x for b, x in zip(B[i], v, strict=True)), R.zero), R)
-                for v in _cramer(B, rows, cols, R)
-                for i in range(len(B))
-                if i not in rows
-            ):
-                return _Analysis(len(rows), tuple(rows), tuple(cols))
+            found = _proved_at(B, R, seed, skip_zero=False)
+            if found is not None:
+                return found
         raise RuntimeError("rank: no point on the circle proved the rank")  # pragma: no cover
     A = _dm([[c[i] for c in rg.cols] for i in range(6)], R)  # pragma: no cover - unlucky points
     _, _, pivots = A.rref_den()  # pragma: no cover

@@ -262,23 +262,16 @@ def test_octahedral_gough_stewart_turned_by_sin_and_cos_is_singular_at_a_quarter
     # the same platform (Merlet 1989) turned by theta written with cos(theta), sin(theta):
     # type II exactly at theta = +-90 degrees, and no limb or constraint singularity (the
     # legs' conditions sqrt(3) sin(theta) +- cos(theta) = 3 have no real solution: dropped)
-    from sympy import And, Matrix, cos, sin
+    from sympy import And, pi
 
-    from tests import _actuated
+    from tests._actuated import gough_stewart_33
 
     theta = symbols("theta", real=True)
-    turn = Matrix([[cos(theta), -sin(theta), 0], [sin(theta), cos(theta), 0], [0, 0, 1]])
-    original = _actuated._rz
-    _actuated._rz = lambda _: turn
-    try:
-        s = _actuated.gough_stewart_33(theta).singularities()
-    finally:
-        _actuated._rz = original
+    s = gough_stewart_33(theta, trig=True).singularities()
     assert s.limb == [] and s.constraint == []
     ((cond, rank),) = s.actuation
     assert rank == 5
     # the condition holds at theta = +-pi/2 and nowhere else on a grid of the circle
-    from sympy import pi
     for k in range(24):
         at = k * pi / 12
         holds = bool(cond.subs(theta, at))
