@@ -385,15 +385,17 @@ def motion_of(twists: ScrewSystem) -> MotionType:
 def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple:
     """The pitches of the helical freedoms of ``twists`` (translations ``moves``): see motion_of."""
     from sympy import Dummy, Poly, roots
-    system = twists
-    if moves.cols and any(cancel(e) != 0 for e in moves.T * twists.matrix[:3, :]):
-        # the twists whose omega is orthogonal to every translation: reciprocal to the
-        # couples along them (a twist (w; v) and a couple (0; d) have product w . d)
-        couples = ScrewSystem(*(Wrench([0, 0, 0], moves.col(j)) for j in range(moves.cols)))
-        system = (twists.reciprocal() | couples).reciprocal()
-        if not len(system):
+    X = twists.matrix
+    C = (moves.T * X[:3, :]).applyfunc(cancel) if moves.cols else None
+    if C is not None and any(e != 0 for e in C):
+        # the twists whose omega is orthogonal to every translation (reciprocal to the
+        # couples along them: a twist (w; v) and a couple (0; d) have product w . d): the
+        # combinations X a of the system's twists with C a = 0, generic in the symbols as the
+        # ranks are (a small null space, not the reciprocal of a reciprocal system)
+        basis = C.nullspace(simplify=cancel)
+        if not basis:
             return ()
-    X = system.matrix
+        X = ImmutableMatrix.hstack(*(X * v for v in basis)).applyfunc(cancel)
     spin = _analysis(ImmutableMatrix.vstack(X[:3, :], ImmutableMatrix.zeros(3, X.cols)))
     X = X.extract(list(range(6)), list(spin.pivots))  # one twist per rotation, modulo moves
     k = X.cols
