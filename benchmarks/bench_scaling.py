@@ -39,7 +39,7 @@ from collections.abc import Callable
 from typing import Any
 
 import sympy
-from sympy import Rational, count_ops, pi, sqrt, symbols
+from sympy import count_ops, pi, symbols
 from sympy.core.cache import clear_cache
 
 from screwsym import Chain
@@ -200,34 +200,16 @@ def print_rows(rows: list) -> None:
 
 
 # ---------------------------------------------------------------- many-symbol mobility (item 3)
-E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
-
-
-def three_rps(n_symbols: int):
-    """The 3-RPS of bench_systems with 9 (rho_i, h_i, base radii r_i) or 12 (and base heights z_i)."""
-    from screwsym.systems.joints import P, R, S
-    from screwsym.systems.mechanism import Limb, ParallelMechanism
-
-    rho = symbols("rho1:4", real=True)
-    h = symbols("h1:4", positive=True)
-    r = symbols("r1:4", positive=True)
-    z = symbols("z1:4", real=True) if n_symbols >= 12 else (0, 0, 0)
-    legs = []
-    for i, e in enumerate(E):
-        b = [r[i] * e[0], r[i] * e[1], z[i]]
-        d = [rho[i] * e[0], rho[i] * e[1], h[i]]
-        top = [x + y for x, y in zip(b, d, strict=True)]
-        legs.append(Limb(R(b, [-e[1], e[0], 0]), P(d), S(top)))
-    return ParallelMechanism(*legs)
-
-
 def mobility_rows() -> None:
+    sys.path.insert(0, str(HERE))
+    from bench_systems import many_rps  # the 3-RPS of bench_systems, the script beside this one
+
     from screwsym.systems import screw_system as _system
 
     print("\n| 3-RPS, symbolic parameters | mobility() (s) | mobility_cases() (s) | cases |")
     print("|---|---|---|---|")
     for n in (9, 12):
-        mech = three_rps(n)
+        mech, _ = many_rps(n)
         for f in (_system._analysis, _system._cases, _system._top):
             f.cache_clear()
         t1, m = timed(mech.mobility)
