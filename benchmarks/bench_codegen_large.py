@@ -1,8 +1,10 @@
 """Large closed forms and a new process's first call (issue 23 items 4 and 5).
 
 (C) ``screwsym.lambdify`` of a closed form of about 120,000 operations (a sum of 20,000
-monomials ``k x^a y^b z``, the shape of an expanded inverse dynamics) and of a tree
-3,000 levels deep, on each back end, beside plain ``sympy.lambdify(..., cse=True)``;
+monomials ``k x^a y^b z``, the shape of an expanded inverse dynamics), of the real one
+(the UR5's joint-4 torque, ``tests/_dynamics.py::ur5_torque_expanded``: 7,242 terms,
+127,137 operations, in 18 variables) and of a tree 3,000 levels deep, on each back end,
+beside plain ``sympy.lambdify(..., cse=True)``;
 (D) in new processes: ``import sympy``, ``import screwsym``, and the first batch call
 of ``screwsym.numeric.pitch`` with the disk cache warm (default back end, and with
 numba imported first), beside a plain ``sympy.lambdify`` of the same formula.
@@ -24,7 +26,7 @@ import textwrap
 import time
 
 import numpy as np
-from sympy import Add, Integer, cos, count_ops, sin, symbols
+from sympy import Add, ImmutableMatrix, Integer, cos, count_ops, sin, symbols
 from sympy import lambdify as sympy_lambdify
 
 from screwsym.codegen import lambdify
@@ -43,27 +45,50 @@ def deep(n: int):
     return e
 
 
-def timed(make):
+XYZ = (np.array([0.3, 0.4]), np.array([0.9, 0.8]), np.array([1.0, 2.0]))
+
+
+def ur5():
+    """The UR5's joint-4 torque, its 18 joint values as three 6-vectors, sample inputs."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests"))
+    from _dynamics import ur5_torque_expanded
+
+    e, qs = ur5_torque_expanded(3)
+    return e, [ImmutableMatrix(v) for v in qs], tuple(
+        np.random.default_rng(0).uniform(-3, 3, size=(3, 2, 6)))
+
+
+def timed(make, inputs):
     t = time.perf_counter()
     try:
         f = make()
-        f(np.array([0.3, 0.4]), np.array([0.9, 0.8]), np.array([1.0, 2.0]))
+        f(*inputs)
         return f"{time.perf_counter() - t:.2f} s"
     except RecursionError:
         return f"RecursionError ({time.perf_counter() - t:.2f} s)"
 
 
+def _plain(e, args):
+    """Plain ``sympy.lambdify`` with the same call: matrix arguments as (N, k) arrays."""
+    scalars = [list(a) if hasattr(a, "shape") else [a] for a in args]
+    f = sympy_lambdify([s for group in scalars for s in group], e, "numpy", cse=True)
+    return lambda *arrays: f(*(a[..., i] if a.ndim > 1 else a for a, g in zip(arrays, scalars, strict=True)
+                               for i in range(len(g))))
+
+
 def part_c(terms: int, depth: int, backends: list[str]) -> None:
     rows = []
-    for label, build in (("wide", lambda: wide(terms)), ("deep", lambda: deep(depth))):
+    for label, build in (("wide", lambda: (wide(terms), [x, y, z], XYZ)),
+                         ("UR5 joint-4 torque, expanded", ur5),
+                         ("deep", lambda: (deep(depth), [x, y, z], XYZ))):
         t = time.perf_counter()
-        e = build()
+        e, args, inputs = build()
         made = time.perf_counter() - t
-        ops = count_ops(e) if label == "wide" else f"depth {depth}"
-        row = [f"{label} ({ops} ops)" if label == "wide" else f"deep ({ops})", f"{made:.2f} s"]
+        ops = f"depth {depth}" if label == "deep" else f"{count_ops(e):,} ops"
+        row = [f"{label} ({ops})", f"{made:.2f} s"]
         for b in backends:
-            row.append(timed(lambda b=b, e=e: lambdify([x, y, z], e, backend=b)))
-        row.append(timed(lambda e=e: sympy_lambdify([x, y, z], e, "numpy", cse=True)))
+            row.append(timed(lambda b=b, e=e, a=args: lambdify(a, e, backend=b), inputs))
+        row.append(timed(lambda e=e, a=args: _plain(e, a), inputs))
         rows.append(row)
     head = ["expression", "build (SymPy)", *[f"screwsym {b}" for b in backends],
             "sympy.lambdify cse=True"]

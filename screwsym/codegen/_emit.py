@@ -242,6 +242,64 @@ def c_wrapper_source(plan: Plan) -> str:
     return "\n".join(_header(plan, "c") + _wrapper(plan, body, True)) + "\n"
 
 
+#: plans whose assignments print to more characters than this are written for C as a chain
+#: of functions of about this size each (below)
+C_CHUNK = 20_000
+
+
+def _c_chunks(plan: Plan, cname: str, printer: CPrinter,
+              codes: list[str]) -> tuple[list[str], list[str]]:
+    """A large plan's point body as functions of about :data:`C_CHUNK` characters each.
+
+    ``gcc -O3`` spends time superlinear in the size of one function on register allocation
+    (``-ftime-report``: 90% in IRA/LRA and the combiner for a body of 7,000 monomials);
+    each part here is a ``noinline`` function of its own, and the values one part passes to
+    a later one go through a scratch array of the point function.  ``codes`` are the
+    assignments' right-hand sides, printed.  Returns the parts' definitions and the point
+    function's body.
+    """
+    slot: dict = {}  # the symbols read by a later part (or the stores): their index in _t
+    made_in: dict = {}
+    parts: list[list] = [[]]
+    size = 0
+    for (sym, e), code in zip(plan.assigns, codes, strict=True):
+        if size > C_CHUNK:
+            parts.append([])
+            size = 0
+        parts[-1].append((sym, e, code))
+        size += len(code)
+    inputs = {x for _, _, x in plan.unpack}
+    for k, part in enumerate(parts):
+        for sym, _, _ in part:
+            made_in[sym] = k
+    uses = [set().union(*(e.free_symbols for _, e, _ in part)) for part in parts]
+    uses.append(set().union(*(e.free_symbols for _, _, e in plan.stores)) if plan.stores else set())
+    for k, used in enumerate(uses):
+        for x in sorted(used, key=str):
+            if (x in inputs or made_in.get(x, k) < k) and x not in slot:
+                slot[x] = len(slot)
+    defs: list[str] = []
+    for k, part in enumerate(parts):
+        defs += [f"static __attribute__((noinline)) void {cname}_part{k}(double *restrict _t)", "{"]
+        defs += [f"    const double {x} = _t[{slot[x]}];" for x in sorted(uses[k], key=str)
+                 if x in slot and made_in.get(x, -1) < k]
+        for sym, _, code in part:
+            defs.append(f"    const double {sym} = {code};")
+            if sym in slot:
+                defs.append(f"    _t[{slot[sym]}] = {sym};")
+        defs += ["}", ""]
+    body = [f"    double _t[{max(len(slot), 1)}];"]
+    for k, c, x in plan.unpack:
+        if x in slot:
+            src = f"_a{k}[{c}]" if plan.specs[k].trailing else f"_a{k}"
+            body.append(f"    _t[{slot[x]}] = {src};")
+    body += [f"    {cname}_part{k}(_t);" for k in range(len(parts))]
+    body += [f"    const double {x} = _t[{slot[x]}];" for x in sorted(uses[-1], key=str)
+             if x in slot]
+    body += [f"    _o{j}[{c}] = {printer.doprint_line(e)};" for j, c, e in plan.stores]
+    return defs, body
+
+
 def c_source(plan: Plan, cname: str) -> str:
     """C99: ``cname_point`` for one point and ``cname`` looping over ``n`` points."""
     printer = CPrinter()
@@ -269,19 +327,20 @@ def c_source(plan: Plan, cname: str) -> str:
         "#include <stddef.h>",
         "",
         C_HELPERS,
-        f"void {cname}_point({', '.join(point_params)})",
-        "{",
     ]
-    lines += _walk(
-        plan,
-        printer.doprint_line,
-        lambda k, c, x: (
-            f"    const double {x} = _a{k}[{c}];" if plan.specs[k].trailing
-            else f"    const double {x} = _a{k};"
-        ),
-        lambda sym, code: f"    const double {sym} = {code};",
-        lambda j, c, code: f"    _o{j}[{c}] = {code};",
-    )
+    codes = [printer.doprint_line(e) for _, e in plan.assigns]
+    if sum(map(len, codes)) > C_CHUNK:
+        defs, body = _c_chunks(plan, cname, printer, codes)
+    else:
+        defs = []
+        body = [f"    const double {x} = _a{k}[{c}];" if plan.specs[k].trailing
+                else f"    const double {x} = _a{k};" for k, c, x in plan.unpack]
+        body += [f"    const double {sym} = {code};"
+                 for (sym, _), code in zip(plan.assigns, codes, strict=True)]
+        body += [f"    _o{j}[{c}] = {printer.doprint_line(e)};" for j, c, e in plan.stores]
+    lines += defs
+    lines += [f"void {cname}_point({', '.join(point_params)})", "{"]
+    lines += body
     lines += [
         "}",
         "",

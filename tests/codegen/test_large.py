@@ -110,3 +110,32 @@ def test_the_generated_statements_are_small(wide, deep):
         assert len(lines) > 12
         assert max(ln.count(" + ") for ln in lines) < MAX_ARGS
         assert max(ln.count("(") for ln in lines) <= 2 * MAX_DEPTH + 2
+
+
+@pytest.mark.parametrize("which", ["wide", "deep"])
+def test_a_large_c_body_is_split_into_parts_that_agree(wide, deep, which, monkeypatch, tmp_path):
+    # gcc's register allocation grows faster than the size of one function: a body longer
+    # than C_CHUNK characters is written as noinline parts passing values through a scratch
+    # array (7,000 monomials: 60 s of gcc -O3 in one function, 4 s in parts).  A small
+    # C_CHUNK puts these two expressions on that path; the results must not change.
+    _needs("c")
+    from screwsym.codegen import _build, _emit
+
+    monkeypatch.setattr(_emit, "C_CHUNK", 300)
+    monkeypatch.setenv("SCREWSYM_CACHE_DIR", str(tmp_path))  # not the library built before
+    _build.clear_cache()
+    e = (wide if which == "wide" else deep)[0]
+    src = c_source([x, y], e)
+    assert "_part2(_t);" in src and "double _t[" in src
+    f = lambdify([x, y], e, backend="c")
+    _build.clear_cache()
+    if which == "wide":
+        C2 = wide[1].copy()
+        C2[3, 7] += 1
+        expected, wrong = (np.polynomial.polynomial.polyval2d(X, Y, C) for C in (wide[1], C2))
+    else:
+        expected, wrong = ([_deep_value(a, b, n) for a, b in zip(X, Y, strict=True)]
+                           for n in (deep[1], deep[1] - 1))
+    assert np.allclose(f(X, Y), expected, rtol=1e-12, atol=1e-14)
+    assert f(0.3, 0.5) == pytest.approx(expected[0], rel=1e-12)
+    assert not np.allclose(f(X, Y), wrong, rtol=1e-12, atol=1e-14)

@@ -20,8 +20,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from _dynamics import mr_ur5_chain, mr_ur5_lists, random_chain
-from sympy import Float
+from _backends import HAS_CC
+from _dynamics import mr_ur5_chain, mr_ur5_lists, random_chain, ur5_torque_expanded
+from sympy import Float, ImmutableMatrix, count_ops
 
 from screwsym import SpatialInertia, convert, convert_from
 
@@ -157,6 +158,36 @@ def test_ur5_with_the_book_inertias():
     # a wrong inertia would be seen: the last link's mass doubled changes the torques
     wrong = mr.InverseDynamics(q, qd, qdd, GRAVITY, np.zeros(6), Mlist, Glist[:5] + [2 * Glist[5]], Slist)
     assert np.abs(tau - wrong).max() > 1e-3
+
+
+@pytest.fixture(scope="module")
+def ur5_wrist_torque():
+    return ur5_torque_expanded(3)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("backend", ["numpy", pytest.param(
+    "c", marks=pytest.mark.skipif(not HAS_CC, reason="no C compiler"))])
+def test_the_ur5s_expanded_inverse_dynamics_compiles_and_agrees(ur5_wrist_torque, backend):
+    # Issue 23 item 5: lambdify of the UR5's expanded inverse dynamics (about 120,000
+    # operations) raised RecursionError.  Joint 4's torque, expanded, through NumPy and C,
+    # against modern_robotics.InverseDynamics (Lynch & Park 2017, Section 8.3) at random
+    # configurations; numba compiles such a function for minutes (tests/codegen/test_large.py).
+    from screwsym.codegen import lambdify
+
+    e, (q, qd, qdd) = ur5_wrist_torque
+    assert count_ops(e) > 100_000
+    f = lambdify([ImmutableMatrix(v) for v in (q, qd, qdd)], e, backend=backend)
+    rng = np.random.default_rng([2127, 0])
+    Q, QD, QDD = rng.uniform(-np.pi, np.pi, size=(3, 20, 6))
+    ours = f(Q, QD, QDD)
+    Mlist, Glist, Slist = mr_ur5_lists()
+    ref = np.array([mr.InverseDynamics(*x, GRAVITY, np.zeros(6), Mlist, Glist, Slist)
+                    for x in zip(Q, QD, QDD, strict=True)])
+    np.testing.assert_allclose(ours, ref[:, 3], rtol=1e-9, atol=1e-9)
+    assert f(Q[0], QD[0], QDD[0]) == pytest.approx(ref[0, 3], rel=1e-9, abs=1e-9)
+    # the check would see a wrong function: joint 3's torque is not joint 4's
+    assert np.abs(ours - ref[:, 2]).max() > 1e-2
 
 
 def test_inertia_conversions_round_trip_and_match_the_peers():
