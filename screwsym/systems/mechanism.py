@@ -199,15 +199,18 @@ class Mobility(NamedTuple):
     classical: int  #: 6 (n - g - 1) + sum f_i
     rotations: int  #: independent rotations of the platform
     translations: int  #: independent translations of the platform
-    motion: str  #: e.g. "1T2R", "3T1R", "1H" (translations, rotations, helical; :func:`motion_type`)
+    #: e.g. "1T2R", "3T1R", "1H" (translations, rotations, helical; :func:`motion_type`); None
+    #: where the helical freedoms cannot be decided (:func:`motion_of`)
+    motion: str | None
     twists: ScrewSystem  #: the platform's twist system
     links: int  #: n, base and platform included
     joints: int  #: g
     freedoms: int  #: sum f_i
     rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
     translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
-    #: the pitches of the helical freedoms (one per "H" of ``motion``), principal pitches
-    helical_pitches: tuple = ()
+    #: the pitches of the helical freedoms (one per "H" of ``motion``), principal pitches;
+    #: None with ``motion``
+    helical_pitches: tuple | None = ()
     #: momentary internal motions: idle motions of limbs at their own (serial) singularities,
     #: counted in ``mobility`` (the mechanism keeps them) but not in ``twists``
     internal: int = 0
@@ -227,7 +230,7 @@ class Mobility(NamedTuple):
                 f"common={self.common}, redundant={self.redundant}, passive={self.passive}, "
                 f"classical={self.classical}{extra})")
 
-    def answer(self) -> tuple[int, int, int, int, int, int, str, tuple, int]:
+    def answer(self) -> tuple[int, int, int, int, int, int, str | None, tuple | None, int]:
         """The numbers of the analysis, without the twists: what two cases compare."""
         return (self.mobility, self.order, self.common, self.redundant, self.passive,
                 self.classical, self.motion, self.helical_pitches, self.internal)
@@ -318,10 +321,10 @@ def motion_type(rotations: int, translations: int, helical: int = 0) -> str:
 class MotionType(NamedTuple):
     """What a twist system moves (:func:`motion_of`): counts, directions, helical pitches."""
 
-    motion: str  #: the label of :func:`motion_type`, e.g. "3T1R", "1H"
+    motion: str | None  #: the label of :func:`motion_type`, e.g. "3T1R", "1H"; None: undecided
     rotations: int  #: independent angular velocities (helical freedoms included)
     translations: int  #: independent pure translations (twists with omega = 0)
-    helical_pitches: tuple  #: the pitch of each helical freedom (principal pitches)
+    helical_pitches: tuple | None  #: the pitch of each helical freedom; None: undecided
     rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
     translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
 
@@ -346,8 +349,12 @@ def motion_of(twists: ScrewSystem) -> MotionType:
     semidefinite of rank ``h``, ``h`` freedoms are helical, with the
     non-zero principal pitches as ``helical_pitches``.  Generic in the
     symbols, like the ranks.  With symbols and two or more such dimensions,
-    a form whose sign SymPy's assumptions cannot decide is counted as
-    rotations (none is then reported helical).
+    the sign of the form may depend on the symbols' values (it is not a
+    generic property: it can take either sign on open sets): where SymPy's
+    assumptions cannot decide the sign of a coefficient of its characteristic
+    polynomial, ``motion`` and ``helical_pitches`` are None ("cannot
+    decide"); the counts and directions are still given.  Substitute values
+    (or give the symbols assumptions) to decide.
 
     Examples
     ========
@@ -373,7 +380,7 @@ def motion_of(twists: ScrewSystem) -> MotionType:
     moves = _pure_translations(twists.matrix, rotations) if translations else zeros
     pitches = _helical_pitches(twists, moves) if rotations else ()
     return MotionType(
-        motion=motion_type(rotations, translations, len(pitches)),
+        motion=None if pitches is None else motion_type(rotations, translations, len(pitches)),
         rotations=rotations,
         translations=translations,
         helical_pitches=pitches,
@@ -382,8 +389,11 @@ def motion_of(twists: ScrewSystem) -> MotionType:
     )
 
 
-def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple:
-    """The pitches of the helical freedoms of ``twists`` (translations ``moves``): see motion_of."""
+def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple | None:
+    """The pitches of the helical freedoms of ``twists`` (translations ``moves``): see motion_of.
+
+    None where the sign of the pitch form cannot be decided.
+    """
     from sympy import Dummy, Poly, roots
     X = twists.matrix
     C = (moves.T * X[:3, :]).applyfunc(cancel) if moves.cols else None
@@ -414,11 +424,18 @@ def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple:
     p = Poly(cancel((Q - lam * G).det(method="berkowitz")), lam)
     p = Poly(p.as_expr() / lam ** (k - h), lam)  # the zero pitches are rotations
     c = [cancel(x) for x in p.all_coeffs()]  # real-rooted: Q, G symmetric, G > 0
-    alternate = [(-1) ** i * x for i, x in enumerate(c)]
-    positive = all(x.is_positive for x in alternate) or all(x.is_negative for x in alternate)
-    negative = all(x.is_positive for x in c) or all(x.is_negative for x in c)
-    if not (positive or negative):  # indefinite (or undecided): spanned by rotations
+    # p is real-rooted, so Descartes' rule of signs counts its positive roots exactly (zero
+    # coefficients skipped): the pitches are all of one sign (a semidefinite form) iff the
+    # coefficients of p(lam) or of p(-lam) do not change sign
+    # coefficients of undecided sign cannot undo a change between two of known sign
+    signs = [0 if x.is_zero else 1 if x.is_positive else -1 if x.is_negative else None
+             for x in c]
+    changes = [len({x for x in seq if x}) > 1 for seq in (
+        signs, [None if x is None else (-1) ** i * x for i, x in enumerate(signs)])]
+    if all(changes):  # indefinite: spanned by rotations
         return ()
+    if None in signs:
+        return None  # the form's sign cannot be decided: see the docstring
     found = roots(p, lam)
     if sum(found.values()) < h and not p.free_symbols - {lam}:  # pragma: no cover - quintics
         return tuple(p.all_roots())

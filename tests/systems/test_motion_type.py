@@ -126,3 +126,23 @@ def test_bennett_geometry_with_helical_joints_of_one_pitch():
     assert loop_pitch(pts, axes, 0.75, 2) == pytest.approx(0.75 - 2, abs=1e-12)
     # at h = 2 the coupler's screw becomes a line: a rotation
     assert m.xreplace({h: 2}).motion("coupler") == "1R"
+
+
+def test_an_undecidable_pitch_form_gives_none_not_rotations():
+    # Two helices about crossing axes with symbolic pitches a, b: the pitch form is diag(a, b)
+    # (Hunt 1978, §12.3: the principal pitches), helical when a and b have one sign, spanned
+    # by two rotations when they have opposite signs.  Neither is generic in (a, b): with
+    # nothing known of the signs the answer is None ("cannot decide"), not a guess.
+    def two(a, b):
+        return motion_of(ScrewSystem(Twist.screw_motion([1, 0, 0], point=[0, 0, 0], pitch=a),
+                                     Twist.screw_motion([0, 1, 0], point=[0, 0, 0], pitch=b)))
+
+    a, b = symbols("a b", real=True)
+    undecided = two(a, b)
+    assert (undecided.motion, undecided.helical_pitches) == (None, None)
+    assert (undecided.rotations, undecided.translations) == (2, 0)
+    pa, pb = symbols("pa pb", positive=True)
+    assert two(pa, pb).motion == "2H" and set(two(pa, pb).helical_pitches) == {pa, pb}
+    assert two(pa, -pb).motion == "2R"
+    # the decided cases agree with the same systems at numbers of those signs
+    assert two(2, 5).motion == "2H" and two(2, -5).motion == "2R"
