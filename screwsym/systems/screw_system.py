@@ -519,11 +519,16 @@ def _check_system(value: Any, name: str) -> ScrewSystem:
 
 @dataclass(frozen=True)
 class _Ring:
-    """A system as polynomial columns: ``cols`` (n rows of 6 ring elements) and its ring."""
+    """A system as polynomial columns: ``cols`` (n rows of 6 ring elements) and its ring.
+
+    ``scales``: per column, the polynomial it was multiplied by to clear its denominators
+    (``cols[j] = scales[j] * column j`` as functions, on the unit circle of each angle).
+    """
 
     ring: Any
     gens: tuple
-    cols: tuple  # one tuple of 6 ring elements per screw
+    cols: tuple  # one tuple of 6 ring elements per screw (of M.rows elements in general)
+    scales: tuple = ()
 
 
 @lru_cache(maxsize=64)
@@ -649,16 +654,47 @@ def _reduce(p, R):
     return p
 
 
+def _on_circle(t: Any) -> tuple:
+    """The point ``(sin q, cos q)`` of the unit circle at ``t = tan(q/2)``: every point but ``q = pi``.
+
+    ``(2 t / (1 + t**2), (1 - t**2) / (1 + t**2))``, for a number or a symbol ``t``:
+    the rational parametrisation, a bijection of the function field of the circle with
+    the rational functions of ``t`` (so a rank over those is the generic rank on the circle).
+
+    >>> from sympy import Rational
+    >>> from screwsym.systems.screw_system import _on_circle
+    >>> _on_circle(Rational(1, 2))
+    (4/5, 3/5)
+    """
+    return 2 * t / (1 + t**2), (1 - t**2) / (1 + t**2)
+
+
+def _vanishes(e: Any) -> bool:
+    """Whether ``e`` is identically zero: a rational function of symbols and of ``sin(q)``,
+    ``cos(q)``, decided in the ring (``sin(q)**2 + cos(q)**2 = 1`` for each angle).
+
+    >>> from sympy import cos, sin, symbols
+    >>> from screwsym.systems.screw_system import _vanishes
+    >>> q = symbols("q", real=True)
+    >>> _vanishes((1 + cos(q)) * (1 - cos(q)) - sin(q)**2), _vanishes(sin(q) - 1)
+    (True, False)
+    """
+    if not e.has(sin, cos):
+        return cancel(e) == 0
+    return not _to_ring(ImmutableMatrix([e])).cols[0][0]
+
+
 def _sample_point(R, rnd: random.Random) -> list:
     """A random rational point of the ring's symbols, ``(sin q, cos q)`` on the unit circle."""
     K = R.domain
     point = [K.convert(rnd.randint(-97, 97)) for _ in R.gens]
     for _, ci, si in _relations(R):
         t = QQ(rnd.randint(-97, 97), rnd.randint(1, 97))
+        s, c = _on_circle(t)
         if si is not None:
-            point[si] = K.convert(2 * t / (1 + t**2))
+            point[si] = K.convert(s)
         if ci is not None:
-            point[ci] = K.convert((1 - t**2) / (1 + t**2))
+            point[ci] = K.convert(c)
     return point
 
 
@@ -773,22 +809,25 @@ def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
         polys = [ring.from_dict({m: _coefficient(K, c) for m, c in d.items()}) for d in dicts]
     else:
         polys = []
-    cols = []
+    cols, scales = [], []
     for j in range(M.cols):
         # M is row-major: entry (i, j) is number i * cols + j, its numerator and denominator
-        nums = [polys[2 * (i * M.cols + j)] for i in range(6)]
-        dens = [polys[2 * (i * M.cols + j) + 1] for i in range(6)]
+        nums = [polys[2 * (i * M.cols + j)] for i in range(M.rows)]
+        dens = [polys[2 * (i * M.cols + j) + 1] for i in range(M.rows)]
         if all(d.is_ground for d in dens):
             cols.append(tuple(n if d == 1 else n * K.quo(K.one, d.LC)
                               for n, d in zip(nums, dens, strict=True)))
+            scales.append(R.one)
             continue
         den = R.one
         for d in dens:
             den = R.lcm(den, d)
         cols.append(tuple(n * R.exquo(den, d) for n, d in zip(nums, dens, strict=True)))
+        scales.append(den)
     if _relations(R):
         cols = [tuple(_reduce(e, R) for e in col) for col in cols]
-    return _Ring(R, tuple(syms), tuple(cols))
+        scales = [_reduce(d, R) for d in scales]
+    return _Ring(R, tuple(syms), tuple(cols), tuple(scales))
 
 
 def _dm(rows, R) -> DomainMatrix:
@@ -1255,7 +1294,8 @@ def _circle_points(e: Any, q: Any) -> tuple | None:
     """
     S, C = _trig_symbol(sin, q), _trig_symbol(cos, q)
     t = Dummy("t", real=True)
-    num = fraction(cancel(e.xreplace({S: 2 * t / (1 + t**2), C: (1 - t**2) / (1 + t**2)})))[0]
+    s, c = _on_circle(t)
+    num = fraction(cancel(e.xreplace({S: s, C: c})))[0]
     values: list = []
     if num.has(t) and not _rational_domain(Poly(num, t)):
         # radical coefficients: decided only where the circle has no point but q = pi
