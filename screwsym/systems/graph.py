@@ -21,7 +21,13 @@ the sign ``+1`` where the loop passes the joint from ``link_a`` to ``link_b``,
 joint rates the mechanism allows *at the configuration given*: its dimension is
 the **instantaneous** mobility.  It is found exactly: the rank of the network
 matrix over the rationals, algebraic numbers, or (with symbols) the field of
-rational functions, that is the *generic* rank.
+rational functions, that is the *generic* rank.  Geometry may be polynomial in
+``sin(q)`` and ``cos(q)`` of symbols (a configuration that moves): those live on
+the unit circle, whose field of rational functions is that of ``t = tan(q/2)``,
+so the rank is taken there and the bases written back in ``sin(q)``, ``cos(q)``;
+the case split (:meth:`Mechanism.mobility_cases`) keeps ``sin(q)`` and
+``cos(q)`` as symbols on the circle, as :mod:`screwsym.systems.screw_system` does,
+and reaches every angle, ``q = pi`` included.
 
 Second order (Müller 2016): a first-order motion ``qdot`` extends to a
 second-order one when some ``qddot`` satisfies, on every loop,
@@ -262,7 +268,7 @@ def _dm(M: Matrix) -> DomainMatrix:
                 point = _on_circle(_half_angle(back.args[0]))
                 half[x] = point[0] if back.func is sin else point[1]
         entries = [e.xreplace(half) for e in entries]
-    syms, numbers, parts = _rational_parts(entries, "joints: expected geometry", trig=True)
+    syms, numbers, parts = _rational_parts(entries, "joints: expected geometry")
     K0 = _field(tuple(sorted(set(numbers), key=str)))
     gens = tuple(syms) if syms else (Dummy("c"),)
     R = K0[gens]
@@ -545,6 +551,23 @@ class Mechanism(ScrewsymBasic):
     >>> fourbar.second_order().mobility     # a four-bar in general position moves on
     1
 
+    A configuration that moves: the parallelogram of the Delta robot's forearms
+    (Clavel 1988), its cranks at angle ``q``.  The coupler translates, one
+    freedom, at every angle but the flat poses ``sin(q) = 0`` (``q = 0`` and
+    ``q = pi``), where the four pivots are collinear (Hunt 1978, §2: the change
+    point, where the anti-parallelogram branch meets it).
+
+    >>> from sympy import cos, sin, symbols
+    >>> q = symbols("q", real=True)
+    >>> para = Mechanism([("ground", "left", R([0, 0, 0], z)),
+    ...                   ("left", "coupler", R([cos(q), sin(q), 0], z)),
+    ...                   ("coupler", "right", R([2 + cos(q), sin(q), 0], z)),
+    ...                   ("right", "ground", R([2, 0, 0], z))], base="ground")
+    >>> para.motion("coupler"), para.twists("coupler")
+    ('1T', ScrewSystem(Twist([0, 0, 0], [sin(q), -cos(q), 0])))
+    >>> [(case, m.mobility) for case, m in para.mobility_cases()]
+    [(Ne(sin(q), 0), 1), (Eq(sin(q), 0), 2)]
+
     Parameters
     ==========
 
@@ -676,7 +699,8 @@ class Mechanism(ScrewsymBasic):
         the loops allow here, not whether the mechanism can move a finite
         amount (see :meth:`second_order`).  With symbols in the geometry they
         are generic (for all values outside a proper algebraic subset): the
-        rank is taken over the field of rational functions, with no case split
+        rank is taken over the field of rational functions (of ``tan(q/2)`` for
+        ``sin(q)``, ``cos(q)``: exact on the circle), with no case split
         (:meth:`mobility_cases` gives the exhaustive split), and
         many symbols make it slow (the 3-RPS with six symbols and ``sqrt(3)``
         takes minutes): give the symbols values where you can.
@@ -761,8 +785,16 @@ class Mechanism(ScrewsymBasic):
         proves the case's rank, so its leading entries are that non-zero
         minor), the rates that also close loop ``i`` are the null space of the
         six-row matrix ``A_i N``, whose rank conditions split the case again;
-        ``rank = F - dim`` of the final null space.  A case whose rank SymPy
-        cannot decide (an equation linear in no symbol) comes with ``None``.
+        ``rank = F - dim`` of the final null space.  Geometry polynomial in
+        ``sin`` and ``cos`` of symbols is split as
+        :meth:`ScrewSystem.rank_conditions
+        <screwsym.systems.screw_system.ScrewSystem.rank_conditions>` splits it: a
+        condition in ``sin(q)``, ``cos(q)`` of one angle is decided at each of its
+        points on the circle (``q = pi`` included), written
+        ``Eq(sin(q), s) & Eq(cos(q), c)`` and, merged, ``Eq(sin(q), 0)`` for both
+        points.  A case whose rank SymPy
+        cannot decide (an equation linear in no symbol, or in two angles)
+        comes with ``None``.
         Cases whose conditions contradict each other are left out.  At most
         ``max_cases`` cases (a ``ValueError`` beyond), and at most ``budget``
         units of polynomial arithmetic for the whole split (as
@@ -895,7 +927,9 @@ class Mechanism(ScrewsymBasic):
         meet, as a flat parallelogram's two do).  An indefinite form of rank 3
         or more is a quadric cone: its dimension is known when no other form
         remains, else the test cannot decide and says ``None``; likewise with
-        symbols in a form that does not vanish identically.
+        symbols in a form that does not vanish identically (with ``sin(q)``,
+        ``cos(q)``: identically on the circle, decided exactly in the ring of
+        :mod:`~screwsym.systems.screw_system`).
 
         A mobility to second order is not a proof of a finite motion (a
         higher order may stop it); a drop below ``instantaneous`` is a proof that

@@ -765,17 +765,15 @@ def _circle_simplify(expr: Any) -> Any:
         lambda x: isinstance(x, Or), pairs)
 
 
-def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list, list, list]:
+def _rational_parts(entries: list, what: str) -> tuple[list, list, list]:
     """The symbols, the algebraic numbers and the numerators and denominators of ``entries``.
 
-    With ``trig``, ``sin(q)`` and ``cos(q)`` of symbols are first replaced by their
-    ring symbols (:func:`_trig_entries`).  Raises ``ValueError`` naming ``what``
-    (``"screws: expected entries"``, ...) for an entry that is not a rational function
-    of symbols (and, with ``trig``, of sin and cos of symbols) with rational or
-    algebraic coefficients.
+    ``sin(q)`` and ``cos(q)`` of symbols are first replaced by their ring symbols
+    (:func:`_trig_entries`).  Raises ``ValueError`` naming ``what`` (``"screws: expected
+    entries"``, ...) for an entry that is not a rational function of symbols and of sin
+    and cos of symbols with rational or algebraic coefficients.
     """
-    if trig:
-        entries = _trig_entries(entries)
+    entries = _trig_entries(entries)
     syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
     numbers: list = []
     parts = [part for e in entries for part in e.as_numer_denom()]
@@ -788,10 +786,8 @@ def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list,
                 numbers.append(g)
                 continue
             raise ValueError(
-                f"{what} that are rational functions of symbols"
-                f"{' and polynomial in sin and cos of symbols' if trig else ''} with rational "
-                f"or algebraic coefficients, got {g} in an entry"
-                f"{'' if trig else ' (write cos/sin as a rational parametrisation or as point coordinates)'}"
+                f"{what} that are rational functions of symbols and polynomial in sin and "
+                f"cos of symbols with rational or algebraic coefficients, got {g} in an entry"
             )
     return syms, numbers, parts
 
@@ -799,7 +795,7 @@ def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list,
 @lru_cache(maxsize=512)
 def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
     entries = list(M)
-    syms, numbers, parts = _rational_parts(entries, "screws: expected entries", trig=True)
+    syms, numbers, parts = _rational_parts(entries, "screws: expected entries")
     K = _field(tuple(sorted(numbers, key=str)))
     gens = tuple(syms) if syms else (Dummy("c"),)
     R = K[gens]
