@@ -14,7 +14,7 @@ from __future__ import annotations
 import random
 
 import pytest
-from _linkages import four_r
+from _linkages import four_r, planar
 from sympy import Eq, Matrix, Ne, Rational, cos, pi, sin, sqrt, symbols, tan, true
 
 from screwsym import Twist
@@ -148,6 +148,32 @@ def test_two_loops_at_a_moving_configuration():
     points += [{sin(q): s * sqrt(10) / 10, cos(q): -3 * s * sqrt(10) / 10} for s in (1, -1)]
     assert_circle_cases(mech, points, pm, cases=split)
     assert_circle_cases(mech, points, pm, cases=mech.mobility_cases())
+
+
+def test_a_watt_six_bar_gains_a_freedom_where_its_dyad_is_stretched():
+    # Watt's six-bar (tests/_linkages.watt: ternary links T1, the ground, and T2 joined at O),
+    # its second loop T1-c-d-T2 at a toggle position: the pivots C = (-3, 1), D = (-4, 4),
+    # E = (-2, -2) of the dyad c-d in one line, so the output rocker T2 has no velocity
+    # (the toggle of a four-bar, input and coupler in line: Hartenberg & Denavit, Kinematic
+    # Synthesis of Linkages, 1964, on toggle positions) and c keeps one instantaneous
+    # freedom (v_D along the line CDE is zero for any rate of c).  With T2 held, the
+    # dyad a-b between A = (4, 0) and B = (2, 4), its middle pivot P = A + (cos q, sin q),
+    # moves only where it is stretched: P on the line AB, sin(q) + 2 cos(q) = 0, two freedoms
+    mech = planar([("T1", "T2", (0, 0)), ("T1", "a", (4, 0)), ("a", "b", (4 + cos(q), sin(q))),
+                   ("b", "T2", (2, 4)), ("T1", "c", (-3, 1)), ("c", "d", (-4, 4)),
+                   ("d", "T2", (-2, -2))], base="T1")
+    m = mech.mobility()
+    assert (m.mobility, m.loops, m.orders) == (1, 2, (3, 3))
+    assert m.rates.T == Matrix([[0, 0, 0, 0, 2, -1, -1]])  # c alone moves; T2 is held
+    split = mech.mobility_cases(merge=False)
+    r5 = sqrt(5) / 5
+    assert [c for c, m in split if m.mobility == 2] == [
+        Ne(sin(q), 0) & Eq(sin(q), -2 * r5) & Eq(cos(q), r5),
+        Ne(sin(q), 0) & Eq(sin(q), 2 * r5) & Eq(cos(q), -r5)]
+    points = circle_points([q], [{q: 0}, {q: pi}], count=3)
+    points += [{sin(q): 2 * s * r5, cos(q): -s * r5} for s in (1, -1)]
+    assert_circle_cases(mech, points, cases=split)
+    assert_circle_cases(mech, points, cases=mech.mobility_cases())
 
 
 def test_the_rates_are_polynomial_in_sin_and_cos_and_hold_at_q_equal_pi():
