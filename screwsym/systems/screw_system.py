@@ -1456,7 +1456,7 @@ def _substitute_nonzero(nonzero: tuple, pairs: tuple) -> tuple | None:
             out.append(g)
             continue
         num = fraction(cancel(_substitute(g, pairs)))[0]
-        if num == 0:
+        if num == 0 or (num.has(sin, cos) and _vanishes(num)):  # zero on the circle too
             return None
         out.extend(f for f, _ in factor_list(num)[1] if not f.is_number)
     return tuple(out)

@@ -193,6 +193,21 @@ def test_the_rates_are_polynomial_in_sin_and_cos_and_hold_at_q_equal_pi():
     assert mech.second_order().mobility == 1
 
 
+def test_an_angle_and_a_length_together():
+    # the crank four-bar with the rocker's upper pivot at C = (3, a): folded (two freedoms)
+    # only where all four pivots are collinear, a = 0 and sin(q) = 0 (Gosselin & Angeles 1990,
+    # as above); a symbol solved for (a) and an angle decided at its points in one split
+    a = symbols("a", real=True)
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([cos(q), sin(q), 0], Z)),
+                           Limb(R([4, 0, 0], Z), R([3, a, 0], Z)))
+    mech = Mechanism.from_parallel(pm)
+    cases = mech.mobility_cases()
+    assert [(c, m.mobility) for c, m in cases][1:] == [(Eq(a, 0) & Eq(sin(q), 0), 2)]
+    points = [{**p, a: v} for v in (0, 1, Rational(-2, 3))
+              for p in circle_points([q], [{q: 0}, {q: pi}], count=2)]
+    assert_circle_cases(mech, points, pm)
+
+
 def test_the_checker_rejects_a_wrong_answer():
     pm = crank_four_bar()
     mech = Mechanism.from_parallel(pm)
