@@ -102,6 +102,7 @@ from .screw_system import (
     ScrewSystem,
     _apply,
     _cases,
+    _circle_normal,
     _coefficient,
     _det,
     _field,
@@ -1201,6 +1202,8 @@ def _forms(mech: Mechanism) -> list[Matrix]:
             for a, y in squares:
                 G[a, a] += sum(x * z for x, z in zip(wi, y, strict=True))
         Q = (N.T * G * N).applyfunc(lambda e: radsimp(expand(e)))
+        if _trig(Q):  # reduced on the circle: a form zero there is the zero matrix
+            Q = Q.applyfunc(_circle_normal)
         forms.append(Q)
     return forms
 

@@ -684,6 +684,22 @@ def _vanishes(e: Any) -> bool:
     return not _to_ring(ImmutableMatrix([e])).cols[0][0]
 
 
+def _circle_normal(e: Any) -> Any:
+    """``e`` with its numerator and denominator reduced by ``sin(q)**2 + cos(q)**2 = 1``
+    (each of degree at most 1 in ``cos(q)``: the normal form on the circle).
+
+    >>> from sympy import cos, sin, symbols
+    >>> from screwsym.systems.screw_system import _circle_normal
+    >>> q = symbols("q", real=True)
+    >>> _circle_normal(sin(q)**3 + sin(q)*cos(q)**2)
+    sin(q)
+    """
+    if not e.has(sin, cos):
+        return e
+    rg = _to_ring(ImmutableMatrix([e]))
+    return _poly_expr(rg.cols[0][0], rg.ring) / _poly_expr(rg.scales[0], rg.ring)
+
+
 def _sample_point(R, rnd: random.Random) -> list:
     """A random rational point of the ring's symbols, ``(sin q, cos q)`` on the unit circle."""
     K = R.domain

@@ -208,6 +208,24 @@ def test_an_angle_and_a_length_together():
     assert_circle_cases(mech, points, pm)
 
 
+def test_second_order_with_an_angle_decides_where_the_forms_vanish_on_the_circle_else_none():
+    # four revolutes on lines of one regulus of x**2 + y**2 - z**2 = 1, the line through
+    # (c, s, 0) along (-s, c, 1), the fourth at angle q: a shaky 4R at every q (one
+    # instantaneous freedom, none to second order: Müller 2016, §6; test_graph's shaky_4r is
+    # q at (3/5, -4/5)).  With the angle a symbol the forms, reduced on the circle (the first
+    # is zero there, though not as written), do not vanish and cannot be signed: None, not a
+    # guess; at rational points the rational path decides 0.  The parallelogram's forms vanish
+    # on the whole circle: it moves to second order at every angle.
+    ring = [(1, 0), (0, 1), (-1, 0), (cos(q), sin(q))]
+    shaky = four_r([[c, s, 0] for c, s in ring], [[-s, c, 1] for c, s in ring])
+    so = shaky.second_order()
+    assert (so.instantaneous, so.mobility, so.cone) == (1, None, None)
+    assert so.forms[0] == Matrix([[0]]) and so.forms[2] == Matrix([[12 * sin(q) - 12 * sin(q)**2]])
+    for point in circle_points([q], count=2)[:3]:
+        assert shaky.xreplace(point).second_order().mobility == 0
+    assert parallelogram().second_order().mobility == 1
+
+
 def test_the_checker_rejects_a_wrong_answer():
     pm = crank_four_bar()
     mech = Mechanism.from_parallel(pm)
