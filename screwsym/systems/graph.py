@@ -322,7 +322,7 @@ def _nullspace(M: Matrix) -> Matrix:
     if M.cols == 0:
         return zeros(0, 0)
     null = _dm(M).nullspace()
-    if _trig(M):  # from t = tan(q/2) back to sin(q), cos(q)
+    if _trig(M) and null.domain.is_FractionField:  # from t = tan(q/2) to sin(q), cos(q)
         cols = [_clean(_from_half_angle(row)) for row in null.to_list()]
     else:
         null = null.to_Matrix()
