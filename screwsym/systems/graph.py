@@ -21,7 +21,13 @@ the sign ``+1`` where the loop passes the joint from ``link_a`` to ``link_b``,
 joint rates the mechanism allows *at the configuration given*: its dimension is
 the **instantaneous** mobility.  It is found exactly: the rank of the network
 matrix over the rationals, algebraic numbers, or (with symbols) the field of
-rational functions, that is the *generic* rank.
+rational functions, that is the *generic* rank.  Geometry may be polynomial in
+``sin(q)`` and ``cos(q)`` of symbols (a configuration that moves): those live on
+the unit circle, whose field of rational functions is that of ``t = tan(q/2)``,
+so the rank is taken there and the bases written back in ``sin(q)``, ``cos(q)``;
+the case split (:meth:`Mechanism.mobility_cases`) keeps ``sin(q)`` and
+``cos(q)`` as symbols on the circle, as :mod:`screwsym.systems.screw_system` does,
+and reaches every angle, ``q = pi`` included.
 
 Second order (Müller 2016): a first-order motion ``qdot`` extends to a
 second-order one when some ``qddot`` satisfies, on every loop,
@@ -54,16 +60,19 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 from sympy import (
     QQ,
+    Add,
     And,
     Basic,
     Dummy,
     ImmutableMatrix,
     Integer,
     Matrix,
+    Mul,
     Ne,
     Symbol,
     Tuple,
     cancel,
+    cos,
     expand,
     false,
     fraction,
@@ -71,6 +80,7 @@ from sympy import (
     ilcm,
     lcm,
     radsimp,
+    sin,
     sqrt,
     true,
     zeros,
@@ -86,16 +96,25 @@ from ..core.twist import Twist
 from .joints import Joint, Parallelogram, Spherical, Universal
 from .mechanism import ParallelMechanism, _check_cases, _merge_cases, motion_of
 from .screw_system import (
+    _TRIG_BACK,
     BUDGET,
     MAX_CASES,
     ScrewSystem,
+    _apply,
     _cases,
+    _circle_normal,
     _coefficient,
     _det,
     _field,
+    _on_circle,
+    _poly_expr,
+    _primitive,
     _rational_parts,
+    _substitute,
     _swap,
     _to_ring,
+    _trig_entries,
+    _vanishes,
     case_budget,
 )
 
@@ -160,18 +179,96 @@ def lie_bracket(a: Twist, b: Twist) -> Twist:
 # ------------------------------------------------------ exact linear algebra
 
 
+#: the half-angle symbol ``t = tan(q/2)`` of each angle ``q`` (:func:`_half_angle`); and its angle
+_HALF: dict = {}
+_HALF_BACK: dict = {}
+
+
+def _half_angle(q: Any) -> Dummy:
+    t = _HALF.get(q)
+    if t is None:
+        t = Dummy(f"t_{q}", real=True)
+        _HALF[q] = t
+        _HALF_BACK[t] = q
+    return t
+
+
+def _from_half_angle(row: list) -> list:
+    """A vector over the rational functions of ``t = tan(q/2)`` (and the other symbols) as
+    polynomials in ``sin(q)``, ``cos(q)``: the same vector up to a factor non-zero generically.
+
+    Cleared of denominators and of the common factor, a polynomial vector of degree ``D``
+    in ``t`` divided by ``(1 + t**2)**n``, ``n = ceil(D/2)``, is one of degree ``n`` in
+    ``sin(q)`` and ``cos(q)``: with ``t = sin(q)/(1 + cos(q))`` and ``1 + t**2 =
+    2/(1 + cos(q))``, ``t**k/(1 + t**2)**n = sin(q)**(k % 2) (1 - cos(q))**(k // 2)
+    (1 + cos(q))**(n - k + k // 2) / 2**n`` (``sin(q)**2 = (1 - cos(q)) (1 + cos(q))``),
+    a polynomial for every ``k <= 2 n``.
+    """
+    nz = [e for e in row if e]
+    ring = nz[0].numer.ring
+    den = ring.one
+    for e in nz:
+        den = den.lcm(e.denom)
+    polys = [e.numer * den.exquo(e.denom) if e else ring.zero for e in row]
+    g = ring.zero
+    for p in polys:
+        if p:
+            g = p if not g else g.gcd(p)
+    polys = [p.exquo(g) if p else p for p in polys]
+    angles = {i: _HALF_BACK[x] for i, x in enumerate(ring.symbols) if x in _HALF_BACK}
+    half = {i: (max(p.degree(i) for p in polys if p) + 1) // 2 for i in angles}
+    K0 = ring.domain
+    out = []
+    for p in polys:
+        terms = []
+        for monom, c in p.terms():
+            factors = [K0.to_sympy(c)]
+            for i, k in enumerate(monom):
+                if i in angles:
+                    q, n = angles[i], half[i]
+                    factors.append(sin(q) ** (k % 2) * (1 - cos(q)) ** (k // 2)
+                                   * (1 + cos(q)) ** (n - k + k // 2))
+                elif k:
+                    factors.append(ring.symbols[i] ** k)
+            terms.append(Mul(*factors))
+        out.append(Add(*terms))
+    return out
+
+
+def _trig(entries: Any) -> bool:
+    return any(e.has(sin, cos) for e in entries)
+
+
 def _dm(M: Matrix) -> DomainMatrix:
     """``M`` over its field: QQ, an algebraic field, or rational functions over one.
 
     The entries go through polynomial dictionaries and the cached algebraic
     coefficients of :mod:`screwsym.systems.screw_system` (``K.from_sympy`` on an
     algebraic field computes a minimal polynomial per entry: seconds).
+
+    ``sin(q)`` and ``cos(q)`` of a symbol (sums and multiples expanded) live on
+    the unit circle, whose rational functions are those of ``t = tan(q/2)``
+    (:func:`~screwsym.systems.screw_system._on_circle`, a bijection of the two
+    fields): they are written in ``t``, so that rank and null space are exact,
+    the generic ones on the circle (a field of fractions in ``sin(q)``,
+    ``cos(q)`` as free symbols would not know ``sin(q)**2 + cos(q)**2 = 1``).
+    :func:`_nullspace` writes its basis back in ``sin(q)`` and ``cos(q)``.
     """
     entries = list(M)
     if all(e.is_Rational for e in entries):  # the common case, at once
         rows = [[QQ(int(e.p), int(e.q)) for e in entries[i * M.cols:(i + 1) * M.cols]]
                 for i in range(M.rows)]
         return DomainMatrix(rows, (M.rows, M.cols), QQ)
+    trig = _trig(entries)
+    if trig:
+        entries = _trig_entries(entries)  # sin(q), cos(q) as the ring's symbols, then in t
+        half = {}
+        for x in set().union(*(e.free_symbols for e in entries)):
+            back = _TRIG_BACK.get(x)
+            if back is not None:
+                point = _on_circle(_half_angle(back.args[0]))
+                half[x] = point[0] if back.func is sin else point[1]
+        entries = [e.xreplace(half) for e in entries]
     syms, numbers, parts = _rational_parts(entries, "joints: expected geometry")
     K0 = _field(tuple(sorted(set(numbers), key=str)))
     gens = tuple(syms) if syms else (Dummy("c"),)
@@ -191,7 +288,14 @@ def _dm(M: Matrix) -> DomainMatrix:
 
 
 def _clean(v: list) -> list:
-    """A vector scaled to lowest terms: no denominators, no common factor, first entry positive."""
+    """A vector scaled to lowest terms: no denominators, no common factor, first entry positive.
+
+    With ``sin``/``cos`` of symbols, in the ring of :mod:`~screwsym.systems.screw_system`:
+    polynomial, reduced by ``sin(q)**2 + cos(q)**2 = 1`` (so an entry zero on the circle is 0).
+    """
+    if _trig(v):
+        rg = _to_ring(ImmutableMatrix(len(v), 1, v))
+        return [_poly_expr(e, rg.ring) for e in _primitive(list(rg.cols[0]), rg.ring)]
     v = [cancel(e) for e in v]
     nz = [e for e in v if e != 0]
     if not nz:
@@ -217,8 +321,12 @@ def _nullspace(M: Matrix) -> Matrix:
         return Matrix.eye(M.cols)
     if M.cols == 0:
         return zeros(0, 0)
-    null = _dm(M).nullspace().to_Matrix()
-    cols = [_clean(list(null.row(i))) for i in range(null.rows)]
+    null = _dm(M).nullspace()
+    if _trig(M) and null.domain.is_FractionField:  # from t = tan(q/2) to sin(q), cos(q)
+        cols = [_clean(_from_half_angle(row)) for row in null.to_list()]
+    else:
+        null = null.to_Matrix()
+        cols = [_clean(list(null.row(i))) for i in range(null.rows)]
     return Matrix.hstack(*(Matrix(c) for c in cols)) if cols else zeros(M.cols, 0)
 
 
@@ -444,6 +552,23 @@ class Mechanism(ScrewsymBasic):
     >>> fourbar.second_order().mobility     # a four-bar in general position moves on
     1
 
+    A configuration that moves: the parallelogram of the Delta robot's forearms
+    (Clavel 1988), its cranks at angle ``q``.  The coupler translates, one
+    freedom, at every angle but the flat poses ``sin(q) = 0`` (``q = 0`` and
+    ``q = pi``), where the four pivots are collinear (Hunt 1978, §2: the change
+    point, where the anti-parallelogram branch meets it).
+
+    >>> from sympy import cos, sin, symbols
+    >>> q = symbols("q", real=True)
+    >>> para = Mechanism([("ground", "left", R([0, 0, 0], z)),
+    ...                   ("left", "coupler", R([cos(q), sin(q), 0], z)),
+    ...                   ("coupler", "right", R([2 + cos(q), sin(q), 0], z)),
+    ...                   ("right", "ground", R([2, 0, 0], z))], base="ground")
+    >>> para.motion("coupler"), para.twists("coupler")
+    ('1T', ScrewSystem(Twist([0, 0, 0], [sin(q), -cos(q), 0])))
+    >>> [(case, m.mobility) for case, m in para.mobility_cases()]
+    [(Ne(sin(q), 0), 1), (Eq(sin(q), 0), 2)]
+
     Parameters
     ==========
 
@@ -575,7 +700,8 @@ class Mechanism(ScrewsymBasic):
         the loops allow here, not whether the mechanism can move a finite
         amount (see :meth:`second_order`).  With symbols in the geometry they
         are generic (for all values outside a proper algebraic subset): the
-        rank is taken over the field of rational functions, with no case split
+        rank is taken over the field of rational functions (of ``tan(q/2)`` for
+        ``sin(q)``, ``cos(q)``: exact on the circle), with no case split
         (:meth:`mobility_cases` gives the exhaustive split), and
         many symbols make it slow (the 3-RPS with six symbols and ``sqrt(3)``
         takes minutes): give the symbols values where you can.
@@ -660,8 +786,16 @@ class Mechanism(ScrewsymBasic):
         proves the case's rank, so its leading entries are that non-zero
         minor), the rates that also close loop ``i`` are the null space of the
         six-row matrix ``A_i N``, whose rank conditions split the case again;
-        ``rank = F - dim`` of the final null space.  A case whose rank SymPy
-        cannot decide (an equation linear in no symbol) comes with ``None``.
+        ``rank = F - dim`` of the final null space.  Geometry polynomial in
+        ``sin`` and ``cos`` of symbols is split as
+        :meth:`ScrewSystem.rank_conditions
+        <screwsym.systems.screw_system.ScrewSystem.rank_conditions>` splits it: a
+        condition in ``sin(q)``, ``cos(q)`` of one angle is decided at each of its
+        points on the circle (``q = pi`` included), written
+        ``Eq(sin(q), s) & Eq(cos(q), c)`` and, merged, ``Eq(sin(q), 0)`` for both
+        points.  A case whose rank SymPy
+        cannot decide (an equation linear in no symbol, or in two angles)
+        comes with ``None``.
         Cases whose conditions contradict each other are left out.  At most
         ``max_cases`` cases (a ``ValueError`` beyond), and at most ``budget``
         units of polynomial arithmetic for the whole split (as
@@ -794,7 +928,9 @@ class Mechanism(ScrewsymBasic):
         meet, as a flat parallelogram's two do).  An indefinite form of rank 3
         or more is a quadric cone: its dimension is known when no other form
         remains, else the test cannot decide and says ``None``; likewise with
-        symbols in a form that does not vanish identically.
+        symbols in a form that does not vanish identically (with ``sin(q)``,
+        ``cos(q)``: identically on the circle, decided exactly in the ring of
+        :mod:`~screwsym.systems.screw_system`).
 
         A mobility to second order is not a proof of a finite motion (a
         higher order may stop it); a drop below ``instantaneous`` is a proof that
@@ -825,20 +961,21 @@ class Mechanism(ScrewsymBasic):
 
 def _compose(subs: dict, more: dict) -> dict:
     """``subs`` then ``more`` (made in the already substituted system) as one substitution."""
-    composed = {k: cancel(v.xreplace(more)) for k, v in subs.items()}
+    composed = {k: cancel(_substitute(v, more)) for k, v in subs.items()}
     composed.update(more)
     return composed
 
 
 def _put(M: Matrix, subs: dict) -> Matrix:
-    return M.xreplace(subs).applyfunc(cancel) if subs else M
+    """``M`` with a case's substitution made (``sin(q)``, ``cos(q)`` reach ``sin(2 q)``)."""
+    return Matrix(_apply(M, subs)) if subs else M
 
 
 def _contradicts(conds: tuple, subs: dict) -> bool:
     """Whether the substitution of a case makes one of its own ``Ne`` conditions false."""
     for c in conds:
         for atom in c.atoms(Ne):
-            if cancel((atom.lhs - atom.rhs).xreplace(subs)) == 0:
+            if _vanishes(_substitute(atom.lhs - atom.rhs, subs)):
                 return True
     return False
 
@@ -866,18 +1003,14 @@ def _relations(node: Any) -> Matrix:
     B = [_swap(c) for c in rg.cols]
     cols = list(node.cols)
     m = _det([[B[p][c] for c in cols] for p in members], R)
-    scale = []
-    for c in range(k):
-        column = list(node.matrix.col(c))
-        r = next((i for i, e in enumerate(column) if e != 0), None)
-        scale.append(Integer(1) if r is None else cancel(R.to_sympy(rg.cols[c][r]) / column[r]))
+    scale = [_poly_expr(d, R) for d in rg.scales]
     out = []
     for j in free:
         x = [Integer(0)] * k
-        x[j] = R.to_sympy(m) * scale[j]
+        x[j] = _poly_expr(m, R) * scale[j]
         for pp, p in enumerate(members):
             rows = [[B[j if q == pp else members[q]][c] for c in cols] for q in range(len(members))]
-            x[p] = -R.to_sympy(_det(rows, R)) * scale[p]
+            x[p] = -_poly_expr(_det(rows, R), R) * scale[p]
         out.append(Matrix(x).applyfunc(expand))
     return Matrix.hstack(*out)
 
@@ -956,7 +1089,7 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
         if subs is None or N is None:
             out.append((condition, None))
             continue
-        m = (mech.xreplace(subs) if subs else mech).mobility()
+        m = (_substitute(mech, subs) if subs else mech).mobility()
         if m.mobility != N.cols:  # pragma: no cover - the split proves the rank on the case
             raise AssertionError("mobility_cases: the case's rank and its generic rank differ")
         out.append((condition, m))
@@ -1069,6 +1202,8 @@ def _forms(mech: Mechanism) -> list[Matrix]:
             for a, y in squares:
                 G[a, a] += sum(x * z for x, z in zip(wi, y, strict=True))
         Q = (N.T * G * N).applyfunc(lambda e: radsimp(expand(e)))
+        if _trig(Q):  # reduced on the circle: a form zero there is the zero matrix
+            Q = Q.applyfunc(_circle_normal)
         forms.append(Q)
     return forms
 
@@ -1173,7 +1308,7 @@ def _second_order(mech: Mechanism) -> SecondOrder:
     forms = _forms(mech)
     frozen = tuple(ImmutableMatrix(f) for f in forms)
     if any(f.free_symbols for f in forms):
-        if all(expand(e) == 0 for f in forms for e in f):
+        if all(expand(e) == 0 or _vanishes(e) for f in forms for e in f):
             return SecondOrder(M, M, 1, False, (ImmutableMatrix(N),), frozen)
         return SecondOrder(M, None, None, None, None, frozen)
     try:

@@ -519,11 +519,16 @@ def _check_system(value: Any, name: str) -> ScrewSystem:
 
 @dataclass(frozen=True)
 class _Ring:
-    """A system as polynomial columns: ``cols`` (n rows of 6 ring elements) and its ring."""
+    """A system as polynomial columns: ``cols`` (n rows of 6 ring elements) and its ring.
+
+    ``scales``: per column, the polynomial it was multiplied by to clear its denominators
+    (``cols[j] = scales[j] * column j`` as functions, on the unit circle of each angle).
+    """
 
     ring: Any
     gens: tuple
-    cols: tuple  # one tuple of 6 ring elements per screw
+    cols: tuple  # one tuple of 6 ring elements per screw (of M.rows elements in general)
+    scales: tuple = ()
 
 
 @lru_cache(maxsize=64)
@@ -649,16 +654,63 @@ def _reduce(p, R):
     return p
 
 
+def _on_circle(t: Any) -> tuple:
+    """The point ``(sin q, cos q)`` of the unit circle at ``t = tan(q/2)``: every point but ``q = pi``.
+
+    ``(2 t / (1 + t**2), (1 - t**2) / (1 + t**2))``, for a number or a symbol ``t``:
+    the rational parametrisation, a bijection of the function field of the circle with
+    the rational functions of ``t`` (so a rank over those is the generic rank on the circle).
+
+    >>> from sympy import Rational
+    >>> from screwsym.systems.screw_system import _on_circle
+    >>> _on_circle(Rational(1, 2))
+    (4/5, 3/5)
+    """
+    return 2 * t / (1 + t**2), (1 - t**2) / (1 + t**2)
+
+
+def _vanishes(e: Any) -> bool:
+    """Whether ``e`` is identically zero: a rational function of symbols and of ``sin(q)``,
+    ``cos(q)``, decided in the ring (``sin(q)**2 + cos(q)**2 = 1`` for each angle).
+
+    >>> from sympy import cos, sin, symbols
+    >>> from screwsym.systems.screw_system import _vanishes
+    >>> q = symbols("q", real=True)
+    >>> _vanishes((1 + cos(q)) * (1 - cos(q)) - sin(q)**2), _vanishes(sin(q) - 1)
+    (True, False)
+    """
+    if not e.has(sin, cos):
+        return cancel(e) == 0
+    return not _to_ring(ImmutableMatrix([e])).cols[0][0]
+
+
+def _circle_normal(e: Any) -> Any:
+    """``e`` with its numerator and denominator reduced by ``sin(q)**2 + cos(q)**2 = 1``
+    (each of degree at most 1 in ``cos(q)``: the normal form on the circle).
+
+    >>> from sympy import cos, sin, symbols
+    >>> from screwsym.systems.screw_system import _circle_normal
+    >>> q = symbols("q", real=True)
+    >>> _circle_normal(sin(q)**3 + sin(q)*cos(q)**2)
+    sin(q)
+    """
+    if not e.has(sin, cos):
+        return e
+    rg = _to_ring(ImmutableMatrix([e]))
+    return _poly_expr(rg.cols[0][0], rg.ring) / _poly_expr(rg.scales[0], rg.ring)
+
+
 def _sample_point(R, rnd: random.Random) -> list:
     """A random rational point of the ring's symbols, ``(sin q, cos q)`` on the unit circle."""
     K = R.domain
     point = [K.convert(rnd.randint(-97, 97)) for _ in R.gens]
     for _, ci, si in _relations(R):
         t = QQ(rnd.randint(-97, 97), rnd.randint(1, 97))
+        s, c = _on_circle(t)
         if si is not None:
-            point[si] = K.convert(2 * t / (1 + t**2))
+            point[si] = K.convert(s)
         if ci is not None:
-            point[ci] = K.convert((1 - t**2) / (1 + t**2))
+            point[ci] = K.convert(c)
     return point
 
 
@@ -729,17 +781,15 @@ def _circle_simplify(expr: Any) -> Any:
         lambda x: isinstance(x, Or), pairs)
 
 
-def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list, list, list]:
+def _rational_parts(entries: list, what: str) -> tuple[list, list, list]:
     """The symbols, the algebraic numbers and the numerators and denominators of ``entries``.
 
-    With ``trig``, ``sin(q)`` and ``cos(q)`` of symbols are first replaced by their
-    ring symbols (:func:`_trig_entries`).  Raises ``ValueError`` naming ``what``
-    (``"screws: expected entries"``, ...) for an entry that is not a rational function
-    of symbols (and, with ``trig``, of sin and cos of symbols) with rational or
-    algebraic coefficients.
+    ``sin(q)`` and ``cos(q)`` of symbols are first replaced by their ring symbols
+    (:func:`_trig_entries`).  Raises ``ValueError`` naming ``what`` (``"screws: expected
+    entries"``, ...) for an entry that is not a rational function of symbols and of sin
+    and cos of symbols with rational or algebraic coefficients.
     """
-    if trig:
-        entries = _trig_entries(entries)
+    entries = _trig_entries(entries)
     syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
     numbers: list = []
     parts = [part for e in entries for part in e.as_numer_denom()]
@@ -752,10 +802,8 @@ def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list,
                 numbers.append(g)
                 continue
             raise ValueError(
-                f"{what} that are rational functions of symbols"
-                f"{' and polynomial in sin and cos of symbols' if trig else ''} with rational "
-                f"or algebraic coefficients, got {g} in an entry"
-                f"{'' if trig else ' (write cos/sin as a rational parametrisation or as point coordinates)'}"
+                f"{what} that are rational functions of symbols and polynomial in sin and "
+                f"cos of symbols with rational or algebraic coefficients, got {g} in an entry"
             )
     return syms, numbers, parts
 
@@ -763,7 +811,7 @@ def _rational_parts(entries: list, what: str, trig: bool = False) -> tuple[list,
 @lru_cache(maxsize=512)
 def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
     entries = list(M)
-    syms, numbers, parts = _rational_parts(entries, "screws: expected entries", trig=True)
+    syms, numbers, parts = _rational_parts(entries, "screws: expected entries")
     K = _field(tuple(sorted(numbers, key=str)))
     gens = tuple(syms) if syms else (Dummy("c"),)
     R = K[gens]
@@ -773,22 +821,25 @@ def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
         polys = [ring.from_dict({m: _coefficient(K, c) for m, c in d.items()}) for d in dicts]
     else:
         polys = []
-    cols = []
+    cols, scales = [], []
     for j in range(M.cols):
         # M is row-major: entry (i, j) is number i * cols + j, its numerator and denominator
-        nums = [polys[2 * (i * M.cols + j)] for i in range(6)]
-        dens = [polys[2 * (i * M.cols + j) + 1] for i in range(6)]
+        nums = [polys[2 * (i * M.cols + j)] for i in range(M.rows)]
+        dens = [polys[2 * (i * M.cols + j) + 1] for i in range(M.rows)]
         if all(d.is_ground for d in dens):
             cols.append(tuple(n if d == 1 else n * K.quo(K.one, d.LC)
                               for n, d in zip(nums, dens, strict=True)))
+            scales.append(R.one)
             continue
         den = R.one
         for d in dens:
             den = R.lcm(den, d)
         cols.append(tuple(n * R.exquo(den, d) for n, d in zip(nums, dens, strict=True)))
+        scales.append(den)
     if _relations(R):
         cols = [tuple(_reduce(e, R) for e in col) for col in cols]
-    return _Ring(R, tuple(syms), tuple(cols))
+        scales = [_reduce(d, R) for d in scales]
+    return _Ring(R, tuple(syms), tuple(cols), tuple(scales))
 
 
 def _dm(rows, R) -> DomainMatrix:
@@ -1255,7 +1306,8 @@ def _circle_points(e: Any, q: Any) -> tuple | None:
     """
     S, C = _trig_symbol(sin, q), _trig_symbol(cos, q)
     t = Dummy("t", real=True)
-    num = fraction(cancel(e.xreplace({S: 2 * t / (1 + t**2), C: (1 - t**2) / (1 + t**2)})))[0]
+    s, c = _on_circle(t)
+    num = fraction(cancel(e.xreplace({S: s, C: c})))[0]
     values: list = []
     if num.has(t) and not _rational_domain(Poly(num, t)):
         # radical coefficients: decided only where the circle has no point but q = pi
@@ -1420,7 +1472,7 @@ def _substitute_nonzero(nonzero: tuple, pairs: tuple) -> tuple | None:
             out.append(g)
             continue
         num = fraction(cancel(_substitute(g, pairs)))[0]
-        if num == 0:
+        if num == 0 or (num.has(sin, cos) and _vanishes(num)):  # zero on the circle too
             return None
         out.extend(f for f, _ in factor_list(num)[1] if not f.is_number)
     return tuple(out)

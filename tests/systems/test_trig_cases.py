@@ -197,3 +197,14 @@ def test_a_crank_four_bar_folds_at_zero_and_pi():
         (Ne(sin(q), 0), 1), (Eq(sin(q), 0) & Eq(cos(q), 1), 2), (Eq(sin(q), 0) & Eq(cos(q), -1), 2)]
     for value, expected in ((0, 2), (pi, 2), (pi / 3, 1), (pi / 2, 1)):
         assert mech.xreplace({q: value}).mobility().mobility == expected
+
+
+def test_a_substitution_that_makes_an_assumed_factor_vanish_on_the_circle_contradicts_the_case():
+    # x = 1 - sin(q)**2 makes the factor x - cos(q)**2, assumed non-zero by the case, zero on
+    # the whole circle (not as an expression): the case has no point
+    from screwsym.systems.screw_system import _substitute_nonzero
+
+    q, x = symbols("q x", real=True)
+    assert _substitute_nonzero((x - cos(q) ** 2,), ((x, 1 - sin(q) ** 2),)) is None
+    kept = _substitute_nonzero((x - cos(q),), ((x, 1 - sin(q) ** 2),))
+    assert kept is not None and len(kept) == 1
