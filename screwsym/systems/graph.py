@@ -864,18 +864,20 @@ class Mechanism(ScrewsymBasic):
             return ScrewSystem(kind=Twist)
         return ScrewSystem(*members).basis()
 
-    def motion(self, link: Any, relative_to: Any = None) -> str:
+    def motion(self, link: Any, relative_to: Any = None) -> str | None:
         """The motion type of ``link`` relative to ``relative_to``: ``"3T"``, ``"1R"``, ``"1H"``, ...
 
         The label of :func:`~screwsym.systems.mechanism.motion_of` for
         :meth:`twists`: translations, rotations, helical freedoms (translations
         first, "3T1R"), generic in the symbols; :meth:`helical_pitches` gives
-        the pitch of each helical freedom.
+        the pitch of each helical freedom.  None where the helical freedoms depend
+        on the signs of the symbols (see ``motion_of``).
         """
         return motion_of(self.twists(link, relative_to)).motion
 
-    def helical_pitches(self, link: Any, relative_to: Any = None) -> tuple:
-        """The pitches of the helical freedoms ("H" in :meth:`motion`) of ``link`` relative to ``relative_to``."""
+    def helical_pitches(self, link: Any, relative_to: Any = None) -> tuple | None:
+        """The pitches of the helical freedoms ("H" in :meth:`motion`) of ``link`` relative to
+        ``relative_to`` (None with :meth:`motion`)."""
         return motion_of(self.twists(link, relative_to)).helical_pitches
 
     def _link_number(self, link: Any, name: str) -> int:
