@@ -22,6 +22,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import textwrap
 import time
 
@@ -77,6 +78,8 @@ def _plain(e, args):
 
 
 def part_c(terms: int, depth: int, backends: list[str]) -> None:
+    # compiled and generated anew: a disk cache of an earlier run would be read back instead
+    os.environ["SCREWSYM_CACHE_DIR"] = tempfile.mkdtemp(prefix="bench-codegen-large-")
     rows = []
     for label, build in (("wide", lambda: (wide(terms), [x, y, z], XYZ)),
                          ("UR5 joint-4 torque, expanded", ur5),
