@@ -35,9 +35,11 @@ polynomial is not ``x``).
 
 from __future__ import annotations
 
+import math
 import random
 from collections.abc import Iterable
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import Any
 
 from sympy import (
@@ -62,6 +64,8 @@ from sympy import (
     tan,
 )
 from sympy.matrices import MatrixBase
+from sympy.polys.domains import QQ
+from sympy.polys.rings import PolyRing
 
 __all__ = ["Decision", "decide_zero", "decide_nonzero", "provably_nonnegative", "rational_point"]
 
@@ -139,10 +143,116 @@ def _radical_stage(e: Expr) -> Expr:
     return _sign_powers(cancel(e))
 
 
+# ------------------------------------------------ the rational-function fast path
+class _NotExact(Exception):
+    """The expression has a part the fast path does not take (a float, a zero denominator)."""
+
+
+def _generators(e: Expr) -> list[Expr]:
+    """The symbols and non-rational parts (roots, functions) of ``e``, in a fixed order.
+
+    A power ``b**(p/q)`` contributes the generator ``b**(1/q)``; every other part
+    that is not a sum, a product, an integer power or a rational number is a
+    generator as it is.
+    """
+    gens: dict[Expr, None] = {}
+    seen: set[int] = set()
+    stack = [e]
+    while stack:
+        x = stack.pop()
+        if id(x) in seen:
+            continue
+        seen.add(id(x))
+        if x.is_Rational:
+            continue
+        if x.is_Float:
+            raise _NotExact
+        if x.is_Add or x.is_Mul:
+            stack.extend(x.args)
+        elif x.is_Pow and x.exp.is_Integer:
+            stack.append(x.base)
+        elif x.is_Pow and x.exp.is_Rational:
+            gens[Pow(x.base, Rational(1, x.exp.q))] = None
+        else:
+            gens[x] = None
+    return sorted(gens, key=str)
+
+
+def _rational_parts(e: Expr) -> tuple[Any, Any]:
+    """Numerator and denominator of ``e`` as polynomials over QQ in its generators.
+
+    Built by exact ring arithmetic from the expression tree (no ``expand``, no
+    ``cancel``, no greatest common divisors).  The generators stand for
+    themselves, so the map from the ring to expressions is a homomorphism:
+    a numerator that is the zero polynomial proves ``e`` zero (wherever it is
+    defined), whatever relations the generators may satisfy.  Raises
+    ``_NotExact`` for floats and for a denominator that is the zero polynomial.
+    """
+    gens = _generators(e)
+    R = PolyRing(gens, QQ, "lex") if gens else PolyRing([Dummy()], QQ, "lex")
+    index = {g: R.gens[i] for i, g in enumerate(gens)}
+    one = R.one
+    memo: dict[int, tuple[Any, Any]] = {}
+
+    def conv(x: Expr) -> tuple[Any, Any]:
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        if x.is_Rational:
+            out = (R.ground_new(QQ(int(x.p), int(x.q))), one)
+        elif x.is_Add:
+            num, den = conv(x.args[0])
+            for a in x.args[1:]:
+                n, d = conv(a)
+                if d == den:
+                    num = num + n
+                else:
+                    num, den = num * d + n * den, den * d
+            out = (num, den)
+        elif x.is_Mul:
+            num, den = one, one
+            for a in x.args:
+                n, d = conv(a)
+                num, den = num * n, den * d
+            out = (num, den)
+        elif x.is_Pow and x.exp.is_Integer:
+            n, d = conv(x.base)
+            k = int(x.exp)
+            if k < 0:
+                n, d, k = d, n, -k
+            out = (n**k, d**k)
+        elif x.is_Pow and x.exp.is_Rational:
+            g = index[Pow(x.base, Rational(1, x.exp.q))]
+            k = int(x.exp.p)
+            out = (g**k, one) if k >= 0 else (one, g ** (-k))
+        else:
+            out = (index[x], one)
+        if not out[1]:
+            raise _NotExact
+        memo[id(x)] = out
+        return out
+
+    return conv(e)
+
+
+def _fast_zero(e: Expr) -> str | None:
+    """``'expand'`` or ``'cancel'`` when ``e`` is zero as a rational function of its generators."""
+    try:
+        num, den = _rational_parts(e)
+    except _NotExact:
+        return None
+    if num:
+        return None
+    return "expand" if den.is_ground else "cancel"
+
+
 def _rewrite(e: Expr) -> tuple[Expr, str]:
     e = sympify(e, strict=True)
     if e == 0:
         return S.Zero, "exact"
+    fast = _fast_zero(e)
+    if fast is not None:
+        return S.Zero, fast
     e = expand(e)
     if e == 0:
         return S.Zero, "expand"
@@ -224,8 +334,70 @@ def rational_point(syms: Iterable[Symbol], rng: random.Random) -> dict[Symbol, R
     return {s: _random_value(s, rng) for s in syms}
 
 
+class _Undefined(Exception):
+    """A division by zero in :func:`_rational_value`."""
+
+
+def _rational_value(e: Expr, point: dict) -> Fraction | None:
+    """``e`` at ``point`` in Python's exact fractions, or None where that is not rational.
+
+    Sums, products, integer powers, rational numbers, the point's symbols, and
+    square roots of rational squares, ``Abs`` and ``sign`` of rationals; anything
+    else (an irrational root, a function) gives None and the caller evaluates
+    with SymPy.  Raises ``_Undefined`` on a division by zero.
+    """
+    memo: dict[int, Fraction] = {}
+
+    def ev(x: Expr) -> Fraction:
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        if x.is_Rational:
+            out = Fraction(int(x.p), int(x.q))
+        elif x.is_Symbol:
+            v = point[x]
+            out = Fraction(int(v.p), int(v.q))
+        elif x.is_Add:
+            out = sum((ev(a) for a in x.args), Fraction(0))
+        elif x.is_Mul:
+            out = Fraction(1)
+            for a in x.args:
+                out *= ev(a)
+        elif x.is_Pow and x.exp.is_Integer:
+            b, k = ev(x.base), int(x.exp)
+            if k < 0 and b == 0:
+                raise _Undefined
+            out = b**k
+        elif x.is_Pow and x.exp == S.Half:
+            b = ev(x.base)
+            rn, rd = math.isqrt(b.numerator) if b >= 0 else -1, math.isqrt(b.denominator)
+            if rn < 0 or rn * rn != b.numerator or rd * rd != b.denominator:
+                raise _NotExact
+            out = Fraction(rn, rd)
+        elif isinstance(x, Abs):
+            out = abs(ev(x.args[0]))
+        elif isinstance(x, sign):
+            b = ev(x.args[0])
+            out = Fraction((b > 0) - (b < 0))
+        else:
+            raise _NotExact
+        memo[id(x)] = out
+        return out
+
+    try:
+        return ev(e)
+    except (_NotExact, KeyError):
+        return None
+
+
 def _value(e: Expr, point: dict) -> Expr | None:
     """``e`` at ``point``, exactly when possible; None where it is undefined."""
+    try:
+        fast = _rational_value(e, point)
+    except _Undefined:
+        return None
+    if fast is not None:
+        return Rational(fast.numerator, fast.denominator)
     v = e.xreplace(point)
     if v.has(S.NaN, S.ComplexInfinity, S.Infinity, S.NegativeInfinity):
         return None
