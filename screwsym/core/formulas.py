@@ -20,7 +20,6 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
 from sympy.matrices import MatrixBase
 
 __all__ = ["foot_point", "pitch_ratio", "dual_part", "moved", "SWAP"]
@@ -32,7 +31,11 @@ SWAP = (3, 4, 5, 0, 1, 2)
 
 
 def _cross(a: Any, b: Any) -> Any:
-    return a.cross(b) if isinstance(a, MatrixBase) else np.cross(a, b)
+    if isinstance(a, MatrixBase):
+        return a.cross(b)
+    import numpy as np
+
+    return np.cross(a, b)
 
 
 def foot_point(S: Any, S0: Any) -> Any:

@@ -33,7 +33,6 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union, cast, overload
 
-import numpy as np
 from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 from sympy.matrices import MatrixBase
 
@@ -55,6 +54,7 @@ from .formulas import dual_part, foot_point, moved, pitch_ratio
 from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
 if TYPE_CHECKING:
+    import numpy as np
     from numpy.typing import DTypeLike
     from typing_extensions import Self
 
@@ -85,15 +85,15 @@ __all__ = [
 # say what the functions take, and the checks refuse the rest at run time.
 
 #: a real scalar: a SymPy expression (its symbols declared ``real=True``), a Python or NumPy number
-ScalarLike: TypeAlias = Expr | int | float | np.integer | np.floating
+ScalarLike: TypeAlias = "Expr | int | float | np.integer | np.floating"
 #: a 3-vector: a 3x1 or 1x3 SymPy matrix, a list or tuple of three scalars, or a NumPy array
-VectorLike: TypeAlias = MatrixBase | Sequence[ScalarLike] | np.ndarray
+VectorLike: TypeAlias = "MatrixBase | Sequence[ScalarLike] | np.ndarray"
 #: a 6-vector ``(S; S0)``: a 6x1 or 1x6 SymPy matrix, a list or tuple of six, or a NumPy array
-SixVectorLike: TypeAlias = MatrixBase | Sequence[ScalarLike] | np.ndarray
+SixVectorLike: TypeAlias = "MatrixBase | Sequence[ScalarLike] | np.ndarray"
 #: a matrix: a SymPy matrix, nested lists or tuples of scalars, or a 2-d NumPy array
-MatrixLike: TypeAlias = MatrixBase | Sequence[Sequence[ScalarLike]] | np.ndarray
+MatrixLike: TypeAlias = "MatrixBase | Sequence[Sequence[ScalarLike]] | np.ndarray"
 #: a screw: a Screw (of a kind the function accepts), or a 6-vector in the book's order (S; S0)
-ScrewLike: TypeAlias = Union["Screw", SixVectorLike]
+ScrewLike: TypeAlias = 'Union["Screw", SixVectorLike]'
 
 
 class Screw(ScrewsymBasic):
@@ -249,6 +249,8 @@ class Screw(ScrewsymBasic):
         >>> np.asarray(Screw([1, 1, 0], [1, 0, 0]), dtype=float)
         array([1., 1., 0., 1., 0., 0.])
         """
+        import numpy as np
+
         entries = list(self.matrix)
         free = self.free_symbols
         if free:
