@@ -66,12 +66,12 @@ def _jacobian_at(vec, params) -> Matrix:
             out = (Fraction(v), g)
         elif x.is_Add:
             parts = [ev(a, memo) for a in x.args]
-            out = (sum(v for v, _ in parts), [sum(col) for col in zip(*(g for _, g in parts))])
+            out = (sum(v for v, _ in parts), [sum(col) for col in zip(*(g for _, g in parts), strict=True)])
         elif x.is_Mul:
             v, g = Fraction(1), zero
             for a in x.args:
                 va, ga = ev(a, memo)
-                v, g = v * va, [v * dga + va * dg for dg, dga in zip(g, ga)]
+                v, g = v * va, [v * dga + va * dg for dg, dga in zip(g, ga, strict=True)]
             out = (v, g)
         elif x.is_Pow and x.exp.is_Integer:
             vb, gb = ev(x.base, memo)

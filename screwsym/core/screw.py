@@ -31,7 +31,7 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Chapter 1.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union, cast, overload
+from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, cast, overload
 
 from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 from sympy.matrices import MatrixBase
@@ -93,7 +93,7 @@ SixVectorLike: TypeAlias = "MatrixBase | Sequence[ScalarLike] | np.ndarray"
 #: a matrix: a SymPy matrix, nested lists or tuples of scalars, or a 2-d NumPy array
 MatrixLike: TypeAlias = "MatrixBase | Sequence[Sequence[ScalarLike]] | np.ndarray"
 #: a screw: a Screw (of a kind the function accepts), or a 6-vector in the book's order (S; S0)
-ScrewLike: TypeAlias = 'Union["Screw", SixVectorLike]'
+ScrewLike: TypeAlias = "Screw | SixVectorLike"
 
 
 class Screw(ScrewsymBasic):
