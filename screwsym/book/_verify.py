@@ -47,6 +47,7 @@ from sympy import (
     Basic,
     Dummy,
     Expr,
+    Mul,
     Pow,
     Rational,
     S,
@@ -65,6 +66,7 @@ from sympy import (
 )
 from sympy.matrices import MatrixBase
 from sympy.polys.domains import QQ
+from sympy.polys.polyerrors import CoercionFailed, PolynomialError
 from sympy.polys.rings import PolyRing
 
 __all__ = ["Decision", "decide_zero", "decide_nonzero", "provably_nonnegative", "rational_point"]
@@ -151,7 +153,7 @@ class _NotExact(Exception):
 def _generators(e: Expr) -> list[Expr]:
     """The symbols and non-rational parts (roots, functions) of ``e``, in a fixed order.
 
-    A power ``b**(p/q)`` contributes the generator ``b**(1/q)``; every other part
+    A power ``b**(p/q)`` contributes the generator ``expand(b)**(1/q)``; every other part
     that is not a sum, a product, an integer power or a rational number is a
     generator as it is.
     """
@@ -172,10 +174,15 @@ def _generators(e: Expr) -> list[Expr]:
         elif x.is_Pow and x.exp.is_Integer:
             stack.append(x.base)
         elif x.is_Pow and x.exp.is_Rational:
-            gens[Pow(x.base, Rational(1, x.exp.q))] = None
+            gens[_root_generator(x)] = None
         else:
             gens[x] = None
     return sorted(gens, key=str)
+
+
+def _root_generator(x: Expr) -> Expr:
+    """The generator of ``b**(p/q)``: ``expand(b)**(1/q)`` (equal radicands, one generator)."""
+    return Pow(expand(x.base), Rational(1, x.exp.q))
 
 
 def _rational_parts(e: Expr) -> tuple[Any, Any]:
@@ -222,7 +229,7 @@ def _rational_parts(e: Expr) -> tuple[Any, Any]:
                 n, d, k = d, n, -k
             out = (n**k, d**k)
         elif x.is_Pow and x.exp.is_Rational:
-            g = index[Pow(x.base, Rational(1, x.exp.q))]
+            g = index[_root_generator(x)]
             k = int(x.exp.p)
             out = (g**k, one) if k >= 0 else (one, g ** (-k))
         else:
@@ -246,6 +253,126 @@ def _fast_zero(e: Expr) -> str | None:
     return "expand" if den.is_ground else "cancel"
 
 
+def _reduced(p: Any) -> Any:
+    """``p`` reduced by the relations of its generators, an element of the same ring.
+
+    ``sign(x)**2 -> 1`` (true wherever ``x != 0``, the standard of the radical
+    stage) and ``cos(a)**2 -> 1 - sin(a)**2`` for every angle whose sine and
+    cosine are both generators (exact).  The result is congruent to ``p``
+    modulo those relations, so a zero result proves ``p`` zero on them.
+    """
+    R = p.ring
+    signs = [i for i, g in enumerate(R.symbols) if isinstance(g, sign)]
+    sines = {g.args[0]: i for i, g in enumerate(R.symbols) if isinstance(g, sin)}
+    pairs = [(sines[g.args[0]], i) for i, g in enumerate(R.symbols)
+             if isinstance(g, cos) and g.args[0] in sines]
+    if signs:
+        terms: dict = {}
+        for monom, coeff in p.terms():
+            m = list(monom)
+            for i in signs:
+                m[i] %= 2
+            m = tuple(m)
+            terms[m] = terms.get(m, R.domain.zero) + coeff
+        p = R.from_dict({m: c for m, c in terms.items() if c})
+    for i_s, i_c in pairs:
+        if p.degree(R.gens[i_c]) < 2:
+            continue
+        one_minus_s2 = R.one - R.gens[i_s] ** 2
+        out = R.zero
+        for monom, coeff in p.terms():
+            m = list(monom)
+            k, m[i_c] = m[i_c], m[i_c] % 2
+            out += R.from_dict({tuple(m): coeff}) * one_minus_s2 ** (k // 2)
+        p = out
+    return p
+
+
+def _sign_of(x: Expr) -> Expr:
+    return sign(expand(x))
+
+
+class _Canonical:
+    """The radical stage's rewrites, on the expression tree, with ring arithmetic.
+
+    ``Abs(x) -> x sign(x)`` for real ``x``; ``sign`` of an expanded argument;
+    every root ``b**(p/q)`` of a radicand brought to lowest terms, reduced by
+    :func:`_reduced` and factored, so that SymPy splits off the factors it
+    knows to be nonnegative (``sqrt(k**2 y) = Abs(k) sqrt(y)``).
+    """
+
+    def __init__(self) -> None:
+        self.memo: dict[int, Expr] = {}
+        self.roots: set[Expr] = set()  # the roots already in canonical form
+
+    def __call__(self, x: Expr) -> Expr:
+        got = self.memo.get(id(x))
+        if got is None:
+            got = self.memo[id(x)] = self._canon(x)
+        return got
+
+    def _canon(self, x: Expr) -> Expr:
+        if x.is_Atom:
+            return x
+        if x.is_Add or x.is_Mul:
+            args = [self(a) for a in x.args]
+            return x if all(a is b for a, b in zip(args, x.args, strict=True)) else x.func(*args)
+        if x.is_Pow:
+            if x.exp.is_Integer:
+                b = self(x.base)
+                return x if b is x.base else Pow(b, x.exp)
+            if x.exp.is_Rational and x.base.free_symbols and x not in self.roots:
+                return self._split(Pow(self._radicand(x.base), x.exp))
+            return x
+        if isinstance(x, Abs):
+            a = self(x.args[0])
+            return a * _sign_of(a) if a.is_real else Abs(a)
+        if isinstance(x, sign):
+            return _sign_of(self(x.args[0]))
+        return x
+
+    def _radicand(self, b: Expr) -> Expr:
+        num, den = _rational_parts(self(b))
+        num, den = _reduced(num), _reduced(den)
+        if not den:
+            raise _NotExact
+        to_sympy = num.ring.domain.to_sympy
+        parts = []
+        for p, k in ((num, 1), (den, -1)):
+            c, factors = p.factor_list()
+            parts.append(to_sympy(c) ** k)
+            parts.extend(f.as_expr() ** (m * k) for f, m in factors)
+        return Mul(*parts)
+
+    def _split(self, y: Expr) -> Expr:
+        """The root as SymPy split it: its roots marked canonical, ``Abs`` rewritten."""
+        out = []
+        for f in Mul.make_args(y):
+            if f.is_Pow and f.exp.is_Rational and not f.exp.is_Integer:
+                base = f.base ** Rational(1, f.exp.q)
+                self.roots.update((f, base))
+                out.append(f)
+            elif f.is_Pow and isinstance(f.base, Abs) or isinstance(f, Abs):
+                out.append(self(f))
+            else:
+                out.append(f)
+        return Mul(*out)
+
+
+def _fast_generic_zero(e: Expr) -> str | None:
+    """``'radicals'`` or ``'trig'`` when the relations of :func:`_reduced` and the rewrites
+    of :class:`_Canonical` bring ``e`` to zero as a rational function of its generators."""
+    try:
+        c = _Canonical()
+        e2 = c(e)
+        num, den = _rational_parts(e2)
+        if _reduced(num) or not _reduced(den):
+            return None
+    except (_NotExact, PolynomialError, CoercionFailed):
+        return None
+    return "radicals" if (e2 != e or c.roots) else "trig"
+
+
 def _rewrite(e: Expr) -> tuple[Expr, str]:
     e = sympify(e, strict=True)
     if e == 0:
@@ -253,6 +380,10 @@ def _rewrite(e: Expr) -> tuple[Expr, str]:
     fast = _fast_zero(e)
     if fast is not None:
         return S.Zero, fast
+    if _has_trig(e) or _has_radicals(e):
+        fast = _fast_generic_zero(e)
+        if fast is not None:
+            return S.Zero, fast
     e = expand(e)
     if e == 0:
         return S.Zero, "expand"
