@@ -151,7 +151,7 @@ class _NotExact(Exception):
 
 
 def _generators(e: Expr) -> list[Expr]:
-    """The symbols and non-rational parts (roots, functions) of ``e``, in a fixed order.
+    """The symbols and non-rational parts (roots, functions) of ``e``.
 
     A power ``b**(p/q)`` contributes the generator ``expand(b)**(1/q)``; every other part
     that is not a sum, a product, an integer power or a rational number is a
@@ -177,7 +177,7 @@ def _generators(e: Expr) -> list[Expr]:
             gens[_root_generator(x)] = None
         else:
             gens[x] = None
-    return sorted(gens, key=str)
+    return list(gens)  # the order met (a zero polynomial is zero in every order)
 
 
 def _root_generator(x: Expr) -> Expr:

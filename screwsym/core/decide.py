@@ -106,7 +106,7 @@ def _generators(e: Expr) -> list[Expr]:
             gens[Pow(x.base, Rational(1, x.exp.q))] = None
         else:
             gens[x] = None
-    return sorted(gens, key=str)
+    return list(gens)  # any fixed order: the zero polynomial is zero in every order
 
 
 def _zero_rational(expr: Expr) -> bool:
@@ -195,11 +195,11 @@ def is_zero(expr: Expr) -> bool | None:
     >>> is_zero(h*l**2 + h*m**2)            # h (l**2 + m**2): both factors non-zero
     False
     """
+    if not expr.is_Atom and _zero_rational(expr):
+        return True  # before the assumptions, which are slow to find it of a large expression
     decided = expr.is_zero
     if decided is not None or expr.is_number or isinstance(expr, Symbol):
         return decided  # a symbol is its own canonical form and its only factor
-    if _zero_rational(expr):
-        return True
     canonical = expand(expr)
     if _has_denominator(canonical):
         canonical = cancel(canonical)

@@ -421,7 +421,10 @@ class Screw(ScrewsymBasic):
         return self + (-other)
 
     def __neg__(self) -> Self:
-        return type(self)(-self.S, -self.S0)
+        # -$ = (-S; -S0) is of the same kind without a new check: the kinds' conditions
+        # (a line's S != 0 and S . S0 = 0, 1.10) are homogeneous, so they hold for -$ as
+        # they held for $ (proving S . S0 = 0 again was most of a symbolic line's negation)
+        return ScrewsymBasic.__new__(type(self), -self.S, -self.S0)
 
     def __pos__(self) -> Self:
         return self
