@@ -61,6 +61,8 @@ from sympy.matrices import MatrixBase
 from sympy.polys.domains import QQ
 from sympy.polys.rings import PolyRing
 
+from .formulas import _dot
+
 __all__ = [
     "is_zero",
     "is_zero_vector",
@@ -229,7 +231,7 @@ def is_zero_vector(v: MatrixBase) -> bool | None:
 
 def norm(v: MatrixBase) -> Expr:
     """The Euclidean length ``sqrt(v . v)`` of a column."""
-    return sqrt(v.dot(v))
+    return sqrt(_dot(v, v))
 
 
 def float_tau(*exprs: Expr) -> Expr | None:

@@ -50,7 +50,7 @@ from .checks import (
     refusing_strings,
 )
 from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
-from .formulas import dual_part, foot_point, moved, pitch_ratio
+from .formulas import _dot, dual_part, foot_point, moved, pitch_ratio
 from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
 if TYPE_CHECKING:
@@ -582,7 +582,7 @@ def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
     ``S . S`` is a common factor whenever the dual part is ``r x S + h S``
     (the cross term vanishes on expansion), which gives ``h``.
     """
-    dot = s.S.dot(s.S0)
+    dot = _dot(s.S, s.S0)
     if s._pitch_is_zero:
         return S.Zero
     if tidy and float_tau(dot) is None:
@@ -876,7 +876,7 @@ def _classify(s: Screw) -> str | None:
         return None
     if s._pitch_is_zero:
         return "line"
-    dot_zero = is_zero_scaled(s.S.dot(s.S0), norm(s.S) * norm(s.S0))
+    dot_zero = is_zero_scaled(_dot(s.S, s.S0), norm(s.S) * norm(s.S0))
     return None if dot_zero is None else ("line" if dot_zero else "screw")
 
 
@@ -937,7 +937,7 @@ def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True) -> Screw:
 
 
 def _reciprocal_product(s1: Screw, s2: Screw, tidy: bool = False) -> Expr:
-    return _finish(s1.S.dot(s2.S0) + s2.S.dot(s1.S0), tidy)
+    return _finish(_dot(s1.S, s2.S0) + _dot(s2.S, s1.S0), tidy)
 
 
 def _is_reciprocal(s1: Screw, s2: Screw) -> bool | None:
