@@ -470,55 +470,70 @@ class _Undefined(Exception):
 
 
 def _rational_value(e: Expr, point: dict) -> Fraction | None:
-    """``e`` at ``point`` in Python's exact fractions, or None where that is not rational.
+    """``e`` at ``point`` in exact rational arithmetic, or None where that is not rational.
 
     Sums, products, integer powers, rational numbers, the point's symbols, and
     square roots of rational squares, ``Abs`` and ``sign`` of rationals; anything
     else (an irrational root, a function) gives None and the caller evaluates
-    with SymPy.  Raises ``_Undefined`` on a division by zero.
+    with SymPy.  Raises ``_Undefined`` on a division by zero.  The values are
+    pairs of integers (numerator, positive denominator), reduced only where a
+    root needs it and at the end.
     """
-    memo: dict[int, Fraction] = {}
+    memo: dict[int, tuple[int, int]] = {}
 
-    def ev(x: Expr) -> Fraction:
+    def ev(x: Expr) -> tuple[int, int]:
         got = memo.get(id(x))
         if got is not None:
             return got
         if x.is_Rational:
-            out = Fraction(int(x.p), int(x.q))
+            out = (int(x.p), int(x.q))
         elif x.is_Symbol:
             v = point[x]
-            out = Fraction(int(v.p), int(v.q))
+            out = (int(v.p), int(v.q))
         elif x.is_Add:
-            out = sum((ev(a) for a in x.args), Fraction(0))
-        elif x.is_Mul:
-            out = Fraction(1)
+            n, d = 0, 1
             for a in x.args:
-                out *= ev(a)
+                na, da = ev(a)
+                n, d = (n + na, d) if da == d else (n * da + na * d, d * da)
+            out = (n, d)
+        elif x.is_Mul:
+            n, d = 1, 1
+            for a in x.args:
+                na, da = ev(a)
+                n, d = n * na, d * da
+            out = (n, d)
         elif x.is_Pow and x.exp.is_Integer:
-            b, k = ev(x.base), int(x.exp)
-            if k < 0 and b == 0:
-                raise _Undefined
-            out = b**k
+            n, d = ev(x.base)
+            k = int(x.exp)
+            if k < 0:
+                if n == 0:
+                    raise _Undefined
+                n, d, k = (d, n, -k) if n > 0 else (-d, -n, -k)
+            out = (n**k, d**k)
         elif x.is_Pow and x.exp == S.Half:
-            b = ev(x.base)
-            rn, rd = math.isqrt(b.numerator) if b >= 0 else -1, math.isqrt(b.denominator)
-            if rn < 0 or rn * rn != b.numerator or rd * rd != b.denominator:
+            n, d = ev(x.base)
+            g = math.gcd(n, d)
+            n, d = n // g, d // g
+            rn, rd = (math.isqrt(n), math.isqrt(d)) if n >= 0 else (-1, 0)
+            if rn < 0 or rn * rn != n or rd * rd != d:
                 raise _NotExact
-            out = Fraction(rn, rd)
+            out = (rn, rd)
         elif isinstance(x, Abs):
-            out = abs(ev(x.args[0]))
+            n, d = ev(x.args[0])
+            out = (abs(n), d)
         elif isinstance(x, sign):
-            b = ev(x.args[0])
-            out = Fraction((b > 0) - (b < 0))
+            n, _ = ev(x.args[0])
+            out = ((n > 0) - (n < 0), 1)
         else:
             raise _NotExact
         memo[id(x)] = out
         return out
 
     try:
-        return ev(e)
+        n, d = ev(e)
     except (_NotExact, KeyError):
         return None
+    return Fraction(n, d)
 
 
 def _value(e: Expr, point: dict) -> Expr | None:

@@ -375,7 +375,45 @@ def _to_ring(exprs: list) -> list:
     R = ring(gens, ZZ if integral else QQ)[0] if gens else None
     if R is None:
         raise GeneratorsError("no symbols")
-    return [R.from_expr(e) for e in exprs]
+    index = dict(zip(R.symbols, R.gens, strict=True))
+    return [_ring_element(R, index, e) for e in exprs]
+
+
+def _ring_element(R: Any, index: dict, e: Expr) -> Any:
+    """The polynomial expression ``e`` as an element of ``R``, by ring arithmetic on its tree.
+
+    What ``R.from_expr`` gives (ring elements are canonical), without its
+    per-node search for powers of generators; ``CoercionFailed`` for anything
+    that is not a polynomial in ``R``'s symbols over its domain.
+    """
+    memo: dict[int, Any] = {}
+    domain = R.domain
+
+    def conv(x: Expr) -> Any:
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        g = index.get(x) if x.is_Symbol else None
+        if g is not None:
+            out = g
+        elif x.is_Rational:
+            out = R.ground_new(domain.convert(x))
+        elif x.is_Add:
+            out = R.zero
+            for a in x.args:
+                out += conv(a)
+        elif x.is_Mul:
+            out = R.one
+            for a in x.args:
+                out *= conv(a)
+        elif x.is_Pow and x.exp.is_Integer and x.exp >= 0:
+            out = conv(x.base) ** int(x.exp)
+        else:
+            raise CoercionFailed(f"not a polynomial in {R.symbols}: {x}")
+        memo[id(x)] = out
+        return out
+
+    return conv(e)
 
 
 def _pulled(P) -> Expr:
