@@ -111,8 +111,8 @@ def _generators(e: Expr) -> list[Expr]:
     return list(gens)  # any fixed order: the zero polynomial is zero in every order
 
 
-def _zero_rational(expr: Expr) -> bool:
-    """True when ``expr`` is zero as a rational function of its generators (else False).
+def _rational_parts(expr: Expr) -> tuple | None:
+    """Numerator and denominator of ``expr`` as ring elements, or None (floats, no symbols).
 
     The numerator and the denominator are built by exact arithmetic in a sparse
     polynomial ring over QQ whose generators are the symbols, roots and
@@ -125,9 +125,9 @@ def _zero_rational(expr: Expr) -> bool:
     try:
         gens = _generators(expr)
     except _NotRational:
-        return False
+        return None
     if not gens:
-        return False
+        return None
     R = PolyRing(gens, QQ, "lex")
     index = dict(zip(gens, R.gens, strict=True))
     one = R.one
@@ -172,9 +172,9 @@ def _zero_rational(expr: Expr) -> bool:
         return out
 
     try:
-        return not conv(expr)[0]
+        return conv(expr)
     except _NotRational:
-        return False
+        return None
 
 
 def is_zero(expr: Expr) -> bool | None:
@@ -197,11 +197,20 @@ def is_zero(expr: Expr) -> bool | None:
     >>> is_zero(h*l**2 + h*m**2)            # h (l**2 + m**2): both factors non-zero
     False
     """
-    if not expr.is_Atom and _zero_rational(expr):
+    parts = None if expr.is_Atom else _rational_parts(expr)
+    if parts is not None and not parts[0]:
         return True  # before the assumptions, which are slow to find it of a large expression
     decided = expr.is_zero
     if decided is not None or expr.is_number or isinstance(expr, Symbol):
         return decided  # a symbol is its own canonical form and its only factor
+    if parts is not None and all(isinstance(g, Symbol) for g in parts[0].ring.symbols):
+        # a rational function of independent symbols: its numerator in lowest terms,
+        # factored in the ring, is what expand, cancel and factor give (up to signs)
+        numerator = parts[0].cancel(parts[1])[0]
+        decisions = [f.as_expr().is_zero for f, _ in numerator.factor_list()[1]]
+        if any(d is True for d in decisions):  # pragma: no cover - a symbol declared zero
+            return True
+        return False if all(d is False for d in decisions) else None
     canonical = expand(expr)
     if _has_denominator(canonical):
         canonical = cancel(canonical)
