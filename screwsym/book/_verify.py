@@ -195,47 +195,76 @@ def _rational_parts(e: Expr) -> tuple[Any, Any]:
     defined), whatever relations the generators may satisfy.  Raises
     ``_NotExact`` for floats and for a denominator that is the zero polynomial.
     """
+    num, bases = _rational_parts_factored(e)
+    den = num.ring.one
+    for b, k in bases.items():
+        den = den * b**k
+    return num, den
+
+
+def _rational_parts_factored(e: Expr) -> tuple[Any, dict]:
+    """:func:`_rational_parts` with the denominator as ``{polynomial: exponent}``.
+
+    A sum is brought over the least common multiple of its terms' denominators
+    as they were built (the same polynomial is the same factor, to its highest
+    power), so the repeated denominators of a construction (``|S|**2``,
+    ``1 + a**2 + b**2``) do not multiply up; no polynomial is divided.
+    """
     gens = _generators(e)
     R = PolyRing(gens, QQ, "lex") if gens else PolyRing([Dummy()], QQ, "lex")
     index = {g: R.gens[i] for i, g in enumerate(gens)}
     one = R.one
-    memo: dict[int, tuple[Any, Any]] = {}
+    memo: dict[int, tuple[Any, dict]] = {}
 
-    def conv(x: Expr) -> tuple[Any, Any]:
+    def conv(x: Expr) -> tuple[Any, dict]:
         got = memo.get(id(x))
         if got is not None:
             return got
         if x.is_Rational:
-            out = (R.ground_new(QQ(int(x.p), int(x.q))), one)
+            out: tuple[Any, dict] = (R.ground_new(QQ(int(x.p), int(x.q))), {})
         elif x.is_Add:
-            num, den = conv(x.args[0])
-            for a in x.args[1:]:
-                n, d = conv(a)
-                if d == den:
-                    num = num + n
-                else:
-                    num, den = num * d + n * den, den * d
-            out = (num, den)
+            parts = [conv(a) for a in x.args]
+            common: dict = {}
+            for _, d in parts:
+                for b, k in d.items():
+                    if common.get(b, 0) < k:
+                        common[b] = k
+            num = R.zero
+            for n, d in parts:
+                for b, k in common.items():
+                    if k != d.get(b, 0):
+                        n = n * b ** (k - d.get(b, 0))
+                num += n
+            out = (num, common)
         elif x.is_Mul:
-            num, den = one, one
+            num, den = one, {}
             for a in x.args:
                 n, d = conv(a)
-                num, den = num * n, den * d
+                num = num * n
+                for b, k in d.items():
+                    den[b] = den.get(b, 0) + k
             out = (num, den)
         elif x.is_Pow and x.exp.is_Integer:
             n, d = conv(x.base)
             k = int(x.exp)
-            if k < 0:
-                n, d, k = d, n, -k
-            out = (n**k, d**k)
+            if k >= 0:
+                out = (n**k, {b: m * k for b, m in d.items()})
+            elif not n:
+                raise _NotExact  # a division by the zero polynomial
+            else:
+                num = one
+                for b, m in d.items():
+                    num = num * b ** (-m * k)
+                if n.is_ground:
+                    out = (num * R.ground_new(R.domain.one / n.LC ** (-k)), {})
+                else:
+                    out = (num, {n: -k})
         elif x.is_Pow and x.exp.is_Rational:
             g = index[_root_generator(x)]
             k = int(x.exp.p)
-            out = (g**k, one) if k >= 0 else (one, g ** (-k))
+            out = (g**k, {}) if k >= 0 else (one, {g: -k})
         else:
-            out = (index[x], one)
-        if not out[1]:
-            raise _NotExact
+            out = (index[x], {})
         memo[id(x)] = out
         return out
 
@@ -245,12 +274,12 @@ def _rational_parts(e: Expr) -> tuple[Any, Any]:
 def _fast_zero(e: Expr) -> str | None:
     """``'expand'`` or ``'cancel'`` when ``e`` is zero as a rational function of its generators."""
     try:
-        num, den = _rational_parts(e)
+        num, den = _rational_parts_factored(e)
     except _NotExact:
         return None
     if num:
         return None
-    return "expand" if den.is_ground else "cancel"
+    return "cancel" if den else "expand"
 
 
 def _reduced(p: Any) -> Any:
