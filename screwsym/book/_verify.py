@@ -39,7 +39,6 @@ import math
 import random
 from collections.abc import Iterable
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any
 
 from sympy import (
@@ -64,6 +63,7 @@ from sympy import (
     sympify,
     tan,
 )
+from sympy.core.function import Application
 from sympy.matrices import MatrixBase
 from sympy.polys.domains import QQ
 from sympy.polys.polyerrors import CoercionFailed, PolynomialError
@@ -495,86 +495,98 @@ def rational_point(syms: Iterable[Symbol], rng: random.Random) -> dict[Symbol, R
 
 
 class _Undefined(Exception):
-    """A division by zero in :func:`_rational_value`."""
+    """A division by zero in :func:`_exact_value`."""
 
 
-def _rational_value(e: Expr, point: dict) -> Fraction | None:
-    """``e`` at ``point`` in exact rational arithmetic, or None where that is not rational.
+def _exact_value(e: Expr, point: dict) -> Expr:
+    """``e`` at ``point``, exactly: what ``e.xreplace(point)`` evaluates to.
 
-    Sums, products, integer powers, rational numbers, the point's symbols, and
-    square roots of rational squares, ``Abs`` and ``sign`` of rationals; anything
-    else (an irrational root, a function) gives None and the caller evaluates
-    with SymPy.  Raises ``_Undefined`` on a division by zero.  The values are
-    pairs of integers (numerator, positive denominator), reduced only where a
-    root needs it and at the end.
+    The rational parts (sums, products, integer powers, rational numbers, the
+    point's symbols, square roots of rational squares, ``Abs`` and ``sign``)
+    are computed in pairs of Python integers (numerator, positive denominator);
+    only where a value is irrational (a root of a non-square, a function) is a
+    SymPy number built, from the exact values below it, with SymPy's automatic
+    evaluation.  Raises ``_Undefined`` on a division by zero in the rational
+    parts and ``_NotExact`` for a part it does not take (then the caller uses
+    ``xreplace``).
     """
-    memo: dict[int, tuple[int, int]] = {}
+    memo: dict[int, Any] = {}
 
-    def ev(x: Expr) -> tuple[int, int]:
+    def sym(v: Any) -> Expr:
+        return Rational(v[0], v[1]) if isinstance(v, tuple) else v
+
+    def ev(x: Expr) -> Any:
         got = memo.get(id(x))
         if got is not None:
             return got
         if x.is_Rational:
-            out = (int(x.p), int(x.q))
+            out: Any = (int(x.p), int(x.q))
         elif x.is_Symbol:
             v = point[x]
             out = (int(v.p), int(v.q))
-        elif x.is_Add:
-            n, d = 0, 1
-            for a in x.args:
-                na, da = ev(a)
-                n, d = (n + na, d) if da == d else (n * da + na * d, d * da)
-            out = (n, d)
-        elif x.is_Mul:
-            n, d = 1, 1
-            for a in x.args:
-                na, da = ev(a)
-                n, d = n * na, d * da
-            out = (n, d)
+        elif x.is_Add or x.is_Mul:
+            vals = [ev(a) for a in x.args]
+            if all(isinstance(v, tuple) for v in vals):
+                if x.is_Add:
+                    n, d = 0, 1
+                    for na, da in vals:
+                        n, d = (n + na, d) if da == d else (n * da + na * d, d * da)
+                else:
+                    n, d = 1, 1
+                    for na, da in vals:
+                        n, d = n * na, d * da
+                out = (n, d)
+            else:
+                out = x.func(*[sym(v) for v in vals])
         elif x.is_Pow and x.exp.is_Integer:
-            n, d = ev(x.base)
-            k = int(x.exp)
-            if k < 0:
-                if n == 0:
-                    raise _Undefined
-                n, d, k = (d, n, -k) if n > 0 else (-d, -n, -k)
-            out = (n**k, d**k)
+            b, k = ev(x.base), int(x.exp)
+            if isinstance(b, tuple):
+                n, d = b
+                if k < 0:
+                    if n == 0:
+                        raise _Undefined
+                    n, d, k = (d, n, -k) if n > 0 else (-d, -n, -k)
+                out = (n**k, d**k)
+            else:
+                out = Pow(b, k)
         elif x.is_Pow and x.exp == S.Half:
-            n, d = ev(x.base)
-            g = math.gcd(n, d)
-            n, d = n // g, d // g
-            rn, rd = (math.isqrt(n), math.isqrt(d)) if n >= 0 else (-1, 0)
-            if rn < 0 or rn * rn != n or rd * rd != d:
-                raise _NotExact
-            out = (rn, rd)
+            b = ev(x.base)
+            out = None
+            if isinstance(b, tuple) and b[0] >= 0:
+                g = math.gcd(*b)
+                n, d = b[0] // g, b[1] // g
+                rn, rd = math.isqrt(n), math.isqrt(d)
+                if rn * rn == n and rd * rd == d:
+                    out = (rn, rd)
+            if out is None:
+                out = Pow(sym(b), S.Half)
         elif isinstance(x, Abs):
-            n, d = ev(x.args[0])
-            out = (abs(n), d)
+            b = ev(x.args[0])
+            out = (abs(b[0]), b[1]) if isinstance(b, tuple) else Abs(b)
         elif isinstance(x, sign):
-            n, _ = ev(x.args[0])
-            out = ((n > 0) - (n < 0), 1)
+            b = ev(x.args[0])
+            out = ((b[0] > 0) - (b[0] < 0), 1) if isinstance(b, tuple) else sign(b)
+        elif x.is_Pow or isinstance(x, Application) and all(isinstance(a, Expr) for a in x.args):
+            out = x.func(*[sym(ev(a)) for a in x.args])
+        elif x.is_Atom and x.is_number:
+            out = x
         else:
             raise _NotExact
         memo[id(x)] = out
         return out
 
-    try:
-        n, d = ev(e)
-    except (_NotExact, KeyError):
-        return None
-    return Fraction(n, d)
+    return sym(ev(e))
 
 
 def _value(e: Expr, point: dict) -> Expr | None:
     """``e`` at ``point``, exactly when possible; None where it is undefined."""
     try:
-        fast = _rational_value(e, point)
+        v = _exact_value(e, point)
     except _Undefined:
         return None
-    if fast is not None:
-        return Rational(fast.numerator, fast.denominator)
-    v = e.xreplace(point)
-    if v.has(S.NaN, S.ComplexInfinity, S.Infinity, S.NegativeInfinity):
+    except (_NotExact, KeyError):
+        v = e.xreplace(point)
+    if not v.is_Rational and v.has(S.NaN, S.ComplexInfinity, S.Infinity, S.NegativeInfinity):
         return None
     return v
 
