@@ -45,21 +45,6 @@ try:  # the import takes most of the command line's first second: see screwsym._
         vector,
     )
     from .core.printing import init_printing as init_printing
-    from .motion import Chain, Transform, convert, convert_from, exp6, log6
-    from .systems import (
-        Cylindrical,
-        Helical,
-        Limb,
-        Mechanism,
-        Mobility,
-        ParallelMechanism,
-        Parallelogram,
-        Prismatic,
-        Revolute,
-        ScrewSystem,
-        Spherical,
-        Universal,
-    )
 except KeyboardInterrupt:
     from ._launch import exit_if_command_line
 
@@ -124,14 +109,31 @@ __all__ = [
 
 # Subpackages that pull in more (the book registry, code generation, plotting)
 # load on first use, so ``import screwsym`` stays light; ``dir`` lists them.
-_LAZY_MODULES = ("book", "cli", "codegen", "numeric", "plot")
+_LAZY_MODULES = ("book", "cli", "codegen", "motion", "numeric", "plot", "systems")
 
 
 def __dir__() -> list[str]:
     return sorted(set(globals()) | set(__all__) | set(_LAZY_MODULES) | {"lambdify"})
 
 
+#: The rigid motions and the screw systems load on first use too (``screwsym.Chain``,
+#: ``from screwsym import ScrewSystem``): the book and the objects of Chapter 1 need
+#: only the core, and ``screwsym verify`` starts faster without them.
+_LAZY_NAMES = {
+    **dict.fromkeys(("Chain", "Transform", "convert", "convert_from", "exp6", "log6"), "motion"),
+    **dict.fromkeys(
+        ("Cylindrical", "Helical", "Limb", "Mechanism", "Mobility", "ParallelMechanism",
+         "Parallelogram", "Prismatic", "Revolute", "ScrewSystem", "Spherical", "Universal"),
+        "systems",
+    ),
+}
+
+
 def __getattr__(name: str) -> _Any:
+    if name in _LAZY_NAMES:
+        value = getattr(importlib.import_module(f".{_LAZY_NAMES[name]}", __name__), name)
+        globals()[name] = value
+        return value
     if name in _LAZY_MODULES:
         return importlib.import_module(f".{name}", __name__)
     if name == "lambdify":

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import math
+from fractions import Fraction
+
 from sympy import Matrix, Rational, symbols
 
 from ._common import book_cross, book_dot, ss, stack
@@ -32,11 +35,82 @@ def _at_point(foot, S):
     return ss.foot(ss.LineVector.from_axis(foot.xreplace(at), S.xreplace(at)))
 
 
+class _NotRational(Exception):
+    """A part the forward differentiation of :func:`_jacobian_at` does not take."""
+
+
+def _jacobian_at(vec, params) -> Matrix:
+    """The Jacobian of ``vec`` with respect to ``params`` at the rational point, exactly.
+
+    Forward differentiation in exact fractions: every node of the expression
+    tree carries its value and its gradient at the point (sums, products,
+    integer powers, square roots of rational squares), so the Jacobian is the
+    exact one, without building its symbolic entries.  Anything else falls
+    back to SymPy's ``jacobian`` at the point.
+    """
+    index = {p: i for i, p in enumerate(params)}
+    n = len(params)
+    zero = [Fraction(0)] * n
+
+    def ev(x, memo):
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        if x.is_Rational:
+            out = (Fraction(int(x.p), int(x.q)), zero)
+        elif x.is_Symbol:
+            v = _POINT[x.name]
+            g = list(zero)
+            if x in index:
+                g[index[x]] = Fraction(1)
+            out = (Fraction(v), g)
+        elif x.is_Add:
+            parts = [ev(a, memo) for a in x.args]
+            out = (sum(v for v, _ in parts), [sum(col) for col in zip(*(g for _, g in parts), strict=True)])
+        elif x.is_Mul:
+            v, g = Fraction(1), zero
+            for a in x.args:
+                va, ga = ev(a, memo)
+                v, g = v * va, [v * dga + va * dg for dg, dga in zip(g, ga, strict=True)]
+            out = (v, g)
+        elif x.is_Pow and x.exp.is_Integer:
+            vb, gb = ev(x.base, memo)
+            k = int(x.exp)
+            if vb == 0 and k < 1:
+                raise _NotRational
+            d = k * vb ** (k - 1)
+            out = (vb**k, [d * dg for dg in gb])
+        elif x.is_Pow and x.exp == Rational(1, 2):
+            vb, gb = ev(x.base, memo)
+            r = _rational_sqrt(vb)
+            if r is None or r == 0:
+                raise _NotRational
+            out = (r, [dg / (2 * r) for dg in gb])
+        else:
+            raise _NotRational
+        memo[id(x)] = out
+        return out
+
+    try:
+        rows = []
+        for e in vec:
+            rows.append([Rational(d.numerator, d.denominator) for d in ev(e, {})[1]])
+        return Matrix(rows)
+    except (_NotRational, KeyError):
+        J = vec.jacobian(Matrix(params))
+        return J.xreplace({p: _POINT[p.name] for p in J.free_symbols})
+
+
+def _rational_sqrt(v: Fraction) -> Fraction | None:
+    if v < 0:
+        return None
+    rn, rd = math.isqrt(v.numerator), math.isqrt(v.denominator)
+    return Fraction(rn, rd) if rn * rn == v.numerator and rd * rd == v.denominator else None
+
+
 def _rank(vec6, params):
     """Exact rank of the Jacobian at the generic rational point."""
-    J = vec6.jacobian(Matrix(params))
-    at = {p: _POINT[p.name] for p in J.free_symbols}
-    return J.xreplace(at).rank()
+    return _jacobian_at(vec6, params).rank()
 
 
 _HOW = """Directions S on the unit sphere by the rational stereographic map of (a, b), foot

@@ -35,6 +35,7 @@ polynomial is not ``x``).
 
 from __future__ import annotations
 
+import math
 import random
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -45,6 +46,7 @@ from sympy import (
     Basic,
     Dummy,
     Expr,
+    Mul,
     Pow,
     Rational,
     S,
@@ -61,7 +63,11 @@ from sympy import (
     sympify,
     tan,
 )
+from sympy.core.function import Application
 from sympy.matrices import MatrixBase
+from sympy.polys.domains import QQ
+from sympy.polys.polyerrors import CoercionFailed, PolynomialError
+from sympy.polys.rings import PolyRing
 
 __all__ = ["Decision", "decide_zero", "decide_nonzero", "provably_nonnegative", "rational_point"]
 
@@ -139,10 +145,274 @@ def _radical_stage(e: Expr) -> Expr:
     return _sign_powers(cancel(e))
 
 
+# ------------------------------------------------ the rational-function fast path
+class _NotExact(Exception):
+    """The expression has a part the fast path does not take (a float, a zero denominator)."""
+
+
+def _generators(e: Expr) -> list[Expr]:
+    """The symbols and non-rational parts (roots, functions) of ``e``.
+
+    A power ``b**(p/q)`` contributes the generator ``expand(b)**(1/q)``; every other part
+    that is not a sum, a product, an integer power or a rational number is a
+    generator as it is.
+    """
+    gens: dict[Expr, None] = {}
+    seen: set[int] = set()
+    stack = [e]
+    while stack:
+        x = stack.pop()
+        if id(x) in seen:
+            continue
+        seen.add(id(x))
+        if x.is_Rational:
+            continue
+        if x.is_Float:
+            raise _NotExact
+        if x.is_Add or x.is_Mul:
+            stack.extend(x.args)
+        elif x.is_Pow and x.exp.is_Integer:
+            stack.append(x.base)
+        elif x.is_Pow and x.exp.is_Rational:
+            gens[_root_generator(x)] = None
+        else:
+            gens[x] = None
+    return list(gens)  # the order met (a zero polynomial is zero in every order)
+
+
+def _root_generator(x: Expr) -> Expr:
+    """The generator of ``b**(p/q)``: ``expand(b)**(1/q)`` (equal radicands, one generator)."""
+    return Pow(expand(x.base), Rational(1, x.exp.q))
+
+
+def _rational_parts(e: Expr) -> tuple[Any, Any]:
+    """Numerator and denominator of ``e`` as polynomials over QQ in its generators.
+
+    Built by exact ring arithmetic from the expression tree (no ``expand``, no
+    ``cancel``, no greatest common divisors).  The generators stand for
+    themselves, so the map from the ring to expressions is a homomorphism:
+    a numerator that is the zero polynomial proves ``e`` zero (wherever it is
+    defined), whatever relations the generators may satisfy.  Raises
+    ``_NotExact`` for floats and for a denominator that is the zero polynomial.
+    """
+    num, bases = _rational_parts_factored(e)
+    den = num.ring.one
+    for b, k in bases.items():
+        den = den * b**k
+    return num, den
+
+
+def _rational_parts_factored(e: Expr) -> tuple[Any, dict]:
+    """:func:`_rational_parts` with the denominator as ``{polynomial: exponent}``.
+
+    A sum is brought over the least common multiple of its terms' denominators
+    as they were built (the same polynomial is the same factor, to its highest
+    power), so the repeated denominators of a construction (``|S|**2``,
+    ``1 + a**2 + b**2``) do not multiply up; no polynomial is divided.
+    """
+    gens = _generators(e)
+    R = PolyRing(gens, QQ, "lex") if gens else PolyRing([Dummy()], QQ, "lex")
+    index = {g: R.gens[i] for i, g in enumerate(gens)}
+    one = R.one
+    memo: dict[int, tuple[Any, dict]] = {}
+
+    def conv(x: Expr) -> tuple[Any, dict]:
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        if x.is_Rational:
+            out: tuple[Any, dict] = (R.ground_new(QQ(int(x.p), int(x.q))), {})
+        elif x.is_Add:
+            parts = [conv(a) for a in x.args]
+            common: dict = {}
+            for _, d in parts:
+                for b, k in d.items():
+                    if common.get(b, 0) < k:
+                        common[b] = k
+            num = R.zero
+            for n, d in parts:
+                for b, k in common.items():
+                    if k != d.get(b, 0):
+                        n = n * b ** (k - d.get(b, 0))
+                num += n
+            out = (num, common)
+        elif x.is_Mul:
+            num, den = one, {}
+            for a in x.args:
+                n, d = conv(a)
+                num = num * n
+                for b, k in d.items():
+                    den[b] = den.get(b, 0) + k
+            out = (num, den)
+        elif x.is_Pow and x.exp.is_Integer:
+            n, d = conv(x.base)
+            k = int(x.exp)
+            if k >= 0:
+                out = (n**k, {b: m * k for b, m in d.items()})
+            elif not n:
+                raise _NotExact  # a division by the zero polynomial
+            else:
+                num = one
+                for b, m in d.items():
+                    num = num * b ** (-m * k)
+                if n.is_ground:
+                    out = (num * R.ground_new(R.domain.one / n.LC ** (-k)), {})
+                else:
+                    out = (num, {n: -k})
+        elif x.is_Pow and x.exp.is_Rational:
+            g = index[_root_generator(x)]
+            k = int(x.exp.p)
+            out = (g**k, {}) if k >= 0 else (one, {g: -k})
+        else:
+            out = (index[x], {})
+        memo[id(x)] = out
+        return out
+
+    return conv(e)
+
+
+def _fast_zero(e: Expr) -> str | None:
+    """``'expand'`` or ``'cancel'`` when ``e`` is zero as a rational function of its generators."""
+    try:
+        num, den = _rational_parts_factored(e)
+    except _NotExact:
+        return None
+    if num:
+        return None
+    return "cancel" if den else "expand"
+
+
+def _reduced(p: Any) -> Any:
+    """``p`` reduced by the relations of its generators, an element of the same ring.
+
+    ``sign(x)**2 -> 1`` (true wherever ``x != 0``, the standard of the radical
+    stage) and ``cos(a)**2 -> 1 - sin(a)**2`` for every angle whose sine and
+    cosine are both generators (exact).  The result is congruent to ``p``
+    modulo those relations, so a zero result proves ``p`` zero on them.
+    """
+    R = p.ring
+    signs = [i for i, g in enumerate(R.symbols) if isinstance(g, sign)]
+    sines = {g.args[0]: i for i, g in enumerate(R.symbols) if isinstance(g, sin)}
+    pairs = [(sines[g.args[0]], i) for i, g in enumerate(R.symbols)
+             if isinstance(g, cos) and g.args[0] in sines]
+    if signs:
+        terms: dict = {}
+        for monom, coeff in p.terms():
+            m = list(monom)
+            for i in signs:
+                m[i] %= 2
+            m = tuple(m)
+            terms[m] = terms.get(m, R.domain.zero) + coeff
+        p = R.from_dict({m: c for m, c in terms.items() if c})
+    for i_s, i_c in pairs:
+        if p.degree(R.gens[i_c]) < 2:
+            continue
+        one_minus_s2 = R.one - R.gens[i_s] ** 2
+        out = R.zero
+        for monom, coeff in p.terms():
+            m = list(monom)
+            k, m[i_c] = m[i_c], m[i_c] % 2
+            out += R.from_dict({tuple(m): coeff}) * one_minus_s2 ** (k // 2)
+        p = out
+    return p
+
+
+def _sign_of(x: Expr) -> Expr:
+    return sign(expand(x))
+
+
+class _Canonical:
+    """The radical stage's rewrites, on the expression tree, with ring arithmetic.
+
+    ``Abs(x) -> x sign(x)`` for real ``x``; ``sign`` of an expanded argument;
+    every root ``b**(p/q)`` of a radicand brought to lowest terms, reduced by
+    :func:`_reduced` and factored, so that SymPy splits off the factors it
+    knows to be nonnegative (``sqrt(k**2 y) = Abs(k) sqrt(y)``).
+    """
+
+    def __init__(self) -> None:
+        self.memo: dict[int, Expr] = {}
+        self.roots: set[Expr] = set()  # the roots already in canonical form
+
+    def __call__(self, x: Expr) -> Expr:
+        got = self.memo.get(id(x))
+        if got is None:
+            got = self.memo[id(x)] = self._canon(x)
+        return got
+
+    def _canon(self, x: Expr) -> Expr:
+        if x.is_Atom:
+            return x
+        if x.is_Add or x.is_Mul:
+            args = [self(a) for a in x.args]
+            return x if all(a is b for a, b in zip(args, x.args, strict=True)) else x.func(*args)
+        if x.is_Pow:
+            if x.exp.is_Integer:
+                b = self(x.base)
+                return x if b is x.base else Pow(b, x.exp)
+            if x.exp.is_Rational and x.base.free_symbols and x not in self.roots:
+                return self._split(Pow(self._radicand(x.base), x.exp))
+            return x
+        if isinstance(x, Abs):
+            a = self(x.args[0])
+            return a * _sign_of(a) if a.is_real else Abs(a)
+        if isinstance(x, sign):
+            return _sign_of(self(x.args[0]))
+        return x
+
+    def _radicand(self, b: Expr) -> Expr:
+        num, den = _rational_parts(self(b))
+        num, den = _reduced(num), _reduced(den)
+        if not den:
+            raise _NotExact
+        to_sympy = num.ring.domain.to_sympy
+        parts = []
+        for p, k in ((num, 1), (den, -1)):
+            c, factors = p.factor_list()
+            parts.append(to_sympy(c) ** k)
+            parts.extend(f.as_expr() ** (m * k) for f, m in factors)
+        return Mul(*parts)
+
+    def _split(self, y: Expr) -> Expr:
+        """The root as SymPy split it: its roots marked canonical, ``Abs`` rewritten."""
+        out = []
+        for f in Mul.make_args(y):
+            if f.is_Pow and f.exp.is_Rational and not f.exp.is_Integer:
+                base = f.base ** Rational(1, f.exp.q)
+                self.roots.update((f, base))
+                out.append(f)
+            elif f.is_Pow and isinstance(f.base, Abs) or isinstance(f, Abs):
+                out.append(self(f))
+            else:
+                out.append(f)
+        return Mul(*out)
+
+
+def _fast_generic_zero(e: Expr) -> str | None:
+    """``'radicals'`` or ``'trig'`` when the relations of :func:`_reduced` and the rewrites
+    of :class:`_Canonical` bring ``e`` to zero as a rational function of its generators."""
+    try:
+        c = _Canonical()
+        e2 = c(e)
+        num, den = _rational_parts(e2)
+        if _reduced(num) or not _reduced(den):
+            return None
+    except (_NotExact, PolynomialError, CoercionFailed):
+        return None
+    return "radicals" if (e2 != e or c.roots) else "trig"
+
+
 def _rewrite(e: Expr) -> tuple[Expr, str]:
     e = sympify(e, strict=True)
     if e == 0:
         return S.Zero, "exact"
+    fast = _fast_zero(e)
+    if fast is not None:
+        return S.Zero, fast
+    if _has_trig(e) or _has_radicals(e):
+        fast = _fast_generic_zero(e)
+        if fast is not None:
+            return S.Zero, fast
     e = expand(e)
     if e == 0:
         return S.Zero, "expand"
@@ -224,10 +494,99 @@ def rational_point(syms: Iterable[Symbol], rng: random.Random) -> dict[Symbol, R
     return {s: _random_value(s, rng) for s in syms}
 
 
+class _Undefined(Exception):
+    """A division by zero in :func:`_exact_value`."""
+
+
+def _exact_value(e: Expr, point: dict) -> Expr:
+    """``e`` at ``point``, exactly: what ``e.xreplace(point)`` evaluates to.
+
+    The rational parts (sums, products, integer powers, rational numbers, the
+    point's symbols, square roots of rational squares, ``Abs`` and ``sign``)
+    are computed in pairs of Python integers (numerator, positive denominator);
+    only where a value is irrational (a root of a non-square, a function) is a
+    SymPy number built, from the exact values below it, with SymPy's automatic
+    evaluation.  Raises ``_Undefined`` on a division by zero in the rational
+    parts and ``_NotExact`` for a part it does not take (then the caller uses
+    ``xreplace``).
+    """
+    memo: dict[int, Any] = {}
+
+    def sym(v: Any) -> Expr:
+        return Rational(v[0], v[1]) if isinstance(v, tuple) else v
+
+    def ev(x: Expr) -> Any:
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        if x.is_Rational:
+            out: Any = (int(x.p), int(x.q))
+        elif x.is_Symbol:
+            v = point[x]
+            out = (int(v.p), int(v.q))
+        elif x.is_Add or x.is_Mul:
+            vals = [ev(a) for a in x.args]
+            if all(isinstance(v, tuple) for v in vals):
+                if x.is_Add:
+                    n, d = 0, 1
+                    for na, da in vals:
+                        n, d = (n + na, d) if da == d else (n * da + na * d, d * da)
+                else:
+                    n, d = 1, 1
+                    for na, da in vals:
+                        n, d = n * na, d * da
+                out = (n, d)
+            else:
+                out = x.func(*[sym(v) for v in vals])
+        elif x.is_Pow and x.exp.is_Integer:
+            b, k = ev(x.base), int(x.exp)
+            if isinstance(b, tuple):
+                n, d = b
+                if k < 0:
+                    if n == 0:
+                        raise _Undefined
+                    n, d, k = (d, n, -k) if n > 0 else (-d, -n, -k)
+                out = (n**k, d**k)
+            else:
+                out = Pow(b, k)
+        elif x.is_Pow and x.exp == S.Half:
+            b = ev(x.base)
+            out = None
+            if isinstance(b, tuple) and b[0] >= 0:
+                g = math.gcd(*b)
+                n, d = b[0] // g, b[1] // g
+                rn, rd = math.isqrt(n), math.isqrt(d)
+                if rn * rn == n and rd * rd == d:
+                    out = (rn, rd)
+            if out is None:
+                out = Pow(sym(b), S.Half)
+        elif isinstance(x, Abs):
+            b = ev(x.args[0])
+            out = (abs(b[0]), b[1]) if isinstance(b, tuple) else Abs(b)
+        elif isinstance(x, sign):
+            b = ev(x.args[0])
+            out = ((b[0] > 0) - (b[0] < 0), 1) if isinstance(b, tuple) else sign(b)
+        elif x.is_Pow or isinstance(x, Application) and all(isinstance(a, Expr) for a in x.args):
+            out = x.func(*[sym(ev(a)) for a in x.args])
+        elif x.is_Atom and x.is_number:
+            out = x
+        else:
+            raise _NotExact
+        memo[id(x)] = out
+        return out
+
+    return sym(ev(e))
+
+
 def _value(e: Expr, point: dict) -> Expr | None:
     """``e`` at ``point``, exactly when possible; None where it is undefined."""
-    v = e.xreplace(point)
-    if v.has(S.NaN, S.ComplexInfinity, S.Infinity, S.NegativeInfinity):
+    try:
+        v = _exact_value(e, point)
+    except _Undefined:
+        return None
+    except (_NotExact, KeyError):
+        v = e.xreplace(point)
+    if not v.is_Rational and v.has(S.NaN, S.ComplexInfinity, S.Infinity, S.NegativeInfinity):
         return None
     return v
 

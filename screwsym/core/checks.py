@@ -18,10 +18,10 @@ Strings are never evaluated: components go through
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable
 from typing import Any
 
-import numpy as np
 from sympy import Basic, Expr, Float, ImmutableMatrix, S
 from sympy.core.sympify import SympifyError, sympify
 from sympy.matrices import MatrixBase
@@ -36,6 +36,24 @@ __all__ = [
     "check_name",
 ]
 
+
+
+def _np_types(*names: str) -> tuple[type, ...]:
+    """NumPy's types ``numpy.<name>`` (dotted for ``ma.MaskedArray``), or ``()``.
+
+    NumPy is not imported here: a value can be a NumPy object only when NumPy
+    is loaded already, so while it is not, no value is one.
+    """
+    np = sys.modules.get("numpy")
+    if np is None:
+        return ()
+    out = []
+    for name in names:
+        obj: Any = np
+        for part in name.split("."):
+            obj = getattr(obj, part)
+        out.append(obj)
+    return tuple(out)
 
 def _describe(value: Any) -> str:
     """A short description of ``value`` for error messages."""
@@ -89,14 +107,14 @@ def find_string(value: Any) -> Any:
     stack = [value]
     while stack:
         item = stack.pop()
-        if isinstance(item, (str, bytes, np.str_, np.bytes_)):
+        if isinstance(item, (str, bytes, *_np_types("str_", "bytes_"))):
             return item
         if isinstance(item, dict):
             stack.extend(item.keys())
             stack.extend(item.values())
         elif isinstance(item, (list, tuple, set, frozenset)):
             stack.extend(item)
-        elif isinstance(item, np.ndarray):
+        elif isinstance(item, _np_types("ndarray")):
             if item.dtype.kind in "USO":
                 stack.extend(item.ravel().tolist())
     return None
@@ -129,9 +147,9 @@ def _refuse_non_number(value: Any, name: str) -> None:
             "(strings are never evaluated)"
         )
     if (
-        isinstance(value, (bool, np.bool_))
+        isinstance(value, (bool, *_np_types("bool_")))
         or value is None
-        or isinstance(value, (MatrixBase, list, tuple, dict, set, frozenset, np.ma.MaskedArray))
+        or isinstance(value, (MatrixBase, list, tuple, dict, set, frozenset, *_np_types("ma.MaskedArray")))
         or (_shape_of(value) not in (None, ()))
     ):
         raise TypeError(
@@ -207,7 +225,7 @@ def check_vector(value: Any, name: str) -> ImmutableMatrix:
     ValueError: r: expected a 3-vector, got shape (2,)
     """
     if (
-        isinstance(value, (str, bytes, np.ma.MaskedArray))
+        isinstance(value, (str, bytes, *_np_types("ma.MaskedArray")))
         or isinstance(value, Basic)
         and not isinstance(value, MatrixBase)
     ):
@@ -265,7 +283,7 @@ def check_name(value: Any, name: str) -> str:
 def check_six(value: Any, name: str) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     """Split a 6-vector in the book's order into its two 3x1 parts ``(S, S0)``."""
     if (
-        isinstance(value, (str, bytes, np.ma.MaskedArray))
+        isinstance(value, (str, bytes, *_np_types("ma.MaskedArray")))
         or isinstance(value, Basic)
         and not isinstance(value, MatrixBase)
         or _shape_of(value) is None
@@ -388,7 +406,7 @@ def check_sequence(value: Any, name: str, what: str, length: int | None = None) 
     from sympy import Tuple
 
     ok = isinstance(value, (list, tuple, Tuple, MatrixBase)) or (
-        isinstance(value, np.ndarray) and value.ndim == 1
+        isinstance(value, _np_types("ndarray")) and value.ndim == 1
     )
     if not ok:
         raise TypeError(f"{name}: expected a sequence of {what}, got {type(value).__name__}")
@@ -493,7 +511,7 @@ def check_tidy_input(value: Any, name: str) -> None:
             raise TypeError(f"{name}: strings are never evaluated, got {_describe(item)}")
         if isinstance(item, (list, tuple)):
             stack.extend(item)
-        elif not isinstance(item, (Basic, MatrixBase, int, float, np.number)):
+        elif not isinstance(item, (Basic, MatrixBase, int, float, *_np_types("number"))):
             raise TypeError(
                 f"{name}: expected a SymPy expression, matrix, screwsym object, "
                 f"or a tuple or list of them, got {_describe(item)}"

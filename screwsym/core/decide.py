@@ -38,6 +38,8 @@ from sympy import (
     Mul,
     Piecewise,
     Pow,
+    Rational,
+    Symbol,
     acot,
     atan,
     atan2,
@@ -56,6 +58,10 @@ from sympy import (
     tanh,
 )
 from sympy.matrices import MatrixBase
+from sympy.polys.domains import QQ
+from sympy.polys.rings import PolyRing
+
+from .formulas import _dot
 
 __all__ = [
     "is_zero",
@@ -74,6 +80,101 @@ _REAL_FUNCTIONS = (tan, cot, sec, csc, atan2, sign, floor, ceiling, Min, Max, ac
 
 def _has_denominator(expr: Expr) -> bool:
     return any(p.exp.is_negative for p in expr.atoms(Pow))
+
+
+class _NotRational(Exception):
+    """A float, or a denominator that is the zero polynomial: not for :func:`_zero_rational`."""
+
+
+def _generators(e: Expr) -> list[Expr]:
+    """The symbols and non-rational parts of ``e``; ``b**(p/q)`` gives ``b**(1/q)``."""
+    gens: dict[Expr, None] = {}
+    seen: set[int] = set()
+    stack = [e]
+    while stack:
+        x = stack.pop()
+        if id(x) in seen:
+            continue
+        seen.add(id(x))
+        if x.is_Rational:
+            continue
+        if x.is_Float:
+            raise _NotRational
+        if x.is_Add or x.is_Mul:
+            stack.extend(x.args)
+        elif x.is_Pow and x.exp.is_Integer:
+            stack.append(x.base)
+        elif x.is_Pow and x.exp.is_Rational:
+            gens[Pow(x.base, Rational(1, x.exp.q))] = None
+        else:
+            gens[x] = None
+    return list(gens)  # any fixed order: the zero polynomial is zero in every order
+
+
+def _rational_parts(expr: Expr) -> tuple | None:
+    """Numerator and denominator of ``expr`` as ring elements, or None (floats, no symbols).
+
+    The numerator and the denominator are built by exact arithmetic in a sparse
+    polynomial ring over QQ whose generators are the symbols, roots and
+    functions of ``expr``, read off the expression tree (no ``expand``, no
+    ``cancel``, no gcds).  Evaluating the generators is a ring homomorphism, so
+    a zero numerator proves ``expr`` zero wherever it is defined (the standard
+    of ``cancel``); a non-zero one proves nothing (the generators may be
+    related: ``sqrt(x)**2 = x``), and the caller goes on.
+    """
+    try:
+        gens = _generators(expr)
+    except _NotRational:
+        return None
+    if not gens:
+        return None
+    R = PolyRing(gens, QQ, "lex")
+    index = dict(zip(gens, R.gens, strict=True))
+    one = R.one
+    memo: dict[int, tuple] = {}
+
+    def conv(x: Expr) -> tuple:
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        if x.is_Rational:
+            out = (R.ground_new(QQ(int(x.p), int(x.q))), one)
+        elif x.is_Add:
+            num, den = conv(x.args[0])
+            for a in x.args[1:]:
+                n, d = conv(a)
+                if d == den:
+                    num = num + n
+                else:
+                    num, den = num * d + n * den, den * d
+            out = (num, den)
+        elif x.is_Mul:
+            num, den = one, one
+            for a in x.args:
+                n, d = conv(a)
+                num, den = num * n, den * d
+            out = (num, den)
+        elif x.is_Pow and x.exp.is_Integer:
+            n, d = conv(x.base)
+            k = int(x.exp)
+            if k < 0:
+                n, d, k = d, n, -k
+            out = (n**k, d**k)
+        elif x.is_Pow and x.exp.is_Rational:
+            g = index[Pow(x.base, Rational(1, x.exp.q))]
+            k = int(x.exp.p)
+            out = (g**k, one) if k >= 0 else (one, g ** (-k))
+        else:
+            out = (index[x], one)
+        if not out[1]:
+            raise _NotRational
+        memo[id(x)] = out
+        return out
+
+    try:
+        return conv(expr)
+    except _NotRational:
+        return None
 
 
 def is_zero(expr: Expr) -> bool | None:
@@ -96,9 +197,20 @@ def is_zero(expr: Expr) -> bool | None:
     >>> is_zero(h*l**2 + h*m**2)            # h (l**2 + m**2): both factors non-zero
     False
     """
+    parts = None if expr.is_Atom else _rational_parts(expr)
+    if parts is not None and not parts[0]:
+        return True  # before the assumptions, which are slow to find it of a large expression
     decided = expr.is_zero
-    if decided is not None or expr.is_number:
-        return decided
+    if decided is not None or expr.is_number or isinstance(expr, Symbol):
+        return decided  # a symbol is its own canonical form and its only factor
+    if parts is not None and all(isinstance(g, Symbol) for g in parts[0].ring.symbols):
+        # a rational function of independent symbols: its numerator in lowest terms,
+        # factored in the ring, is what expand, cancel and factor give (up to signs)
+        numerator = parts[0].cancel(parts[1])[0]
+        decisions = [f.as_expr().is_zero for f, _ in numerator.factor_list()[1]]
+        if any(d is True for d in decisions):  # pragma: no cover - a symbol declared zero
+            return True
+        return False if all(d is False for d in decisions) else None
     canonical = expand(expr)
     if _has_denominator(canonical):
         canonical = cancel(canonical)
@@ -128,7 +240,7 @@ def is_zero_vector(v: MatrixBase) -> bool | None:
 
 def norm(v: MatrixBase) -> Expr:
     """The Euclidean length ``sqrt(v . v)`` of a column."""
-    return sqrt(v.dot(v))
+    return sqrt(_dot(v, v))
 
 
 def float_tau(*exprs: Expr) -> Expr | None:

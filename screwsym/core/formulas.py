@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
+from sympy import Add
 from sympy.matrices import MatrixBase
 
 __all__ = ["foot_point", "pitch_ratio", "dual_part", "moved", "SWAP"]
@@ -31,8 +31,24 @@ __all__ = ["foot_point", "pitch_ratio", "dual_part", "moved", "SWAP"]
 SWAP = (3, 4, 5, 0, 1, 2)
 
 
+def _dot(a: Any, b: Any) -> Any:
+    """``a . b`` of two vectors (SymPy columns or NumPy arrays).
+
+    For SymPy vectors the sum of the products, as ``Matrix.dot`` finds it for
+    finite entries (``Add`` of the same terms), without its detour through a
+    matrix product (most of the cost of a symbolic dot product).
+    """
+    if isinstance(a, MatrixBase) and isinstance(b, MatrixBase) and len(a) == len(b):
+        return Add(*[x * y for x, y in zip(a, b, strict=True)])
+    return a.dot(b)
+
+
 def _cross(a: Any, b: Any) -> Any:
-    return a.cross(b) if isinstance(a, MatrixBase) else np.cross(a, b)
+    if isinstance(a, MatrixBase):
+        return a.cross(b)
+    import numpy as np
+
+    return np.cross(a, b)
 
 
 def foot_point(S: Any, S0: Any) -> Any:
@@ -48,7 +64,7 @@ def foot_point(S: Any, S0: Any) -> Any:
     >>> foot_point(np.array([1.0, 1, 0]), np.array([1.0, 0, 0]))
     array([ 0. ,  0. , -0.5])
     """
-    return _cross(S, S0) / S.dot(S)
+    return _cross(S, S0) / _dot(S, S)
 
 
 def pitch_ratio(S: Any, S0: Any) -> Any:
@@ -62,7 +78,7 @@ def pitch_ratio(S: Any, S0: Any) -> Any:
     >>> pitch_ratio(ImmutableMatrix([1, 1, 0]), ImmutableMatrix([1, 0, 0]))      # Example 1.4
     1/2
     """
-    return S.dot(S0) / S.dot(S)
+    return _dot(S, S0) / _dot(S, S)
 
 
 def dual_part(r: Any, S: Any, h: Any = 0) -> Any:

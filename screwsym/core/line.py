@@ -17,7 +17,7 @@ from sympy.core.evalf import prec_to_dps
 from .basic import ScrewsymBasic
 from .checks import check_choice, check_flag, check_no_strings, check_vector
 from .decide import float_tau, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
-from .formulas import foot_point
+from .formulas import _dot, foot_point
 from .screw import (
     ScalarLike,
     Screw,
@@ -63,7 +63,7 @@ def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple
         raise ValueError(f"{first}: a line vector needs a non-zero direction S, got {list(S)}")
     if incident:
         return
-    dot = S.dot(S0)
+    dot = _dot(S, S0)
     if is_zero_scaled(dot, norm(S) * norm(S0)) is False:
         raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")
 
@@ -291,8 +291,8 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
     prec = min(f._prec for m in (l1.matrix, l2.matrix) for f in m.atoms(Float))
     S1, S2 = _exact(l1.S), _exact(l2.S)
     S01, S02 = _exact(l1.S0), _exact(l2.S0)
-    S01 = S01 - S1.dot(S01) / S1.dot(S1) * S1
-    S02 = S02 - S2.dot(S02) / S2.dot(S2) * S2
+    S01 = S01 - _dot(S1, S01) / _dot(S1, S1) * S1
+    S02 = S02 - _dot(S2, S02) / _dot(S2, S2) * S2
     cn = _common_normal_parts(S1, S01, S2, S02, tau, names)
     # the floats' digits and one guard digit (16 for double precision, as before)
     return cn.func(*(a.evalf(n=max(15, prec_to_dps(prec) + 1)) for a in cn.args))
@@ -301,12 +301,12 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
 def _common_normal_parts(S1: ImmutableMatrix, S01: ImmutableMatrix, S2: ImmutableMatrix,
                          S02: ImmutableMatrix, tau: Expr | None, names: tuple[str, str],
                          conds: str = "none") -> CommonNormal:
-    nn1, nn2 = S1.dot(S1), S2.dot(S2)
+    nn1, nn2 = _dot(S1, S1), _dot(S2, S2)
     p1, p2 = foot_point(S1, S01), foot_point(S2, S02)  # the feet (1.16)
     d = p2 - p1
     n = S1.cross(S2)
-    nn = n.dot(n)
-    cos_part = S1.dot(S2)
+    nn = _dot(n, n)
+    cos_part = _dot(S1, S2)
     # parallel: |S1 x S2| against |S1||S2| (compared squared, so no root is taken)
     parallel = is_zero_scaled(nn, nn1 * nn2, None if tau is None else tau**2)
     if parallel is True:
@@ -319,15 +319,15 @@ def _common_normal_parts(S1: ImmutableMatrix, S01: ImmutableMatrix, S2: Immutabl
         a12 = norm(d)
         return CommonNormal(a12, d / a12, atan2(0, cos_part), p1, p2)
     n_len = sqrt(nn)
-    m = -(S1.dot(S02) + S2.dot(S01))  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
+    m = -(_dot(S1, S02) + _dot(S2, S01))  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
     scale = sqrt(nn1) * norm(S02) + sqrt(nn2) * norm(S01)
     met = is_zero_scaled(m, scale, tau)
     intersecting = met is True
     if intersecting:
         m = 0
     orientation = 1 if intersecting else sign(m)
-    t1 = d.cross(S2).dot(n) / nn
-    t2 = d.cross(S1).dot(n) / nn
+    t1 = _dot(d.cross(S2), n) / nn
+    t2 = _dot(d.cross(S1), n) / nn
     feet = (p1 + t1 * S1, p2 + t2 * S2)
     generic = CommonNormal(
         Abs(m) / n_len,

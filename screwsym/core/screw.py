@@ -31,9 +31,8 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Chapter 1.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, Union, cast, overload
+from typing import TYPE_CHECKING, Any, ClassVar, TypeAlias, TypeVar, cast, overload
 
-import numpy as np
 from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 from sympy.matrices import MatrixBase
 
@@ -51,10 +50,11 @@ from .checks import (
     refusing_strings,
 )
 from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
-from .formulas import dual_part, foot_point, moved, pitch_ratio
+from .formulas import _dot, dual_part, foot_point, moved, pitch_ratio
 from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
 
 if TYPE_CHECKING:
+    import numpy as np
     from numpy.typing import DTypeLike
     from typing_extensions import Self
 
@@ -85,15 +85,15 @@ __all__ = [
 # say what the functions take, and the checks refuse the rest at run time.
 
 #: a real scalar: a SymPy expression (its symbols declared ``real=True``), a Python or NumPy number
-ScalarLike: TypeAlias = Expr | int | float | np.integer | np.floating
+ScalarLike: TypeAlias = "Expr | int | float | np.integer | np.floating"
 #: a 3-vector: a 3x1 or 1x3 SymPy matrix, a list or tuple of three scalars, or a NumPy array
-VectorLike: TypeAlias = MatrixBase | Sequence[ScalarLike] | np.ndarray
+VectorLike: TypeAlias = "MatrixBase | Sequence[ScalarLike] | np.ndarray"
 #: a 6-vector ``(S; S0)``: a 6x1 or 1x6 SymPy matrix, a list or tuple of six, or a NumPy array
-SixVectorLike: TypeAlias = MatrixBase | Sequence[ScalarLike] | np.ndarray
+SixVectorLike: TypeAlias = "MatrixBase | Sequence[ScalarLike] | np.ndarray"
 #: a matrix: a SymPy matrix, nested lists or tuples of scalars, or a 2-d NumPy array
-MatrixLike: TypeAlias = MatrixBase | Sequence[Sequence[ScalarLike]] | np.ndarray
+MatrixLike: TypeAlias = "MatrixBase | Sequence[Sequence[ScalarLike]] | np.ndarray"
 #: a screw: a Screw (of a kind the function accepts), or a 6-vector in the book's order (S; S0)
-ScrewLike: TypeAlias = Union["Screw", SixVectorLike]
+ScrewLike: TypeAlias = "Screw | SixVectorLike"
 
 
 class Screw(ScrewsymBasic):
@@ -249,6 +249,8 @@ class Screw(ScrewsymBasic):
         >>> np.asarray(Screw([1, 1, 0], [1, 0, 0]), dtype=float)
         array([1., 1., 0., 1., 0., 0.])
         """
+        import numpy as np
+
         entries = list(self.matrix)
         free = self.free_symbols
         if free:
@@ -419,7 +421,10 @@ class Screw(ScrewsymBasic):
         return self + (-other)
 
     def __neg__(self) -> Self:
-        return type(self)(-self.S, -self.S0)
+        # -$ = (-S; -S0) is of the same kind without a new check: the kinds' conditions
+        # (a line's S != 0 and S . S0 = 0, 1.10) are homogeneous, so they hold for -$ as
+        # they held for $ (proving S . S0 = 0 again was most of a symbolic line's negation)
+        return ScrewsymBasic.__new__(type(self), -self.S, -self.S0)
 
     def __pos__(self) -> Self:
         return self
@@ -577,7 +582,7 @@ def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
     ``S . S`` is a common factor whenever the dual part is ``r x S + h S``
     (the cross term vanishes on expansion), which gives ``h``.
     """
-    dot = s.S.dot(s.S0)
+    dot = _dot(s.S, s.S0)
     if s._pitch_is_zero:
         return S.Zero
     if tidy and float_tau(dot) is None:
@@ -871,7 +876,7 @@ def _classify(s: Screw) -> str | None:
         return None
     if s._pitch_is_zero:
         return "line"
-    dot_zero = is_zero_scaled(s.S.dot(s.S0), norm(s.S) * norm(s.S0))
+    dot_zero = is_zero_scaled(_dot(s.S, s.S0), norm(s.S) * norm(s.S0))
     return None if dot_zero is None else ("line" if dot_zero else "screw")
 
 
@@ -932,7 +937,7 @@ def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True) -> Screw:
 
 
 def _reciprocal_product(s1: Screw, s2: Screw, tidy: bool = False) -> Expr:
-    return _finish(s1.S.dot(s2.S0) + s2.S.dot(s1.S0), tidy)
+    return _finish(_dot(s1.S, s2.S0) + _dot(s2.S, s1.S0), tidy)
 
 
 def _is_reciprocal(s1: Screw, s2: Screw) -> bool | None:

@@ -46,25 +46,30 @@ from sympy import (
     Add,
     And,
     Basic,
+    Derivative,
     Dummy,
     Eq,
     Expr,
     Float,
     ImmutableMatrix,
+    Integral,
     Mul,
     Piecewise,
     Pow,
     Rational,
     S,
+    Sum,
     Tuple,
     cos,
     count_ops,
     expand,
     factor,
+    fraction,
     sin,
 )
 from sympy.core.cache import cacheit
-from sympy.core.function import Application
+from sympy.core.function import Application, _coeff_isneg
+from sympy.core.operations import LatticeOp
 from sympy.core.sorting import default_sort_key
 from sympy.logic.boolalg import false
 from sympy.matrices import MatrixBase
@@ -279,7 +284,7 @@ def _sum_of_angles(e: Expr) -> Expr:
 
 def _smallest(candidates: list) -> Expr:
     """The candidate with the fewest operations (``count_ops``); the earliest among equals."""
-    costs = [count_ops(x) for x in candidates]
+    costs = [_count_ops(x) if isinstance(x, Expr) else count_ops(x) for x in candidates]
     return candidates[costs.index(min(costs))]
 
 
@@ -370,7 +375,45 @@ def _to_ring(exprs: list) -> list:
     R = ring(gens, ZZ if integral else QQ)[0] if gens else None
     if R is None:
         raise GeneratorsError("no symbols")
-    return [R.from_expr(e) for e in exprs]
+    index = dict(zip(R.symbols, R.gens, strict=True))
+    return [_ring_element(R, index, e) for e in exprs]
+
+
+def _ring_element(R: Any, index: dict, e: Expr) -> Any:
+    """The polynomial expression ``e`` as an element of ``R``, by ring arithmetic on its tree.
+
+    What ``R.from_expr`` gives (ring elements are canonical), without its
+    per-node search for powers of generators; ``CoercionFailed`` for anything
+    that is not a polynomial in ``R``'s symbols over its domain.
+    """
+    memo: dict[int, Any] = {}
+    domain = R.domain
+
+    def conv(x: Expr) -> Any:
+        got = memo.get(id(x))
+        if got is not None:
+            return got
+        g = index.get(x) if x.is_Symbol else None
+        if g is not None:
+            out = g
+        elif x.is_Rational:
+            out = R.ground_new(domain.convert(x))
+        elif x.is_Add:
+            out = R.zero
+            for a in x.args:
+                out += conv(a)
+        elif x.is_Mul:
+            out = R.one
+            for a in x.args:
+                out *= conv(a)
+        elif x.is_Pow and x.exp.is_Integer and x.exp >= 0:
+            out = conv(x.base) ** int(x.exp)
+        else:
+            raise CoercionFailed(f"not a polynomial in {R.symbols}: {x}")
+        memo[id(x)] = out
+        return out
+
+    return conv(e)
 
 
 def _pulled(P) -> Expr:
@@ -477,3 +520,68 @@ def _piecewise(branches, default: Any) -> Any:
              for i in range(len(default))],
         )
     return Piecewise(*branches, (default, True))
+
+
+def _count_ops(expr: Expr) -> int:
+    """SymPy's ``count_ops(expr)`` (not visual) for an expression, counted in integers.
+
+    The same walk as ``sympy.core.function.count_ops``, step by step; where SymPy
+    collects a symbol per operation (``ADD``, ``MUL``, ``NEG``, ...) into a sum and
+    then adds up the coefficients, this adds the counts directly (``SUB - ADD`` is
+    ``+1 - 1``).  The result is the same number, without building that sum.
+    """
+    n = 0
+    args = [expr]
+    while args:
+        a = args.pop()
+        if a.is_Rational:
+            if a is not S.One:
+                n += (a.p < 0) + (a.q != 1)
+                continue
+        elif a.is_Mul or a.is_MatMul:
+            if _coeff_isneg(a):
+                n += 1
+                a = a.as_two_terms()[1] if a.args[0] is S.NegativeOne else -a
+            num, den = fraction(a)
+            if num.is_Integer:
+                n += 2 if num < 0 else 1
+                args.append(den)
+                continue
+            if den is not S.One:
+                if not den.is_Integer:
+                    args.append(den)
+                n += 1
+                args.append(num)
+                continue
+        elif a.is_Add or a.is_MatAdd:
+            aargs = a.args
+            negs = 0
+            for i, ai in enumerate(aargs):
+                if _coeff_isneg(ai):
+                    negs += 1
+                    args.append(-ai)
+                else:
+                    args.append(ai)
+                if i > 0:
+                    n += 1
+            if negs == len(aargs):
+                n += 1
+            continue
+        if a.is_Pow and a.exp is S.NegativeOne:
+            n += 1
+            args.append(a.base)
+            continue
+        if a == S.Exp1:
+            n += 1
+            continue
+        if a.is_Pow and a.base == S.Exp1:
+            n += 1
+            args.append(a.exp)
+            continue
+        if a.is_Mul or isinstance(a, LatticeOp):
+            n += len(a.args) - 1
+        elif a.args and (a.is_Pow or a.is_Function or isinstance(a, (Derivative, Integral, Sum))):
+            n += 1
+        if not a.is_Symbol:
+            args.extend(a.args)
+    return n

@@ -357,3 +357,32 @@ def test_sum_of_angles_can_be_left_out():
     assert tidy(e, sum_of_angles=False) == cos(a) * cos(b) - sin(a) * sin(b) + 1
     with pytest.raises(TypeError, match="sum_of_angles: expected True or False"):
         tidy(e, sum_of_angles=1)
+
+
+def test_count_ops_in_integers_is_sympys_count_ops():
+    # tidy picks the smallest candidate by its own integer count_ops; it must be SymPy's number
+    from sympy import (
+        Abs,
+        E,
+        Piecewise,
+        Rational,
+        cos,
+        count_ops,
+        exp,
+        sin,
+        sqrt,
+        symbols,
+    )
+
+    from screwsym.core.tidy import _count_ops
+
+    x, y, z = symbols("x y z", real=True)
+    exprs = [
+        x, -x, Rational(-1, 3), Rational(2, 5) * x, -x - y, -x + y, x - y, x * y * z, -x * y / z,
+        1 / (x + y), -2 / (x - y), (x + y) ** 2 / (3 * z), sqrt(x**2 + y**2), -sqrt(x) / 2,
+        exp(x + 1), E, E**2, sin(x) * cos(y) - sin(y) * cos(x), Abs(x - y) / sqrt(z**2 + 1),
+        Piecewise((x / y, x > 0), (-y, True)), x ** Rational(-3, 2), (x - 1) / (-y - 2),
+        -(x + y) * (x - y) / (z**2 + 1) ** 3 + 7,
+    ]
+    for e in exprs:
+        assert _count_ops(e) == count_ops(e), e
