@@ -285,6 +285,7 @@ def test_three_rps_at_a_symbolic_pose_is_singular_where_jx_loses_rank():
     # tests/_actuated.py: the type-II condition returned is checked independently, at exact
     # rational poses, against the rank of Jx built from the legs' own numbers there
     from sympy import Matrix as M
+
     from tests._actuated import three_rps_pose
 
     p, q, z = symbols("p q z", real=True)
@@ -308,4 +309,4 @@ def test_three_rps_at_a_symbolic_pose_is_singular_where_jx_loses_rank():
     assert not any((f + 1).subs(dict(zip((p, q, z), x, strict=True))) == 0 for x in poses)
     # no limb condition holds at the regular poses: each leg keeps its five freedoms there
     for c, _ in s.limb:
-        assert c.subs({p: 0, q: 0, z: 1}) is not True or False
+        assert c.subs({p: 0, q: 0, z: 1}) is not True
