@@ -117,6 +117,8 @@ def main() -> None:
     ap.add_argument("--n", type=int, default=10**6)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--cap", type=float, default=120.0, help="seconds per symbolic case")
+    ap.add_argument("--only", choices=("rps_pose", "rps_heights", "gs33", "gs33trig"),
+                    help="run this symbolic case alone (no transmission map)")
     args = ap.parse_args()
     rows = []
 
@@ -124,7 +126,14 @@ def main() -> None:
                          ("3-RPS singularities(), leg heights (h1, h2, h3)", "rps_heights"),
                          ("3-3 Gough-Stewart singularities(), tau", "gs33"),
                          ("3-3 Gough-Stewart singularities(), cos/sin theta", "gs33trig")):
-        rows.append(capped(label, build, args.cap))
+        if args.only in (None, build):
+            rows.append(capped(label, build, args.cap))
+    if args.only:
+        print("| benchmark | time | target | notes |")
+        print("|---|---|---|---|")
+        for r in rows:
+            print("| " + " | ".join(r) + " |")
+        return
     syms = symbols("b1x b1y b2x b2y px py", real=True)
     mech = five_bar((syms[4], syms[5]), b1=syms[0:2], b2=syms[2:4])
     t0 = time.perf_counter()

@@ -47,7 +47,7 @@ E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 
 
 
 def clear() -> None:
-    for f in (_system._analysis, _system._cases, _system._top):
+    for f in (_system._analysis, _system._cases, _system._top, _system._reciprocal_of):
         f.cache_clear()
 
 

@@ -418,18 +418,20 @@ def mechanism_singularities(mech: _Mechanism) -> Singularities:
     >>> s.constraint
     []
     """
+    _actuated(mech)
     limb_part: list = []
+    wrenches: list = []  # those of actuation_wrenches(mech), each computed once
     for limb in mech.limbs:
         limb_part.extend(_drops(limb.twists))
         constraints = list(limb.constraints.basis())
         for k in limb.actuated:
             w = limb_actuation_wrench(limb, int(k))
+            wrenches.append(w)
             limb_part.extend(_drops(ScrewSystem(*constraints, w, kind=Wrench)))
     W = mech.constraints
     w_cases = W.rank_conditions()
     generic_w = w_cases[0][0]
     constraint_part = _drops(W)
-    wrenches = actuation_wrenches(mech)
     J = ScrewSystem(*wrenches, *W.basis(), kind=Wrench)
     actuation_part = _drops(J, generic_w)
     return Singularities(limb=limb_part, actuation=actuation_part, constraint=constraint_part)

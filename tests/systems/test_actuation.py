@@ -277,3 +277,36 @@ def test_octahedral_gough_stewart_turned_by_sin_and_cos_is_singular_at_a_quarter
         holds = bool(cond.subs(theta, at))
         assert holds == (k in (6, 18)), (k, cond)
     assert isinstance(cond, And)
+
+
+@pytest.mark.slow
+def test_three_rps_at_a_symbolic_pose_is_singular_where_jx_loses_rank():
+    # Tsai's 3-RPS (Tsai 1999, Sec. 3.5; Joshi & Tsai 2002) at the pose (p, q, z) of
+    # tests/_actuated.py: the type-II condition returned is checked independently, at exact
+    # rational poses, against the rank of Jx built from the legs' own numbers there
+    from sympy import Matrix as M
+
+    from tests._actuated import three_rps_pose
+
+    p, q, z = symbols("p q z", real=True)
+    s = three_rps_pose(p, q, z).singularities()
+    assert s.constraint == []
+    ((cond, rank),) = s.actuation
+    assert isinstance(cond, Eq) and rank in (None, 5)
+    f = cond.lhs - cond.rhs
+    assert f.subs({p: 0, q: 0, z: 0}) == 0 and f.subs({p: 0, q: 0, z: 1}) != 0
+
+    def jx_rank(pose):
+        return M(three_rps_pose(*(Rational(x) for x in pose)).jacobian()[0]).rank()
+
+    poses = [(0, 0, 1), (0, 0, 0), (Rational(1, 2), Rational(-1, 3), 2), (1, 2, Rational(3, 2)),
+             (Rational(-2, 5), 0, 0), (0, 1, Rational(1, 7))]
+    for pose in poses:
+        on = f.subs(dict(zip((p, q, z), pose, strict=True))) == 0
+        assert (jx_rank(pose) < 6) == on, (pose, on)
+    # a wrong condition is rejected: f + 1 vanishes nowhere among these poses, yet Jx drops
+    assert any(jx_rank(x) < 6 for x in poses)
+    assert not any((f + 1).subs(dict(zip((p, q, z), x, strict=True))) == 0 for x in poses)
+    # no limb condition holds at the regular poses: each leg keeps its five freedoms there
+    for c, _ in s.limb:
+        assert c.subs({p: 0, q: 0, z: 1}) is not True
