@@ -158,6 +158,7 @@ class _Engine:
         self.symbols = gens
         # the circle relations c^2 + s^2 = 1, as generator indices (cos, sin)
         self.pairs = [(gens.index(self.circle[b][0]), gens.index(self.circle[b][1])) for b in self.bases]
+        self.level: dict[int, int] = {}  # generator -> its level in the written form (by _walk)
         try:
             self.twists = [(self._vec(w), self._vec(v)) for w, v in twist_parts]
             self.home = self._mat(home_parts[0]), self._vec(home_parts[1])
@@ -350,6 +351,15 @@ class _Engine:
 
         links = [relative(frames[k], frames[k + 1]) for k in range(self.n - 1)]
         links.append(relative(frames[-1], self.home))
+        # the written form's level of each geometry sine or cosine: the joint after the first
+        # link it occurs in (alpha_k of the link k between joints k and k + 1), as a joint's own
+        circle = {i for pair in self.pairs for i in pair}
+        for k, (LR, Lp) in enumerate(links):
+            for e in [x for row in LR for x in row] + Lp:
+                for mon in e.itermonoms():
+                    for g in circle:
+                        if mon[g] and g not in self.level:
+                            self.level[g] = k + 1
         at = []
         R, p = frames[0]
         for k in range(self.n):
@@ -465,6 +475,8 @@ class _Writer:
             c, s_ = engine.circle[base]
             self._register(unit, "c", engine.symbols.index(c))
             self._register(unit, "s", engine.symbols.index(s_))
+        for g, level in engine.level.items():
+            self.last[g] = level
         self.cache: dict = {}
 
     def _order(self, joint: int) -> int:
