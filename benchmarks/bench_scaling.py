@@ -19,7 +19,8 @@ results are SymPy's ``count_ops`` (the peers' results converted to SymPy to coun
    in SymPy also the textbook way (4x4 exponential matrices multiplied, the Jacobian's
    columns as 6x6 adjoints times the twists), as issue 23 measured it.
 2. A 6R arm whose DH link lengths and offsets are all symbols (``a_i, d_i``, 12
-   symbols; the UR-like twists ``alpha = (pi/2, 0, 0, pi/2, -pi/2, 0)``): the same.
+   symbols; the UR-like twists ``alpha = (pi/2, 0, 0, pi/2, -pi/2, 0)``): the same; and
+   the 6R whose every DH parameter is a symbol (``a_i, d_i, alpha_i``, 18 symbols).
 3. The 3-RPS with 9 and 12 symbolic geometry parameters: ``mobility()`` and
    ``mobility_cases()`` (screwsym only: no peer has a mobility analysis).
 4. ``screwsym verify --jobs 1`` against ``benchmarks/plain_sympy_check.py``.
@@ -162,6 +163,14 @@ def generic_6r() -> Chain:
     return Chain.from_dh([(a[i], alpha[i], d[i], 0) for i in range(6)])
 
 
+def generic_6r_all() -> Chain:
+    """The 6R with every DH parameter symbolic: ``a_i, d_i`` and the twist angles ``alpha_i``."""
+    a = symbols("a1:7", real=True)
+    d = symbols("d1:7", real=True)
+    alpha = symbols("alpha1:7", real=True)
+    return Chain.from_dh([(a[i], alpha[i], d[i], 0) for i in range(6)])
+
+
 def chain_rows(name: str, chain: Chain, rows: list) -> None:
     n = chain.n_joints
     names = f"q1:{n + 1}"
@@ -240,6 +249,7 @@ def main(argv=None) -> None:
     else:
         rows.append(("Panda", "screwsym Chain (needs defusedxml)", None, None, None))
     chain_rows("generic 6R (a_i, d_i symbols)", generic_6r(), rows)
+    chain_rows("6R, all DH geometry symbolic (a, d, alpha)", generic_6r_all(), rows)
     print_rows(rows)
     if not args.quick:
         mobility_rows()

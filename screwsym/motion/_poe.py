@@ -43,6 +43,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from itertools import combinations
+from math import comb
 from typing import Any, cast
 
 from sympy import (
@@ -55,6 +56,7 @@ from sympy import (
     cos,
     count_ops,
     expand,
+    expand_trig,
     sin,
 )
 from sympy.core.sorting import default_sort_key
@@ -88,14 +90,24 @@ class _Engine:
         self.n = len(twists)
         self.q = q
         self.sign = sign
+        # sines and cosines of the geometry (symbolic DH twist angles): polynomials in the
+        # sines and cosines of their arguments' symbols, generators on the circle
+        forms, self.bases, self.circle = _circle_forms([t.matrix for t in twists] + [home.matrix])
+        twist_parts = [(t.omega.xreplace(forms), t.v_O.xreplace(forms)) for t in twists]
+        home_parts = home.R.xreplace(forms), home.p.xreplace(forms)
         kinds = [_joint_kind(t.omega, t.v_O) for t in twists]
+        # a revolute joint whose unit axis needs sin^2 + cos^2 = 1 of the geometry: decided in the ring
+        pending = [i for i, k in enumerate(kinds) if k is None and self.circle
+                   and not all(e == 0 for e in twists[i].omega)]
+        for i in pending:
+            kinds[i] = "R"
         if None in kinds:
             raise _NotPolynomial("a joint is neither a unit revolute nor a prismatic twist")
         self.kinds = kinds
         # groups of consecutive revolute joints about parallel axes: joint -> (group start, sign)
         self.group: list[tuple[int, int]] = []
         for i, t in enumerate(twists):
-            if i and kinds[i] == "R" and kinds[i - 1] == "R":
+            if i and kinds[i] == "R" and kinds[i - 1] == "R" and not self.bases:
                 g, _ = self.group[i - 1]
                 w0 = twists[g].omega
                 if t.omega == w0:
@@ -106,6 +118,8 @@ class _Engine:
                     continue
             self.group.append((i, 1))
         # the angles: cumulative sums over each group, as integer coefficient tuples over q
+        # (then zeros over the geometry's circle bases, which the writer's gathering may fill)
+        m = len(self.bases)
         self.angle_of: list[tuple[int, ...] | None] = []
         for i in range(self.n):
             if kinds[i] != "R":
@@ -113,32 +127,28 @@ class _Engine:
                 continue
             g, s = self.group[i]
             before = self.angle_of[i - 1] if g != i else None
-            coeffs = list(before) if before is not None else [0] * self.n
+            coeffs = list(before) if before is not None else [0] * (self.n + m)
             coeffs[i] = s * sign
             self.angle_of.append(tuple(coeffs))
         angles = sorted({_canonical(a)[0] for a in self.angle_of if a is not None})
-        geometry = set()
-        for t in twists:
-            geometry |= t.matrix.free_symbols
-        geometry |= home.matrix.free_symbols
-        if geometry & set(q):
+        if set(q) & set().union(*(t.matrix.free_symbols for t in twists), home.matrix.free_symbols):
             raise _NotPolynomial("a joint variable occurs in the geometry")
         # roots and functions of the geometry (sqrt(2)/2 in a rotation) become generators
         self.frozen: dict = {}
-        for t in twists:
-            for e in t.matrix:
-                _frozen(e, self.frozen)
-        for e in home.matrix:
-            _frozen(e, self.frozen)
-        geometry = {x for x in geometry if not any(x in f.free_symbols for f in self.frozen)}
+        exprs = [e for w, v in twist_parts for e in (*w, *v)] + [*home_parts[0], *home_parts[1]]
+        exprs = [_frozen(e, self.frozen) for e in exprs]
+        trig_gens = {d for pair in self.circle.values() for d in pair}
+        geometry = set().union(*(e.free_symbols for e in exprs)) - set(self.frozen.values()) - trig_gens
         self.geometry = sorted(geometry, key=default_sort_key) + list(self.frozen.values())
         self.thaw = {d: f for f, d in self.frozen.items()}
-        # ring generators: geometry symbols, prismatic lengths, then cos/sin per angle
+        # ring generators: geometry symbols, prismatic lengths, cos/sin per geometry base, per angle
         self.cos_gen: dict[tuple, Any] = {}
         self.sin_gen: dict[tuple, Any] = {}
         gens: list = list(self.geometry)
         prismatic = [q[i] for i in range(self.n) if kinds[i] == "P"]
         gens += prismatic
+        for b in self.bases:
+            gens += list(self.circle[b])
         for a in angles:
             c, s_ = Dummy("c"), Dummy("s")
             self.cos_gen[a], self.sin_gen[a] = c, s_
@@ -146,16 +156,47 @@ class _Engine:
         self.R, *self.gens = ring(gens, QQ)
         self.gen_of = dict(zip(gens, self.gens, strict=True))
         self.symbols = gens
+        # the circle relations c^2 + s^2 = 1, as generator indices (cos, sin)
+        self.pairs = [(gens.index(self.circle[b][0]), gens.index(self.circle[b][1])) for b in self.bases]
+        self.level: dict[int, int] = {}  # generator -> its level in the written form (by _walk)
         try:
-            self.twists = [(self._vec(t.omega), self._vec(t.v_O)) for t in twists]
-            self.home = self._mat(home.R), self._vec(home.p)
+            self.twists = [(self._vec(w), self._vec(v)) for w, v in twist_parts]
+            self.home = self._mat(home_parts[0]), self._vec(home_parts[1])
         except (CoercionFailed, GeneratorsError, PolynomialError, ValueError) as exc:
             raise _NotPolynomial(str(exc)) from None
+        for i in pending:
+            w, v = self.twists[i]
+            if self._reduce(_dot(w, w) - 1) or self._reduce(_dot(w, v)):
+                raise _NotPolynomial("a joint is neither a unit revolute nor a prismatic twist")
 
     # --- conversions
     def _el(self, e: Expr) -> Any:
         e = _frozen(e, self.frozen)
-        return self.R.from_expr(e) if e.free_symbols else self.R(QQ.from_sympy(e))
+        return self._reduce(self.R.from_expr(e) if e.free_symbols else self.R(QQ.from_sympy(e)))
+
+    def _reduce(self, P: Any) -> Any:
+        """``P`` modulo ``c^2 + s^2 - 1`` of each geometry base: every ``s^k`` with ``k >= 2`` made
+        ``s^(k mod 2) (1 - c^2)^(k // 2)``.  A normal form (the relations' leading terms ``s^2``
+        are coprime, a Groebner basis), so ``P`` vanishes on the circles when this is zero."""
+        for ic, is_ in self.pairs:
+            if all(m[is_] < 2 for m in P.itermonoms()):
+                continue
+            out: dict = {}
+            for m, c in P.iterterms():
+                k = m[is_]
+                if k < 2:
+                    out[m] = out.get(m, 0) + c
+                    continue
+                j, r = divmod(k, 2)
+                base = list(m)
+                base[is_] = r
+                for t in range(j + 1):
+                    mt = list(base)
+                    mt[ic] += 2 * t
+                    mt = tuple(mt)
+                    out[mt] = out.get(mt, 0) + c * comb(j, t) * (-1) ** t
+            P = self.R.from_dict({m: c for m, c in out.items() if c})
+        return P
 
     def _vec(self, v: Any) -> list:
         return [self._el(e) for e in v]
@@ -163,19 +204,17 @@ class _Engine:
     def _mat(self, m: Any) -> list:
         return [[self._el(m[i, j]) for j in range(3)] for i in range(3)]
 
-    # --- 3-vector and 3x3 matrix arithmetic on ring elements
-    @staticmethod
-    def _mv(M: list, v: list) -> list:
-        return [M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2] for i in range(3)]
+    # --- 3-vector and 3x3 matrix arithmetic on ring elements (reduced on the geometry's circles)
+    def _mv(self, M: list, v: list) -> list:
+        return [self._reduce(M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2]) for i in range(3)]
 
-    @staticmethod
-    def _mm(A: list, B: list) -> list:
-        return [[A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j] for j in range(3)]
+    def _mm(self, A: list, B: list) -> list:
+        return [[self._reduce(A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j]) for j in range(3)]
                 for i in range(3)]
 
-    @staticmethod
-    def _cross(a: list, b: list) -> list:
-        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    def _cross(self, a: list, b: list) -> list:
+        return [self._reduce(x) for x in
+                (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])]
 
     def _rot(self, w: list, angle: tuple | None, sgn: int) -> list:
         """``R = I + sin K + (1 - cos) K^2`` about the unit ``w`` by the angle (``sgn`` its sign)."""
@@ -215,19 +254,30 @@ class _Engine:
                 d = [prev[k][0] - Rj[k][0] for k in range(3)], [prev[k][1] - Rj[k][1] for k in range(3)], \
                     [prev[k][2] - Rj[k][2] for k in range(3)]
                 for k in range(3):
-                    p[k] += d[0][k] * r[0] + d[1][k] * r[1] + d[2][k] * r[2]
+                    p[k] = self._reduce(p[k] + d[0][k] * r[0] + d[1][k] * r[1] + d[2][k] * r[2])
                 prev = Rj
             R0, p0 = base
             out.append((self._mm(R0, prev), [p0[k] + x for k, x in enumerate(self._mv(R0, p))]))
         return out
 
     def forward(self) -> tuple[list, list]:
+        walk = self._walk()
+        if walk is not None:
+            return walk[1]
         R, p = self.prefixes()[-1]
         HR, Hp = self.home
         return self._mm(R, HR), [p[k] + x for k, x in enumerate(self._mv(R, Hp))]
 
     def columns(self) -> list[list]:
         """The space Jacobian's columns ``Ad(T_{i-1}) $_i`` as ring elements (omega; v)."""
+        walk = self._walk()
+        if walk is not None:
+            cols = []
+            for i, (R, p) in enumerate(walk[0]):
+                z = [R[0][2], R[1][2], R[2][2]]
+                zero = self.R.zero
+                cols.append(z + self._cross(p, z) if self.kinds[i] == "R" else [zero, zero, zero] + z)
+            return cols
         pre = self.prefixes()
         cols = []
         for i in range(self.n):
@@ -238,10 +288,141 @@ class _Engine:
             cols.append(Rw + [Rv[k] + x for k, x in enumerate(self._cross(p, Rw))])
         return cols
 
+    # --- the joints' own frames: the product as Denavit and Hartenberg wrote it
+    def _frames(self) -> list[tuple[list, list]] | None:
+        """A frame ``F_k = (R_k, o_k)`` per joint with ``$_k = Ad(F_k) $_z``, or None.
+
+        ``R_k = [x, z x x, z]`` for the joint's unit direction ``z`` and the first of the
+        previous frame's ``x``, ``y`` and the base's unit vectors that is orthogonal to ``z``
+        (decided modulo the circles); ``o_k`` is the foot of the perpendicular from the
+        previous origin onto the axis (a revolute joint) or the previous origin (prismatic).
+        """
+        one, zero = self.R.one, self.R.zero
+        units = [[one, zero, zero], [zero, one, zero], [zero, zero, one]]
+        frames: list = []
+        o_prev = [zero, zero, zero]
+        for k, (w, v) in enumerate(self.twists):
+            z = w if self.kinds[k] == "R" else v
+            if self._reduce(_dot(z, z) - 1):
+                return None
+            candidates = list(units)
+            if frames:
+                Rp = frames[-1][0]
+                candidates[:0] = [[Rp[i][0] for i in range(3)], [Rp[i][1] for i in range(3)]]
+            x = next((c for c in candidates if not self._reduce(_dot(c, z))), None)
+            if x is None:
+                return None
+            y = self._cross(z, x)
+            R = [[x[i], y[i], z[i]] for i in range(3)]
+            if self.kinds[k] == "R":
+                r = self._cross(w, v)  # the axis point nearest the base origin
+                t = self._reduce(-_dot([r[i] - o_prev[i] for i in range(3)], z))
+                o = [self._reduce(r[i] + t * z[i]) for i in range(3)]
+            else:
+                o = o_prev
+            frames.append((R, o))
+            o_prev = o
+        return frames
+
+    def _walk(self) -> tuple[list, tuple[list, list]] | None:
+        """``F_1 Z(q_1) L_1 Z(q_2) L_2 ... Z(q_n) L_n`` with ``L_k = F_k^-1 F_(k+1)``, ``L_n = F_n^-1 M``.
+
+        Equal to the product of exponentials, since ``exp6($_k, q_k) = F_k Z(q_k) F_k^-1``
+        (Lynch & Park 2017, Appendix C: the Denavit-Hartenberg form).  With symbolic
+        twist angles the ``L_k`` are short polynomials in their sines and cosines (the
+        rows of the table) where the joint twists are long ones.  Returns the frames of the
+        joints at ``q`` (``F_1 Z(q_1) L_1 ... Z(q_(k-1)) L_(k-1)``) and ``T(q)``; None for a
+        chain without the geometry's circles or without the frames.
+        """
+        if not self.bases:
+            return None
+        if hasattr(self, "_walked"):
+            return self._walked
+        frames = self._frames()
+        self._walked = None
+        if frames is None:
+            return None
+        one, zero = self.R.one, self.R.zero
+
+        def relative(A: tuple, B: tuple) -> tuple[list, list]:
+            RA, oA = A
+            RAt = [[RA[j][i] for j in range(3)] for i in range(3)]
+            return self._mm(RAt, B[0]), self._mv(RAt, [B[1][i] - oA[i] for i in range(3)])
+
+        links = [relative(frames[k], frames[k + 1]) for k in range(self.n - 1)]
+        links.append(relative(frames[-1], self.home))
+        # the written form's level of each geometry sine or cosine: the joint after the first
+        # link it occurs in (alpha_k of the link k between joints k and k + 1), as a joint's own
+        circle = {i for pair in self.pairs for i in pair}
+        for k, (LR, Lp) in enumerate(links):
+            for e in [x for row in LR for x in row] + Lp:
+                for mon in e.itermonoms():
+                    for g in circle:
+                        if mon[g] and g not in self.level:
+                            self.level[g] = k + 1
+        at = []
+        R, p = frames[0]
+        for k in range(self.n):
+            at.append((R, p))
+            if self.kinds[k] == "R":
+                angle, sgn = _canonical(self.angle_of[k])
+                c, s = self.gen_of[self.cos_gen[angle]], self.gen_of[self.sin_gen[angle]] * sgn
+                R = self._mm(R, [[c, -s, zero], [s, c, zero], [zero, zero, one]])
+            else:
+                qk = self.gen_of[self.q[k]] * self.sign
+                p = [p[i] + qk * R[i][2] for i in range(3)]
+            LR, Lp = links[k]
+            R, p = self._mm(R, LR), [self._reduce(p[i] + x) for i, x in enumerate(self._mv(R, Lp))]
+        self._walked = at, (R, p)
+        return self._walked
+
     # --- back to expressions
     def expressions(self, elements: list) -> list[Expr]:
         writer = _Writer(self)
         return [writer.expr(e) for e in elements]
+
+
+def _dot(a: list, b: list) -> Any:
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def _linear(arg: Expr) -> dict | None:
+    """``{symbol: integer}`` of an argument ``sum k_i x_i + constant``, or None for another argument."""
+    _, terms = arg.as_coeff_Add()
+    out: dict = {}
+    for t in Add.make_args(terms):
+        k, x = t.as_coeff_Mul()
+        if not (k.is_Integer and x.is_Symbol):
+            return None
+        out[x] = out.get(x, 0) + int(k)
+    return {x: k for x, k in out.items() if k}
+
+
+def _circle_forms(matrices: list) -> tuple[dict, list, dict]:
+    """The sines and cosines of the geometry in the generators of their bases' circles.
+
+    A sine or cosine of ``sum k_i x_i + c`` (integers ``k_i``, symbols ``x_i``) is expanded by the
+    angle-sum formulas (``expand_trig``) into a polynomial in ``cos(x_i), sin(x_i)``, each a
+    ``Dummy``; one of any other argument ``u`` is ``cos(u)`` or ``sin(u)`` of its own base ``u``.
+    Returns the replacements, the bases (sorted) and ``base -> (cos Dummy, sin Dummy)``.
+    """
+    atoms: set = set()
+    for M in matrices:
+        atoms |= {a for a in M.atoms(sin, cos) if a.free_symbols}
+    if not atoms:
+        return {}, [], {}
+    linear = {a: _linear(a.args[0]) for a in atoms}
+    bases = set()
+    for a, lin in linear.items():
+        bases |= set(lin) if lin is not None else {a.args[0]}
+    order = sorted(bases, key=default_sort_key)
+    circle = {b: (Dummy("cg"), Dummy("sg")) for b in order}
+    on_circle = {}
+    for b, (c, s_) in circle.items():
+        on_circle[cos(b)], on_circle[sin(b)] = c, s_
+    forms = {a: on_circle[a] if lin is None else expand(expand_trig(a)).xreplace(on_circle)
+             for a, lin in linear.items()}
+    return forms, order, circle
 
 
 def _frozen(e: Expr, parts: dict) -> Expr:
@@ -272,7 +453,8 @@ class _Writer:
 
     def __init__(self, engine: _Engine) -> None:
         self.engine = engine
-        self.q = engine.q
+        self.q = tuple(engine.q) + tuple(engine.bases)  # the angles' coordinates: joints, then geometry
+        self.n = engine.n
         # generator id -> SymPy expression; trig generators also -> (angle, "c" or "s")
         self.expr_of: list[Expr] = []
         self.trig: dict[int, tuple[tuple, str]] = {}
@@ -287,10 +469,19 @@ class _Writer:
         for a, c in engine.cos_gen.items():
             self._register(a, "c", engine.symbols.index(c))
             self._register(a, "s", engine.symbols.index(engine.sin_gen[a]))
+        m = len(engine.bases)
+        for b, base in enumerate(engine.bases):  # the geometry's sines and cosines: angles too
+            unit = tuple(1 if k == self.n + b else 0 for k in range(self.n + m))
+            c, s_ = engine.circle[base]
+            self._register(unit, "c", engine.symbols.index(c))
+            self._register(unit, "s", engine.symbols.index(s_))
+        for g, level in engine.level.items():
+            self.last[g] = level
         self.cache: dict = {}
 
     def _order(self, joint: int) -> int:
-        return joint
+        """The nesting level of an angle's coordinate: the joint, or -1 for the geometry's."""
+        return joint if joint < self.n else -1
 
     def _register(self, angle: tuple, kind: str, gid: int | None = None) -> int:
         key = (angle, kind)

@@ -295,3 +295,130 @@ def test_the_ring_path_on_the_franka_panda():
     T0, J0 = _raw_products(arm, qs)
     assert _agree(T, T0, qs, [7]) and _agree(J, J0, qs, [8])
     assert count_ops(T) <= 1608 and count_ops(J) <= 1652
+
+
+# ---------------------------------------------------------------- symbolic twist angles (issue 23 item 2)
+def _circle_geometry(alphas, others, seed):
+    """Exact values of the geometry: ``(cos, sin)`` of each twist angle at a rational point of the
+    circle, ``((1 - t^2)/(1 + t^2), 2 t/(1 + t^2))`` for a random rational ``t``, and rationals."""
+    import random
+
+    rng = random.Random(seed)
+    point = {}
+    for al in alphas:
+        t = Rational(rng.randint(-9, 9), rng.randint(1, 9))
+        point[cos(al)] = (1 - t**2) / (1 + t**2)
+        point[sin(al)] = 2 * t / (1 + t**2)
+    for x in others:
+        point[x] = Rational(rng.randint(-9, 9), rng.randint(1, 9))
+    return point
+
+
+def _chain_at(chain, point):
+    """The chain with its geometry put in (sums of the twist angles expanded first): numeric twists."""
+    from sympy import expand_trig
+
+    def put(m):
+        return m.applyfunc(lambda e: expand(expand_trig(e)).xreplace(point))
+
+    return Chain([Twist(put(t.omega), put(t.v_O)) for t in chain.twists],
+                 Transform._new(put(chain.home.R), put(chain.home.p)))
+
+
+def _agree_at_geometry(ours, chain, qs, seeds, frame="space", forward=True):
+    """``ours`` (T(q) or the Jacobian) equal to the plain products of the chain with the geometry
+    put in, at exact points of the circle for the twist angles and the joint angles."""
+    from sympy import expand_trig
+
+    for seed in seeds:
+        point = _circle_geometry(*seed)
+        T0, J0 = _raw_products(_chain_at(chain, point), qs, frame)
+        ref = T0 if forward else J0
+        mine = ours.applyfunc(lambda e, point=point: expand(expand_trig(e)).xreplace(point))
+        if not _agree(mine, ref, qs, [seed[2]]):
+            return False
+    return True
+
+
+def test_symbolic_twist_angles_take_the_ring_path_and_equal_the_products():
+    """A 3R DH arm with symbolic a_i, alpha_i, d_i: the ring path (not the stepwise one) gives
+    T(q) and both Jacobians equal to the plain products at exact points of the circles, and the
+    comparison rejects a result with one sign flipped."""
+    from screwsym.motion import _poe
+
+    a = symbols("a1:4", real=True)
+    d = symbols("d1:4", real=True)
+    al = symbols("alpha1:4", real=True)
+    arm = Chain.from_dh([(a[i], al[i], d[i], 0) for i in range(3)])
+    assert _poe.fast_forward(arm.twists, arm.home, q) is not None
+    assert _poe.fast_space_jacobian(arm.twists, arm.home, q) is not None
+    assert _poe.fast_body_jacobian(arm.body_twists(), arm.home, q) is not None
+    T, Js, Jb = arm.forward(q).matrix, arm.jacobian(q), arm.jacobian(q, frame="body")
+    seeds = [(al, a + d, 11), (al, a + d, 12)]
+    assert _agree_at_geometry(T, arm, q, seeds)
+    assert _agree_at_geometry(Js, arm, q, seeds, forward=False)
+    assert _agree_at_geometry(Jb, arm, q, seeds[:1], "body", forward=False)
+    # the forward kinematics is the product of the table's rows, exactly
+    from screwsym.motion.dh import dh_row_transform
+
+    rows = ImmutableMatrix.eye(4)
+    for i in range(3):
+        rows = rows * dh_row_transform(a[i], al[i], d[i], q[i]).matrix
+    assert expand(T - rows) == ImmutableMatrix.zeros(4, 4)
+    # one sign flipped in one term: rejected
+    wrong = T.as_mutable()
+    term = wrong[0, 3].args[0]
+    wrong[0, 3] -= 2 * term
+    assert not _agree_at_geometry(wrong, arm, q, seeds[:1])
+    wrong = Js.as_mutable()
+    wrong[4, 2] = -wrong[4, 2]
+    assert not _agree_at_geometry(wrong, arm, q, seeds[:1], forward=False)
+
+
+def test_the_unit_axis_is_decided_modulo_the_circles():
+    """``omega . omega = 1`` holds by ``sin^2 + cos^2 = 1`` only: revolute; off the circle: stepwise."""
+    from screwsym.motion import _poe
+
+    b = symbols("beta", real=True)
+    turned = Twist([0, -sin(b), cos(b)], [0, 0, 0])
+    assert _poe._joint_kind(turned.omega, turned.v_O) is None  # expand alone cannot see it
+    assert _poe.fast_forward([turned], Transform.identity(), (q1,)) is not None
+    long = Twist([0, -2 * sin(b), cos(b)], [0, 0, 0])  # |omega| != 1
+    assert _poe.fast_forward([long], Transform.identity(), (q1,)) is None
+    skew = Twist([0, -sin(b), cos(b)], [0, sin(b), cos(b)])  # omega . v = cos^2 - sin^2 != 0
+    assert _poe.fast_forward([skew], Transform.identity(), (q1,)) is None
+    T = Chain([turned], Transform.translation([0, 0, 1])).forward([q1])
+    T0 = exp6(turned, q1) @ Transform.translation([0, 0, 1])
+    assert is_exactly_zero(T.matrix - T0.matrix)
+    wrong = T.matrix.as_mutable()
+    wrong[1, 3] += sin(b) ** 2 + cos(b) ** 2 - 1 + sin(q1) / 7
+    assert not is_exactly_zero(wrong - T0.matrix)
+
+
+def test_numeric_twist_angles_keep_the_former_ring_path():
+    """No sine or cosine of a symbol in the geometry: no circles, the product of exponentials as before."""
+    from screwsym.motion import _poe
+    from screwsym.motion.chain import ur5
+
+    arm = ur5()
+    engine = _poe._engine(arm.twists, arm.home, symbols("q1:7", real=True))
+    assert engine.bases == [] and engine._walk() is None
+
+
+@pytest.mark.slow
+def test_a_generic_6r_with_every_dh_parameter_symbolic():
+    """Issue 23 item 2: a_i, d_i and alpha_i all symbols (18), symbolic joint angles: T(q) and
+    J_s(q) by the ring, equal to the plain products at exact points, no larger than plain SymPy's
+    untidied products (count_ops 61,594 and 60,022, benchmarks/bench_scaling.py)."""
+    a = symbols("a1:7", real=True)
+    d = symbols("d1:7", real=True)
+    al = symbols("alpha1:7", real=True)
+    arm = Chain.from_dh([(a[i], al[i], d[i], 0) for i in range(6)])
+    qs = symbols("q1:7", real=True)
+    T, J = arm.forward(qs).matrix, arm.jacobian(qs)
+    assert _agree_at_geometry(T, arm, qs, [(al, a + d, 21)])
+    assert _agree_at_geometry(J, arm, qs, [(al, a + d, 22)], forward=False)
+    assert count_ops(T) <= 61594 and count_ops(J) <= 60022
+    wrong = J.as_mutable()
+    wrong[3, 5] = -wrong[3, 5]
+    assert not _agree_at_geometry(wrong, arm, qs, [(al, a + d, 22)], forward=False)
