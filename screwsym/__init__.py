@@ -13,6 +13,7 @@ Mechanisms* (Springer 2013); docstrings cite its equation numbers.
 """
 
 import importlib
+from typing import TYPE_CHECKING as _TYPE_CHECKING
 from typing import Any as _Any
 
 from ._version import __version__ as __version__
@@ -47,6 +48,26 @@ try:  # the import takes most of the command line's first second: see screwsym._
     from .core.printing import init_printing as init_printing
 except KeyboardInterrupt:
     from ._launch import exit_if_command_line
+
+    exit_if_command_line()
+    raise
+
+if _TYPE_CHECKING:  # loaded on first use (_LAZY_NAMES below); a type checker sees them here
+    from .motion import Chain, Transform, convert, convert_from, exp6, log6
+    from .systems import (
+        Cylindrical,
+        Helical,
+        Limb,
+        Mechanism,
+        Mobility,
+        ParallelMechanism,
+        Parallelogram,
+        Prismatic,
+        Revolute,
+        ScrewSystem,
+        Spherical,
+        Universal,
+    )
 
     exit_if_command_line()
     raise

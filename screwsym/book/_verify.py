@@ -241,7 +241,8 @@ def _rational_parts_factored(e: Expr) -> tuple[Any, dict]:
                 num += n
             out = (num, common)
         elif x.is_Mul:
-            num, den = one, {}
+            num = one
+            den: dict = {}
             for a in x.args:
                 n, d = conv(a)
                 num = num * n
@@ -302,10 +303,10 @@ def _reduced(p: Any) -> Any:
     if signs:
         terms: dict = {}
         for monom, coeff in p.terms():
-            m = list(monom)
+            ml = list(monom)
             for i in signs:
-                m[i] %= 2
-            m = tuple(m)
+                ml[i] %= 2
+            m = tuple(ml)
             terms[m] = terms.get(m, R.domain.zero) + coeff
         p = R.from_dict({m: c for m, c in terms.items() if c})
     for i_s, i_c in pairs:
@@ -314,9 +315,9 @@ def _reduced(p: Any) -> Any:
         one_minus_s2 = R.one - R.gens[i_s] ** 2
         out = R.zero
         for monom, coeff in p.terms():
-            m = list(monom)
-            k, m[i_c] = m[i_c], m[i_c] % 2
-            out += R.from_dict({tuple(m): coeff}) * one_minus_s2 ** (k // 2)
+            mc = list(monom)
+            k, mc[i_c] = mc[i_c], mc[i_c] % 2
+            out += R.from_dict({tuple(mc): coeff}) * one_minus_s2 ** (k // 2)
         p = out
     return p
 

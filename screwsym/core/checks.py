@@ -115,8 +115,9 @@ def find_string(value: Any) -> Any:
         elif isinstance(item, (list, tuple, set, frozenset)):
             stack.extend(item)
         elif isinstance(item, _np_types("ndarray")):
-            if item.dtype.kind in "USO":
-                stack.extend(item.ravel().tolist())
+            array: Any = item
+            if array.dtype.kind in "USO":
+                stack.extend(array.ravel().tolist())
     return None
 
 
@@ -406,7 +407,7 @@ def check_sequence(value: Any, name: str, what: str, length: int | None = None) 
     from sympy import Tuple
 
     ok = isinstance(value, (list, tuple, Tuple, MatrixBase)) or (
-        isinstance(value, _np_types("ndarray")) and value.ndim == 1
+        isinstance(value, _np_types("ndarray")) and getattr(value, "ndim", None) == 1
     )
     if not ok:
         raise TypeError(f"{name}: expected a sequence of {what}, got {type(value).__name__}")

@@ -191,9 +191,9 @@ class _Engine:
                 base = list(m)
                 base[is_] = r
                 for t in range(j + 1):
-                    mt = list(base)
-                    mt[ic] += 2 * t
-                    mt = tuple(mt)
+                    ml = list(base)
+                    ml[ic] += 2 * t
+                    mt = tuple(ml)
                     out[mt] = out.get(mt, 0) + c * comb(j, t) * (-1) ** t
             P = self.R.from_dict({m: c for m, c in out.items() if c})
         return P
@@ -337,9 +337,9 @@ class _Engine:
         if not self.bases:
             return None
         if hasattr(self, "_walked"):
-            return self._walked
+            return cast(Any, self._walked)
         frames = self._frames()
-        self._walked = None
+        self._walked: Any = None
         if frames is None:
             return None
         one, zero = self.R.one, self.R.zero

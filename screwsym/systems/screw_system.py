@@ -395,7 +395,8 @@ class ScrewSystem(ScrewsymBasic):
         >>> ScrewSystem(Wrench.force([0, 0, 1], point=[0, 0, 0])).reciprocal().rank
         5
         """
-        return _reciprocal_of(self.matrix, _DUAL_KIND[self.kind])
+        kind: Any = _DUAL_KIND[self.kind]  # a class: hashable, as lru_cache needs
+        return _reciprocal_of(self.matrix, kind)
 
     def rank_conditions(
         self, *, max_cases: int = MAX_CASES, budget: int = BUDGET
@@ -860,7 +861,7 @@ def _to_ring_cached(M: ImmutableMatrix) -> _Ring:
 @lru_cache(maxsize=64)
 def _lift_ring(R):
     """``Q[x, theta]`` for the ring ``R = Q(theta)[x]`` (theta the last symbol)."""
-    return QQ[(*R.symbols, Dummy("theta"))]
+    return QQ[tuple(R.symbols) + (Dummy("theta"),)]
 
 
 def _lift(p, R):
