@@ -27,6 +27,25 @@ rings, instead of as expression trees tidied after every factor:
    the content and the common monomial of each level pulled out, or flat where
    that is smaller (by ``count_ops``).
 
+**Sines and cosines in the geometry** (symbolic Denavit-Hartenberg twist angles
+``alpha_i``): each ``sin`` or ``cos`` of ``sum k_i x_i + c`` (integers ``k_i``, symbols
+``x_i``) is expanded by the angle-sum formulas into ``cos(x_i), sin(x_i)``, which are
+ring generators on their circles: polynomials are kept in the normal form modulo
+``cos(x)^2 + sin(x)^2 - 1`` (``sin(x)^k``, ``k >= 2``, made ``sin(x)^(k mod 2) (1 -
+cos(x)^2)^(k // 2)``; the relations' leading terms are coprime, so this is a normal
+form, and it is zero exactly when the polynomial vanishes on the circles).  A unit
+axis such as ``(0, -sin(alpha), cos(alpha))`` is decided so (``omega . omega - 1`` and
+``omega . v_O`` reduce to zero).  The product of exponentials itself is then walked
+through the joints' own frames, ``exp6($_k, q_k) = F_k Z(q_k) F_k^-1``, so that
+``T(q) = F_1 Z(q_1) L_1 Z(q_2) ... Z(q_n) L_n`` with the constant links ``L_k = F_k^-1
+F_(k+1)``: the rows of the table, short in ``cos(alpha_k), sin(alpha_k)``, where the
+joint twists of a symbolic table are long polynomials in them (Lynch & Park 2017,
+Appendix C).  The frames are built from the twists (``z`` the unit axis, ``x`` the
+previous frame's ``x`` or ``y`` or a base unit vector orthogonal to it, the origin
+the foot of the perpendicular from the previous one); a chain without them is
+multiplied as above.  Chains without sines or cosines of symbols in the geometry
+are unchanged by this.
+
 Every step is an exact identity (ring arithmetic over the rationals, the
 Pythagorean identity, the angle-sum formulas), so the results equal the
 product of the exponentials.  Chains outside this class (helical joints,
