@@ -69,9 +69,6 @@ if _TYPE_CHECKING:  # loaded on first use (_LAZY_NAMES below); a type checker se
         Universal,
     )
 
-    exit_if_command_line()
-    raise
-
 #: What ``from screwsym import *`` binds.  It names nothing that ``from sympy import *``
 #: binds too (tests/package/test_namespace.py checks it), so a notebook may star-import
 #: both: screwsym's ``lambdify``, ``init_printing``, ``plot`` and ``__version__`` are
