@@ -247,6 +247,11 @@ def c_wrapper_source(plan: Plan) -> str:
 C_CHUNK = 20_000
 
 
+def _c_input(plan: Plan, k: int, c: int) -> str:
+    """Component ``c`` of input ``k`` in the point function's parameters."""
+    return f"_a{k}[{c}]" if plan.specs[k].trailing else f"_a{k}"
+
+
 def _c_chunks(plan: Plan, cname: str, printer: CPrinter,
               codes: list[str]) -> tuple[list[str], list[str]]:
     """A large plan's point body as functions of about :data:`C_CHUNK` characters each.
@@ -267,11 +272,9 @@ def _c_chunks(plan: Plan, cname: str, printer: CPrinter,
             parts.append([])
             size = 0
         parts[-1].append((sym, e, code))
+        made_in[sym] = len(parts) - 1
         size += len(code)
     inputs = {x for _, _, x in plan.unpack}
-    for k, part in enumerate(parts):
-        for sym, _, _ in part:
-            made_in[sym] = k
     uses = [set().union(*(e.free_symbols for _, e, _ in part)) for part in parts]
     uses.append(set().union(*(e.free_symbols for _, _, e in plan.stores)) if plan.stores else set())
     for k, used in enumerate(uses):
@@ -289,10 +292,7 @@ def _c_chunks(plan: Plan, cname: str, printer: CPrinter,
                 defs.append(f"    _t[{slot[sym]}] = {sym};")
         defs += ["}", ""]
     body = [f"    double _t[{max(len(slot), 1)}];"]
-    for k, c, x in plan.unpack:
-        if x in slot:
-            src = f"_a{k}[{c}]" if plan.specs[k].trailing else f"_a{k}"
-            body.append(f"    _t[{slot[x]}] = {src};")
+    body += [f"    _t[{slot[x]}] = {_c_input(plan, k, c)};" for k, c, x in plan.unpack if x in slot]
     body += [f"    {cname}_part{k}(_t);" for k in range(len(parts))]
     body += [f"    const double {x} = _t[{slot[x]}];" for x in sorted(uses[-1], key=str)
              if x in slot]
@@ -333,8 +333,7 @@ def c_source(plan: Plan, cname: str) -> str:
         defs, body = _c_chunks(plan, cname, printer, codes)
     else:
         defs = []
-        body = [f"    const double {x} = _a{k}[{c}];" if plan.specs[k].trailing
-                else f"    const double {x} = _a{k};" for k, c, x in plan.unpack]
+        body = [f"    const double {x} = {_c_input(plan, k, c)};" for k, c, x in plan.unpack]
         body += [f"    const double {sym} = {code};"
                  for (sym, _), code in zip(plan.assigns, codes, strict=True)]
         body += [f"    _o{j}[{c}] = {printer.doprint_line(e)};" for j, c, e in plan.stores]
