@@ -37,7 +37,6 @@ __all__ = [
 ]
 
 
-
 def _np_types(*names: str) -> tuple[type, ...]:
     """NumPy's types ``numpy.<name>`` (dotted for ``ma.MaskedArray``), or ``()``.
 
@@ -54,6 +53,7 @@ def _np_types(*names: str) -> tuple[type, ...]:
             obj = getattr(obj, part)
         out.append(obj)
     return tuple(out)
+
 
 def _describe(value: Any) -> str:
     """A short description of ``value`` for error messages."""

@@ -83,7 +83,7 @@ def _has_denominator(expr: Expr) -> bool:
 
 
 class _NotRational(Exception):
-    """A float, or a denominator that is the zero polynomial: not for :func:`_zero_rational`."""
+    """A float, or a denominator that is the zero polynomial: not for :func:`_rational_parts`."""
 
 
 def _generators(e: Expr) -> list[Expr]:
