@@ -1047,7 +1047,7 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
         found: list[tuple[tuple, dict | None, Any]] = []
         for node in _cases(ImmutableMatrix(M), limit):
             new = conds if node.condition is true else conds + (node.condition,)
-            if node.rank is None:
+            if node.rank is None or node.relation:  # undecided, or no substitution states it
                 found.append((new, None, node))
                 continue
             composed = _compose(subs, dict(node.subs))

@@ -718,7 +718,7 @@ def _refine(conds: tuple[Any, ...], subs: dict[Any, Any] | None, system: ScrewSy
     ranks = system.rank_conditions(max_cases=limit)
     for (cond, rank), (_, more) in zip(ranks, system.substitutions(max_cases=limit), strict=True):
         new_conds = conds if cond is true else conds + (cond,)
-        if rank is None or subs is None:
+        if rank is None or subs is None or more is None:  # undecided, or no substitution
             out.append((new_conds, None))
             continue
         composed = {k: cancel(_substitute(v, more)) for k, v in subs.items()}

@@ -425,10 +425,18 @@ class ScrewSystem(ScrewsymBasic):
         polynomial without real roots, or a quadratic with a positive leading
         coefficient and a positive definite discriminant: ``(x + 2)**2 +
         (y + 2)**2 + 4``), or with no real root or point of the circle.  Where
-        a factor is in two or more symbols and linear in none (``x**2 + y**2 =
-        2``, ``q sin(q) = 1``), the case is listed with rank ``None`` (at most
-        the rank of the case above it; not analysed further): the only cases
-        SymPy's tools here cannot decide.  A system with many free symbols can have
+        a factor ``f`` is in two or more symbols and linear in none (``x**2 -
+        y**3 = 2``, ``cos(a) + cos(b) = 1``), the rank on the surface is
+        proved modulo ``f`` (no substitution states it; :meth:`substitutions`
+        gives ``None``): exactly ``r`` wherever ``f = 0`` and an ``r x r``
+        minor ``g`` is non-zero, the minor found at a point of ``f = 0`` over
+        a finite field and the rank proved by the normal forms modulo a
+        Groebner basis of ``f`` (and the circles).  Where ``g`` vanishes too,
+        each factor of ``g`` is imposed and then ``f``.  A case is listed with
+        rank ``None`` (at most the rank of the case above it; not analysed
+        further) only where two such equations, linear in no symbol, meet, or
+        where no point proves a rank: the cases SymPy's tools here cannot
+        decide.  A system with many free symbols can have
         very many cases: past ``max_cases`` a ``ValueError`` says so.  The
         work is bounded too: ``budget`` units of polynomial arithmetic
         (:data:`BUDGET`; a ``k x k`` determinant whose rows have at most
@@ -487,11 +495,13 @@ class ScrewSystem(ScrewsymBasic):
 
     def substitutions(
         self, *, max_cases: int = MAX_CASES, budget: int = BUDGET
-    ) -> list[tuple[Boolean, dict[Any, Any]]]:
+    ) -> list[tuple[Boolean, dict[Any, Any] | None]]:
         """For each case of :meth:`rank_conditions`, the substitution of symbols that it makes.
 
         Applying the substitution (``system.xreplace(subs)``) gives a system
-        whose generic rank is the case's rank.  At a point of the circle the
+        whose generic rank is the case's rank.  ``None`` for a case on a
+        surface ``f = 0`` that no substitution states (``f`` in two or more
+        symbols, linear in none): its rank is proved modulo ``f`` instead.  At a point of the circle the
         substitution sets ``sin(q)`` and ``cos(q)`` (``{sin(q): 0, cos(q): -1}``,
         not ``q``); where the entries hold ``sin(2*q)`` or ``cos(q + r)``,
         expand them first (``expand_trig``) so that it reaches them.
@@ -505,7 +515,7 @@ class ScrewSystem(ScrewsymBasic):
         [(Ne(a, 0), {}), (Eq(a, 0), {a: 0})]
         """
         cases = _budgeted_cases(self.matrix, max_cases, budget, "substitutions")
-        return [(n.condition, dict(n.subs)) for n in cases]
+        return [(n.condition, None if n.relation else dict(n.subs)) for n in cases]
 
 
 def _check_system(value: Any, name: str) -> ScrewSystem:
@@ -926,7 +936,11 @@ def _norm(P, R):
     Ps = S.ring.from_dict({perm(k): v for k, v in P.items()})
     ms = S.ring.from_dict({perm(k): v for k, v in m.items()})
     r = Ps.resultant(ms)
-    return L.ring.from_dict({k[1:] + (0,): v for k, v in r.items()}) if r else L.zero
+    if not r:
+        return L.zero
+    # SymPy returns the resultant in the ring without theta (or, in older versions, with it)
+    drop = 1 if len(next(iter(r.keys()))) == len(gens) else 0
+    return L.ring.from_dict({k[drop:] + (0,): v for k, v in r.items()})
 
 
 def _alg_gcd(a, b, R):
@@ -1284,6 +1298,9 @@ class _Node:
     matrix: ImmutableMatrix  # the system with the substitution made
     rows: tuple = ()  # members of the minor
     cols: tuple = ()  # coordinates of the minor (of the swapped rows)
+    #: the equations (in the user's symbols) the rank is proved modulo, where no
+    #: substitution states the case (``_on_surface``); then ``subs`` does not make it
+    relation: tuple = ()
 
 
 def _poly_expr(p, R) -> Any:
@@ -1423,7 +1440,38 @@ def _positive(p, R, depth: int = 0) -> bool:
         c = p - a * g**2 - b * g
         if _positive(a, R, depth + 1) and _positive(4 * a * c - b**2, R, depth + 1):
             return True
-    return False
+    # at depth 0 the callers pass irreducible factors (``_factors``): nothing to split
+    return depth > 0 and _positive_product(p, R, depth)
+
+
+def _positive_product(p, R, depth: int) -> bool:
+    """True if ``p = c f_1**e_1 ... f_k**e_k`` is proved positive factor by factor.
+
+    Each factor of odd power proved positive or negative (:func:`_positive`), each of
+    even power without a real zero, and the signs' product positive:
+    ``(p**2 + q**2 + 1)**2`` (the leading coefficient in ``z`` of a 3-RPS's leg
+    condition) and ``36 (p**2 + q**2 + 1)**2 ((p + q/sqrt(3))**2 + 1/3)**2``.
+    """
+    _charge(len(p.terms()) ** 2)
+    fl = _factor_list(p, R)
+    if len(fl) == 1 and fl[0][1] == 1:
+        return False  # irreducible: nothing to gain
+    sign = 1
+    rest = p
+    for f, k in fl:
+        rest = rest.exquo(f**k)
+        if k % 2 == 0:
+            if not _no_real_zero(f, R, depth + 1):
+                return False
+        elif _positive(f, R, depth + 1):
+            pass
+        elif _positive(-f, R, depth + 1):
+            sign = -sign
+        else:
+            return False
+    if not rest.is_ground:  # pragma: no cover - the factors make up p
+        return False
+    return bool(R.domain.to_sympy(rest.LC) * sign > 0)
 
 
 def _square_split(f, R, depth: int = 0):
@@ -1450,9 +1498,9 @@ def _square_split(f, R, depth: int = 0):
     return None
 
 
-def _no_real_zero(f, R) -> bool:
+def _no_real_zero(f, R, depth: int = 0) -> bool:
     """True if ``f`` has no real zero: ``f`` or ``-f`` proved positive (:func:`_positive`)."""
-    return _positive(f, R) or _positive(-f, R)
+    return _positive(f, R, depth) or _positive(-f, R, depth)
 
 
 def _solvable(i: int, R) -> bool:
@@ -1801,6 +1849,8 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
         if squares is not None:  # a sum of squares: each square is zero
             _impose(M, conds, subs, nonzero, [_poly_expr(e, R) for e in squares] + rest, out)
             return
+        if points is None and not rest and _on_surface(M, conds, subs, nonzero, fe, out):
+            return  # decided on the surface itself, modulo fe
         if points is None:  # not decided here: listed with rank None
             out.append(_Node(_condition(conds + (Eq(fe, 0),)), None, subs, M))
             return
@@ -1826,6 +1876,272 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
         earlier = tuple(a_factors[:k])
         _impose(M, conds + (eq,) + tuple(Ne(h, 0) for h in earlier), subs, nonzero + earlier,
                 [g, _poly_expr(b, R)] + rest, out)
+
+
+# ---------------------------------------------------------------------------
+# A case on a hypersurface f = 0 that no substitution states: the rank proved modulo f
+# ---------------------------------------------------------------------------
+#
+# Why not a substitution: an irreducible f in two or more symbols and linear in none
+# (the 3-RPS's 2 p**2 - 2 q**2 + 1 = 0, a degree-12 type II surface cubic in z) has no
+# rational solution for any symbol; its roots are algebraic functions of the others.  The
+# rank on the case is proved instead, pointwise: with g an r x r minor of the members
+# (rows I, coordinates J) and v_1, ..., v_{6-r} the vectors of Cramer's rule on it, every
+# other member's products with the v_k lie in the ideal of f (and of the circles'
+# relations): wherever f = 0 and g != 0, the rows I are independent, the v_k span their
+# null space, and every member is orthogonal to it, so the rank is r exactly there.
+# Membership is decided by the normal form modulo a Groebner basis (SymPy's
+# ``groebner``), exact.  The rank r and the minor are first found at a point of f = 0
+# over a finite field (a root of f in one symbol, the others at random): a point's
+# minor non-zero there is non-zero modulo f, so r is at most the rank on the case, and
+# the proof above decides; a point that proves nothing is followed by another (seeds).
+# What is left, f = 0 with a factor h of g zero, is imposed as two equations, h first
+# (solved for a symbol or at its points where it can be, and f then in fewer symbols);
+# where h is neither, the intersection is listed with rank None.  (A Groebner basis of
+# f and h, which would tell an empty intersection, is not computed: on the 3-RPS it
+# did not finish in 90 s.)
+
+#: the primes of the points of f = 0 over a finite field (large: an unlucky zero of a
+#: minor at the point has probability about degree / prime)
+_PRIMES = (2_147_483_647, 2_147_483_629, 2_147_483_587, 2_147_483_579, 2_147_483_563)
+
+
+#: a minor of more terms than this (modulo the surface) is not factored (``_on_surface``)
+_FACTOR_ON_SURFACE = 60
+
+
+class _Unlucky(Exception):
+    """This prime or point does not serve (a denominator or a leading coefficient vanishes)."""
+
+
+def _element(e: Any, R) -> Any:
+    """The polynomial ``e`` (in the user's symbols, ``sin(q)`` allowed) as an element of ``R``."""
+    e = _trig_entries([e])[0]
+    (d,), _ = parallel_dict_from_expr([e], gens=R.symbols)
+    K = R.domain
+    return R.ring.from_dict({m: _coefficient(K, c) for m, c in d.items()})
+
+
+def _circle_relations(R) -> list:
+    """``sin(q)**2 + cos(q)**2 - 1`` for each angle with both in the ring."""
+    g = R.ring.gens
+    return [g[si] ** 2 + g[ci] ** 2 - 1 for _, ci, si in _relations(R)
+            if ci is not None and si is not None]
+
+
+def _ideal(polys: list, R) -> list:
+    """A Groebner basis (SymPy's) of ``polys`` and the circles' relations, in ``R``'s order."""
+    from sympy.polys.groebnertools import groebner
+
+    gens = [p.monic() for p in polys + _circle_relations(R)]
+    _charge(sum(len(p.terms()) for p in gens) ** 2)
+    return groebner(gens, R.ring)
+
+
+def _modular(c, K, p: int, theta: int | None) -> int:
+    """The coefficient ``c`` of ``K`` (a rational, or an algebraic number at ``theta``) mod ``p``."""
+    parts = [c] if theta is None else c.to_list()
+    v = 0
+    for q in parts:
+        q = QQ.convert(q)
+        den = int(q.denominator) % p
+        if not den:
+            raise _Unlucky
+        v = (v * (theta or 0) + int(q.numerator) * pow(den, -1, p)) % p
+    return v
+
+
+def _roots_mod(coeffs: list, p: int) -> list:
+    """The roots mod ``p`` of the polynomial with integer coefficients ``coeffs`` (highest first)."""
+    from sympy.polys.galoistools import gf_factor_sqf, gf_sqf_part, gf_strip
+
+    f = gf_strip([c % p for c in coeffs])
+    if len(f) < 2:
+        return []
+    _, factors = gf_factor_sqf(gf_sqf_part(f, p, ZZ), p, ZZ)
+    return [(-int(g[1])) % p for g in factors if len(g) == 2]
+
+
+def _at_point(polys_rows: list, R, p: int, point: list, theta: int | None) -> list:
+    """The entries (ring elements) evaluated mod ``p`` at ``point``."""
+    K = R.domain
+    out = []
+    for row in polys_rows:
+        vals = []
+        for e in row:
+            total = 0
+            for m, c in (e.items() if e else ()):
+                t = _modular(c, K, p, theta)
+                for i, k in enumerate(m):
+                    if k:
+                        t = t * pow(point[i], k, p) % p
+                total += t
+            vals.append(total % p)
+        out.append(vals)
+    return out
+
+
+def _point_on(f, R, p: int, rnd: random.Random) -> tuple[list, int | None]:
+    """A point mod ``p`` where ``f`` vanishes (and every circle holds), with ``theta``'s value.
+
+    One symbol of ``f`` is solved for (a root of ``f`` in it, the others at random);
+    when ``f`` is in sines and cosines alone, one angle's ``tan(q/2)``.  Raises
+    ``_Unlucky`` where this prime or point has no such root.
+    """
+    K = R.domain
+    theta = None
+    if K.is_Algebraic:
+        roots = _roots_mod([_modular(c, QQ, p, None) for c in K.mod.to_list()], p)
+        if not roots:
+            raise _Unlucky
+        theta = roots[0]
+    n = len(R.gens)
+    point = [rnd.randrange(p) for _ in range(n)]
+    circles = {}
+    for q, ci, si in _relations(R):
+        t = rnd.randrange(p)
+        den = (1 + t * t) % p
+        if not den:
+            raise _Unlucky
+        inv = pow(den, -1, p)
+        circles[q] = (ci, si)
+        if si is not None:
+            point[si] = 2 * t * inv % p
+        if ci is not None:
+            point[ci] = (1 - t * t) * inv % p
+    involved = _involved(f, R)
+    plain = [i for i in involved if R.symbols[i] not in _TRIG_BACK]
+    if plain:
+        x = max(plain, key=lambda i: f.degree(i))
+        by_degree: dict = {}
+        for m, c in f.items():
+            t = _modular(c, K, p, theta)
+            for i, k in enumerate(m):
+                if k and i != x:
+                    t = t * pow(point[i], k, p) % p
+            by_degree[m[x]] = (by_degree.get(m[x], 0) + t) % p
+        top = max(by_degree)
+        if not by_degree[top]:
+            raise _Unlucky
+        roots = _roots_mod([by_degree.get(k, 0) for k in range(top, -1, -1)], p)
+        if not roots:
+            raise _Unlucky
+        point[x] = rnd.choice(roots)
+        return point, theta
+    # sines and cosines alone: one angle through t = tan(q/2), the numerator of f in t
+    from sympy.polys.galoistools import gf_add, gf_mul, gf_pow
+
+    q = next(_TRIG_BACK[R.symbols[i]].args[0] for i in involved)
+    ci, si = circles[q]
+    top = max((m[ci] if ci is not None else 0) + (m[si] if si is not None else 0)
+              for m in f.monoms())
+    num: list = []
+    for m, c in f.items():
+        t = _modular(c, K, p, theta)
+        for i, k in enumerate(m):
+            if k and i not in (ci, si):
+                t = t * pow(point[i], k, p) % p
+        a = m[si] if si is not None else 0
+        b = m[ci] if ci is not None else 0
+        term = gf_mul(gf_mul(gf_pow([2 % p, 0], a, p, ZZ), gf_pow([p - 1, 0, 1], b, p, ZZ), p, ZZ),
+                      gf_pow([1, 0, 1], top - a - b, p, ZZ), p, ZZ)
+        num = gf_add(num, [t * k % p for k in term], p, ZZ)
+    roots = [t for t in _roots_mod(num, p) if (1 + t * t) % p]
+    if not roots:
+        raise _Unlucky
+    t = rnd.choice(roots)
+    inv = pow(1 + t * t, -1, p)
+    if si is not None:
+        point[si] = 2 * t * inv % p
+    if ci is not None:
+        point[ci] = (1 - t * t) * inv % p
+    return point, theta
+
+
+def _rank_mod(rows: list, p: int) -> tuple[tuple, tuple]:
+    """The first independent rows of an integer matrix mod ``p``, and pivot coordinates of them."""
+    from sympy.polys.domains import FF
+
+    F = FF(p)
+    A = DomainMatrix([[F(v) for v in r] for r in rows], (len(rows), len(rows[0])), F)
+    _, pivots = A.transpose().rref()
+    if not pivots:
+        return (), ()
+    _, cols = A.extract(list(pivots), list(range(A.shape[1]))).rref()
+    return tuple(pivots), tuple(cols)
+
+
+def _rank_on(M: ImmutableMatrix, f, R, seeds: int = 4) -> tuple | None:
+    """``(rank, rows, cols, minor, basis)`` proved on ``f = 0`` where the minor is non-zero.
+
+    ``f`` is an element of the ring of ``M``; ``basis`` the Groebner basis of ``f``
+    and the circles (see the section's comment).  None where no point proved a rank.
+    """
+    rg = _to_ring(M)
+    RM = rg.ring
+    B = [_swap(c) for c in rg.cols]
+    G = _ideal([f], RM)
+    if G == [RM.ring.one]:
+        return None  # pragma: no cover - f has points (it came with real ones)
+    tried: set = set()
+    for seed in range(seeds):
+        rnd = random.Random(seed)
+        for prime in _PRIMES:
+            try:
+                point, theta = _point_on(f, RM, prime, rnd)
+                values = _at_point(B, RM, prime, point, theta)
+            except _Unlucky:
+                continue
+            break
+        else:
+            continue
+        rows, cols = _rank_mod(values, prime)
+        if not rows or (rows, cols) in tried:
+            continue
+        tried.add((rows, cols))
+        vectors = _cramer(B, rows, cols, RM)
+        minor = _minor(B, rows, cols, RM)
+        if not minor.rem(G):
+            continue  # pragma: no cover - zero modulo f although not at the point
+        _charge(sum(len(e.terms()) for v in vectors for e in v) * len(B))
+        if all(not sum((b * x for b, x in zip(B[i], v, strict=True)), RM.zero).rem(G)
+               for v in vectors for i in range(len(B)) if i not in rows):
+            return len(rows), rows, cols, minor, G
+    return None
+
+
+def _on_surface(M, conds, subs, nonzero, fe, out: list) -> bool:
+    """The cases of ``fe = 0`` proved modulo ``fe`` (see the section's comment); False: not done."""
+    rg = _to_ring(M)
+    RM = rg.ring
+    try:
+        f = _element(fe, RM)
+    except Exception:  # pragma: no cover - fe has symbols the system has not
+        return False
+    found = _rank_on(M, f, RM)
+    if found is None:
+        return False
+    rank, rows, cols, minor, G = found
+    eq = Eq(fe, 0)
+    minor = minor.rem(G)  # the same values on the case, and often fewer terms
+    if len(minor.terms()) > _FACTOR_ON_SURFACE:
+        # factoring a large minor over an algebraic field can take minutes (SymPy's
+        # Trager): the case is stated with the minor whole, and where it vanishes too, None
+        e = _poly_expr(minor, RM)
+        out.append(_Node(_condition(conds + (eq, Ne(e, 0))), rank, subs, M, rows, cols,
+                         relation=(fe,)))
+        out.append(_Node(_condition(conds + (eq, Eq(e, 0))), None, subs, M))
+        return True
+    factors = [e for e in (_poly_expr(h, RM) for h in _factors(minor, RM))
+               if not _known_nonzero(e, nonzero)]
+    out.append(_Node(_condition(conds + (eq,) + tuple(Ne(h, 0) for h in factors)), rank, subs, M,
+                     rows, cols, relation=(fe,)))
+    for k, h in enumerate(factors):  # the minor's factors zero too: two surfaces meet
+        earlier = tuple(factors[:k])
+        # h first: solved for a symbol or at its points where it can be, then fe there
+        _impose(M, conds + tuple(Ne(g, 0) for g in earlier), subs, nonzero + earlier,
+                [h, fe], out)
+    return True
 
 
 @lru_cache(maxsize=256)

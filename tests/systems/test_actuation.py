@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from sympy import Eq, Matrix, Rational, symbols
+from sympy import Eq, Matrix, Ne, Rational, symbols, true
 
 from screwsym import Twist
 from screwsym.systems.actuation import (
@@ -291,9 +291,13 @@ def test_three_rps_at_a_symbolic_pose_is_singular_where_jx_loses_rank():
     p, q, z = symbols("p q z", real=True)
     s = three_rps_pose(p, q, z).singularities()
     assert s.constraint == []
-    ((cond, rank),) = s.actuation
-    assert isinstance(cond, Eq) and rank in (None, 5)
-    f = cond.lhs - cond.rhs
+    # type II: the surface F = 0, Jx of rank 5 where moreover a 5 x 5 minor g is non-zero
+    # (proved modulo F), None where both vanish
+    (cond, rank), (rest, unknown) = s.actuation
+    assert (rank, unknown) == (5, None)
+    (surface,) = cond.atoms(Eq)
+    assert surface in rest.atoms(Eq) and Ne(*surface.args) not in cond.atoms(Ne)
+    f = surface.lhs - surface.rhs
     assert f.subs({p: 0, q: 0, z: 0}) == 0 and f.subs({p: 0, q: 0, z: 1}) != 0
 
     def jx_rank(pose):
@@ -302,8 +306,11 @@ def test_three_rps_at_a_symbolic_pose_is_singular_where_jx_loses_rank():
     poses = [(0, 0, 1), (0, 0, 0), (Rational(1, 2), Rational(-1, 3), 2), (1, 2, Rational(3, 2)),
              (Rational(-2, 5), 0, 0), (0, 1, Rational(1, 7))]
     for pose in poses:
-        on = f.subs(dict(zip((p, q, z), pose, strict=True))) == 0
+        at = dict(zip((p, q, z), pose, strict=True))
+        on = f.subs(at) == 0
         assert (jx_rank(pose) < 6) == on, (pose, on)
+        if cond.subs(at) is true:  # the case's rank, where it holds
+            assert jx_rank(pose) == 5, pose
     # a wrong condition is rejected: f + 1 vanishes nowhere among these poses, yet Jx drops
     assert any(jx_rank(x) < 6 for x in poses)
     assert not any((f + 1).subs(dict(zip((p, q, z), x, strict=True))) == 0 for x in poses)

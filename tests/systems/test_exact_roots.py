@@ -15,7 +15,7 @@ import random
 import numpy as np
 import pytest
 from _mechanisms import Z
-from sympy import Eq, Matrix, Ne, Or, Rational, Symbol, sqrt, symbols, true
+from sympy import And, Eq, Matrix, Ne, Or, Rational, sqrt, symbols, true
 
 from screwsym import ScrewSystem, Twist, Wrench
 from screwsym.systems.joints import P, R, S, U
@@ -179,13 +179,66 @@ def test_a_case_that_unmakes_a_joint_is_reported():
     assert_cases_at(mech, cases, points)
 
 
-def test_a_symbol_with_cannot_decide_is_none():
-    # an equation in two symbols, linear in neither, without a proof of no real zero
+def rank_at(W, point):
+    return W.xreplace(point).matrix.rank(simplify=True)
+
+
+def test_a_curve_linear_in_no_symbol_is_decided_on_itself():
+    # u**2 = v**3 + 2 (an elliptic curve: no rational parametrisation, no substitution):
+    # the second force's line meets the first's there; the rank is proved modulo the curve
     u, v = symbols("u v", real=True)
-    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[u**2 - v**3 - 2, 0, 0]))
+    f = u**2 - v**3 - 2
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[f, 0, 0]))
     cases = W.rank_conditions()
-    assert cases == [(Ne(u**2 - v**3 - 2, 0), 2), (Eq(u**2 - v**3 - 2, 0), None)]
-    assert Symbol("u", real=True) in cases[1][0].free_symbols
+    assert cases == [(Ne(f, 0), 2), (Eq(f, 0), 1)]
+    assert W.substitutions()[1] == (Eq(f, 0), None)  # no substitution states the case
+    # independently, at exact points of the curve and beside it
+    on = [{u: 1, v: -1}, {u: -sqrt(3), v: 1}, {u: sqrt(10), v: 2}]
+    off = [{u: 0, v: 0}, {u: 2, v: 1}]
+    assert [rank_at(W, pt) for pt in on + off] == [1, 1, 1, 2, 2]
+    for pt in on + off:
+        assert len([c for c, _ in cases if c.xreplace(pt) is true]) == 1
+    # the check rejects a wrong claim (rank 2 on the curve)
+    assert rank_at(W, on[2]) != 2
+
+
+def test_cosines_of_two_angles_are_decided_on_their_curve():
+    # cos(a) + cos(b) = 1: sines and cosines of two angles, linear in no symbol the
+    # split may solve for; decided modulo the curve and the two circles
+    from sympy import cos, pi
+
+    a, b = symbols("a b", real=True)
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]),
+                    Wrench.force(Z, point=[cos(a) + cos(b) - 1, 0, 0]))
+    cases = W.rank_conditions()
+    assert cases == [(Ne(cos(a) + cos(b) - 1, 0), 2), (Eq(cos(a) + cos(b) - 1, 0), 1)]
+    on = [{a: pi / 3, b: pi / 3}, {a: 0, b: pi / 2}, {a: -pi / 2, b: 0}]
+    assert [rank_at(W, pt) for pt in on] == [1, 1, 1]
+    for pt in on:
+        assert cases[1][0].xreplace(pt) is true
+    assert rank_at(W, {a: 0, b: 0}) == 2
+
+
+def test_where_two_curves_meet_the_points_are_decided():
+    # three parallel forces at (0, 0), (f, 0), (0, h): rank 3 off f h = 0, 2 on f = 0
+    # where h != 0; where both vanish, h modulo f is v**3 + v**2 - 3 (one symbol): decided
+    # at its real root, then f there (u = +-sqrt(5 - v**2)): all three forces at the origin
+    from sympy import CRootOf
+
+    u, v = symbols("u v", real=True)
+    f, h = u**2 - v**3 - 2, u**2 + v**2 - 5
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[f, 0, 0]),
+                    Wrench.force(Z, point=[0, h, 0]))
+    cases = W.rank_conditions()
+    assert cases[0] == (And(Ne(f, 0), Ne(h, 0)), 3)
+    assert None not in [r for _, r in cases]
+    r = CRootOf(v**3 + v**2 - 3, 0)
+    assert (And(Ne(v**3 + v**2 - 3, 0), Eq(f, 0)), 2) in cases
+    assert [c for c, rank in cases if rank == 1 and c.has(Eq(v, r))]
+    # independently: on f = 0 with h != 0 the rank is 2; off both, 3; where both vanish, 1
+    assert rank_at(W, {u: 1, v: -1}) == 2
+    assert rank_at(W, {u: 0, v: 0}) == 3
+    assert float(5 - r**2) > 0  # and u = sqrt(5 - r**2) is real there
 
 
 @pytest.mark.slow

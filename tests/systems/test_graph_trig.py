@@ -248,17 +248,23 @@ def test_the_checker_rejects_a_wrong_answer():
 
 def test_two_angles_the_case_sympy_cannot_decide_says_none():
     # both pivots on circles, B = (cos a, sin a), C = (4 + cos b, sin b): the loop's minor is
-    # in two angles and linear in no symbol, so that case is undecided (None), never guessed;
-    # ParallelMechanism, splitting limb by limb, meets other minors and decides it
+    # in two angles and linear in no symbol.  Its rank is proved on that curve modulo it
+    # (rank_conditions), but no substitution states the curve, so the graph's split
+    # cannot go on there: that case is undecided (None), never guessed.  Where sin(a) = 0
+    # too, the curve meets sin(b) = 0: the four points in one line, folded (mobility 2)
     a, b = symbols("a b", real=True)
     mech = four_r([[0, 0, 0], [cos(a), sin(a), 0], [4 + cos(b), sin(b), 0], [4, 0, 0]], [Z] * 4)
     cases = mech.mobility_cases()
-    assert [None if m is None else m.mobility for _, m in cases] == [1, None]
+    assert [None if m is None else m.mobility for _, m in cases] == [1, None, 2]
     points = circle_points([a, b], [{a: 0, b: pi}, {a: pi, b: 0}, {a: 0, b: 0}])
     assert_circle_cases(mech, points, cases=cases)
-    # the undecided case holds where the four-bar folds (a = b = 0: mobility 2) and elsewhere
-    assert cases[1][0].xreplace({sin(a): 0, cos(a): 1, sin(b): 0, cos(b): 1}) is true
+    folded = {sin(a): 0, cos(a): 1, sin(b): 0, cos(b): 1}
+    assert cases[2][0].xreplace(folded) is true
     assert mech.xreplace({a: 0, b: 0}).mobility().mobility == 2
+    # the undecided case holds on the rest of the curve (b = pi/2, tan(a) = 1/4: B, C and
+    # the origin in one line)
+    on_curve = {sin(a): 1 / sqrt(17), cos(a): 4 / sqrt(17), sin(b): 1, cos(b): 0}
+    assert cases[1][0].xreplace(on_curve) is true
 
 
 def test_geometry_that_is_not_polynomial_in_sin_and_cos_is_refused():

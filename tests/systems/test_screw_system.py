@@ -218,15 +218,25 @@ def test_a_factor_in_one_symbol_is_decided_at_its_roots():
     assert_exhaustive(W, special=[{t: sqrt(2)}, {t: -sqrt(2)}])
 
 
-def test_nonlinear_factor_is_listed_with_rank_none():
+def test_nonlinear_factor_is_decided_on_its_circle():
     t, u = symbols("t u", real=True)
-    # the second line through (t**2 + u**2 - 2, 0, 0): a circle of (t, u), solved for neither
+    # the second line through (t**2 + u**2 - 2, 0, 0): a circle of (t, u), solved for
+    # neither; the rank is proved modulo it, and the reciprocal basis holds on it
     W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]),
                     Wrench.force(Z, point=[t**2 + u**2 - 2, 0, 0]))
     conds = W.rank_conditions()
-    assert conds == [(Ne(t**2 + u**2 - 2, 0), 2), (Eq(t**2 + u**2 - 2, 0), None)]
-    assert all(w is None for (_, r), (_, w) in zip(conds, W.reciprocal_cases(), strict=True)
-               if r is None)
+    assert conds == [(Ne(t**2 + u**2 - 2, 0), 2), (Eq(t**2 + u**2 - 2, 0), 1)]
+    basis = W.reciprocal_cases()[1][1]
+    assert basis.rank == 5
+    for point in ({t: 1, u: 1}, {t: sqrt(2), u: 0}, {t: Rational(7, 5), u: Rational(1, 5)}):
+        here = W.xreplace(point)
+        assert here.matrix.rank() == 1
+        recip = basis.xreplace(point)
+        assert recip.matrix.rank() == 5
+        assert all(expand(reciprocal_product(s, w)) == 0 for s in here for w in recip)
+    # the check rejects the generic basis there: one reciprocal screw short
+    generic = W.reciprocal_cases()[0][1].xreplace({t: 1, u: 1})
+    assert generic.rank == 4
 
 
 def test_too_many_cases_raise():
