@@ -793,9 +793,9 @@ class Mechanism(ScrewsymBasic):
         condition in ``sin(q)``, ``cos(q)`` of one angle is decided at each of its
         points on the circle (``q = pi`` included), written
         ``Eq(sin(q), s) & Eq(cos(q), c)`` and, merged, ``Eq(sin(q), 0)`` for both
-        points.  A case whose rank SymPy
-        cannot decide (an equation linear in no symbol, or in two angles)
-        comes with ``None``.
+        points.  A case that no substitution
+        states (an equation linear in no symbol, or in two angles) comes
+        with ``None``.
         Cases whose conditions contradict each other are left out.  At most
         ``max_cases`` cases (a ``ValueError`` beyond), and at most ``budget``
         units of polynomial arithmetic for the whole split (as

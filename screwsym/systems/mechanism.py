@@ -559,9 +559,10 @@ class ParallelMechanism(ScrewsymBasic):
         in one symbol (or in ``sin(q)``, ``cos(q)`` of one angle), once the
         earlier ones are substituted, is decided at each of its real roots
         (points of the circle); a condition with no real solution is dropped.
-        A case whose rank SymPy cannot decide here (a condition in two or
-        more symbols linear in none of them, ``x**2 + y**2 = 2``) comes with
-        ``None``.  A case whose values unmake a joint (a zero axis, a
+        A case that no substitution states (a condition in two or more
+        symbols linear in none of them, ``x**2 + y**2 = 2``: its rank is
+        decided by :meth:`ScrewSystem.rank_conditions`, but the mechanism
+        cannot be rebuilt there) comes with ``None``.  A case whose values unmake a joint (a zero axis, a
         universal joint's axes made parallel) comes with a
         :class:`Degenerate` that says which and why.  Geometry may be
         polynomial in ``sin`` and ``cos`` of the symbols: the conditions are

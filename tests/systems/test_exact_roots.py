@@ -300,3 +300,20 @@ def test_a_condition_with_surd_coefficients_and_no_real_root_is_dropped():
     assert cases(t**2 + sqrt(3) * t + 1) == [(true, 2)]
     real = cases(t**2 + sqrt(3) * t - 1)
     assert len(real) == 2 and real[1][0] == Eq(t**2 + sqrt(3) * t - 1, 0)
+
+
+def test_a_product_of_positive_factors_has_no_real_zero():
+    # (x**2 + y**2 + 1)**2 z**2 + 1: quadratic in z whose leading coefficient and
+    # discriminant are proved positive factor by factor; no case at all
+    x, y, z = symbols("x y z", real=True)
+    W = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]),
+                    Wrench.force(Z, point=[(x**2 + y**2 + 1)**2 * z**2 + 1, 0, 0]))
+    assert W.rank_conditions() == [(True, 2)]
+    # and the proof rejects a polynomial with real zeros: (x**2 + y**2 - 1) z**2 - 1 vanishes
+    # at x = 2, y = 0, z = 1/sqrt(3), so its case is listed, and decided there
+    g = (x**2 + y**2 - 1) * z**2 - 1
+    W2 = ScrewSystem(Wrench.force(Z, point=[0, 0, 0]), Wrench.force(Z, point=[g, 0, 0]))
+    cases = W2.rank_conditions()
+    assert [r for _, r in cases] == [2, 1]
+    assert cases[1][0].xreplace({x: 2, y: 0, z: 1 / sqrt(3)}) is true
+    assert W2.xreplace({x: 2, y: 0, z: 1 / sqrt(3)}).matrix.rank() == 1
