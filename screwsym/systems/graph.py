@@ -94,7 +94,7 @@ from ..core.checks import check_count, check_flag
 from ..core.decide import is_zero
 from ..core.twist import Twist
 from .joints import Joint, Parallelogram, Spherical, Universal
-from .mechanism import ParallelMechanism, _check_cases, _merge_cases, motion_of
+from .mechanism import Degenerate, ParallelMechanism, _check_cases, _merge_cases, motion_of
 from .screw_system import (
     _TRIG_BACK,
     BUDGET,
@@ -762,7 +762,7 @@ class Mechanism(ScrewsymBasic):
 
     def mobility_cases(
         self, *, max_cases: int = MAX_CASES, budget: int = BUDGET, merge: bool = True
-    ) -> list[tuple[Any, MechanismMobility | None]]:
+    ) -> list[tuple[Any, MechanismMobility | Degenerate | None]]:
         r"""The **instantaneous** mobility in each case where the symbols change a rank: an exhaustive split.
 
         Explanation
@@ -795,7 +795,12 @@ class Mechanism(ScrewsymBasic):
         ``Eq(sin(q), s) & Eq(cos(q), c)`` and, merged, ``Eq(sin(q), 0)`` for both
         points.  A case that no substitution
         states (an equation linear in no symbol, or in two angles) comes
-        with ``None``.
+        with ``None``.  A case whose values unmake a joint (a zero
+        axis, a universal joint's axes made parallel) comes with a
+        :class:`~screwsym.systems.mechanism.Degenerate` naming the joint,
+        ``joints[k] (link_a, link_b): <its error>``; these are listed last,
+        as :meth:`ParallelMechanism.mobility_cases
+        <screwsym.systems.mechanism.ParallelMechanism.mobility_cases>` lists them.
         Cases whose conditions contradict each other are left out.  At most
         ``max_cases`` cases (a ``ValueError`` beyond), and at most ``budget``
         units of polynomial arithmetic for the whole split (as
@@ -1031,7 +1036,19 @@ def _polynomial_columns(block: Matrix, N: Matrix) -> tuple[Matrix, Matrix]:
     return block, N
 
 
-def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMobility | None]]:
+def _unmade(mech: Mechanism, subs: dict) -> Degenerate | None:
+    """The first joint that ``subs`` unmakes (its ``ValueError`` when built with those values),
+    named as the graph knows it, ``joints[k] (link_a, link_b): ...``; ``None`` when all stand."""
+    for k, (a, b, j) in enumerate(mech.joints):
+        try:
+            _substitute(j, subs)
+        except ValueError as error:
+            return Degenerate(f"joints[{k}] ({a!r}, {b!r}): {error}")
+    return None
+
+
+def _mobility_cases(mech: Mechanism,
+                    limit: int) -> list[tuple[Any, MechanismMobility | Degenerate | None]]:
     net = _network(mech)
     g = net.graph
     A = net.A
@@ -1043,6 +1060,8 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
     used = [sorted({g.offsets[e] + k for e, _ in loop for k in range(g.edges[e][2].freedom)})
             for loop in g.loops]
 
+    degenerate: list[tuple[Any, MechanismMobility | Degenerate | None]] = []  # listed last
+
     def split(conds: tuple, subs: dict, M: Matrix) -> list:
         found: list[tuple[tuple, dict | None, Any]] = []
         for node in _cases(ImmutableMatrix(M), limit):
@@ -1052,6 +1071,10 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
                 continue
             composed = _compose(subs, dict(node.subs))
             if _contradicts(new, composed):
+                continue
+            unmade = _unmade(mech, composed) if node.subs else None
+            if unmade is not None:  # the case's values unmake a joint: nothing to analyse there
+                degenerate.append((And(*new), unmade))
                 continue
             found.append((new, composed, node))
         return found
@@ -1083,7 +1106,7 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
                 grown.append((c, s, (_put(N, more) * _relations(node)).applyfunc(cancel)))
         leaves = grown
         _check_cases(len(leaves), limit)
-    out: list[tuple[Any, MechanismMobility | None]] = []
+    out: list[tuple[Any, MechanismMobility | Degenerate | None]] = []
     for conds, subs, N in leaves:
         condition = And(*conds) if conds else true
         if condition is false:
@@ -1095,7 +1118,7 @@ def _mobility_cases(mech: Mechanism, limit: int) -> list[tuple[Any, MechanismMob
         if m.mobility != N.cols:  # pragma: no cover - the split proves the rank on the case
             raise AssertionError("mobility_cases: the case's rank and its generic rank differ")
         out.append((condition, m))
-    return out
+    return out + degenerate
 
 
 def _idle(net: _Network) -> Matrix:

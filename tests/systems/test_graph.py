@@ -33,7 +33,7 @@ from sympy import Matrix, Rational, expand, symbols, true
 from screwsym import ScrewSystem, Twist
 from screwsym.systems.graph import Mechanism, lie_bracket
 from screwsym.systems.joints import P, Parallelogram, R, S, U
-from screwsym.systems.mechanism import Limb, ParallelMechanism
+from screwsym.systems.mechanism import Degenerate, Limb, ParallelMechanism
 
 
 def same_span(a: ScrewSystem, b: ScrewSystem) -> bool:
@@ -497,19 +497,33 @@ def assert_graph_cases_exhaustive(mech, pm, points, splits=None):
     Exact: the mechanism with the point substituted (no symbols left), and the
     ParallelMechanism's own case split (joint rates = platform freedoms + passive ones).
     ``splits``: the case lists to check (default: with and without merging).
+    if splits is None:
+        splits = (mech.mobility_cases(merge=False), mech.mobility_cases())
+    A point where a joint cannot be built (``xreplace`` raises ``ValueError``) must fall in
+    ``Degenerate`` cases only, in both splits; every other point in none.
     """
     if splits is None:
         splits = (mech.mobility_cases(merge=False), mech.mobility_cases())
     pm_cases = pm.mobility_cases()
     for point in points:
-        here = mech.xreplace(point).mobility()
+        try:
+            here = mech.xreplace(point).mobility()
+        except ValueError:  # the values unmake a joint
+            here = None
         for split in splits:
             holding = [m for c, m in split if c.xreplace(point) is true]
             assert holding, f"no case holds at {point}"
             for m in holding:
-                assert m is not None and (m.mobility, m.rank, m.orders) == (
+                if here is None:
+                    assert isinstance(m, Degenerate), (point, m)
+                    continue
+                assert m is not None and not isinstance(m, Degenerate), (point, m)
+                assert (m.mobility, m.rank, m.orders) == (
                     here.mobility, here.rank, here.orders), (point, m, here)
         [pmm] = {m.answer(): m for c, m in pm_cases if c.xreplace(point) is true}.values()
+        if here is None:
+            assert isinstance(pmm, Degenerate), (point, pmm)
+            continue
         assert here.mobility == pmm.mobility + pmm.passive
 
 
@@ -575,6 +589,70 @@ def test_assert_graph_cases_exhaustive_rejects_a_wrong_answer():
 
     with pytest.raises(AssertionError, match="no case holds"):
         assert_graph_cases_exhaustive(Missing(), pm, [{bx: 1, by: 0}])
+
+
+def test_mobility_cases_reports_a_joint_that_its_values_unmake():
+    # a four-bar whose coupler joint's axis is (0, 0, a): at a = 0 there is no joint, so no
+    # mechanism to analyse; reported as Degenerate (listed last, as ParallelMechanism does),
+    # the joint named as the graph knows it
+    from sympy import Eq, Ne
+
+    a = symbols("a", real=True)
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([1, 2, 0], [0, 0, a])),
+                           Limb(R([4, 0, 0], Z), R([3, 3, 0], Z)))
+    mech = Mechanism.from_parallel(pm)
+    cases = mech.mobility_cases()
+    assert [c for c, _ in cases] == [Ne(a, 0), Eq(a, 0)]
+    assert cases[0][1].mobility == 1
+    assert cases[1][1] == Degenerate("joints[1] ('limb1.1', 'platform'): direction: a joint "
+                                     "axis needs a non-zero direction, got [0, 0, 0]")
+    assert isinstance(pm.mobility_cases()[1][1], Degenerate)
+    assert_graph_cases_exhaustive(mech, pm, [{a: 0}, {a: 1}, {a: Rational(-2, 3)}])
+
+
+def test_mobility_cases_reports_a_universal_joint_made_parallel():
+    # the U's second axis (1, a, 0) parallel to its first (1, 0, 0) at a = 0 (the case of
+    # test_exact_roots, as a graph: one loop): the joint named by its number and links
+    from sympy import Eq, Ne
+
+    a = symbols("a", real=True)
+    leg1 = Limb(U([0, 0, 0], [1, 0, 0], [1, a, 0]), P([0, 0, 1]), S([0, 0, 2]))
+    leg2 = Limb(R([1, 0, 0], [1, 0, 0]), P([0, 1, 1]), S([1, 1, 1]))
+    pm = ParallelMechanism(leg1, leg2)
+    mech = Mechanism.from_parallel(pm)
+    cases = mech.mobility_cases()
+    assert [c for c, _ in cases] == [Ne(a, 0), Eq(a, 0)]
+    pmm = pm.mobility_cases()[0][1]
+    assert cases[0][1].mobility == pmm.mobility + pmm.passive == 5
+    assert isinstance(cases[1][1], Degenerate)
+    assert cases[1][1].reason.startswith("joints[0] ('base', 'limb1.1'): ")
+    assert "a universal joint needs two non-parallel axes" in cases[1][1].reason
+    assert_graph_cases_exhaustive(mech, pm, [{a: 0}, {a: 2}, {a: Rational(-1, 3)}])
+
+
+def test_assert_graph_cases_exhaustive_rejects_a_wrong_degenerate_case():
+    a = symbols("a", real=True)
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([1, 2, 0], [0, 0, a])),
+                           Limb(R([4, 0, 0], Z), R([3, 3, 0], Z)))
+    mech = Mechanism.from_parallel(pm)
+    right = mech.mobility_cases()
+
+    class Wrong:
+        def __init__(self, cases):
+            self.cases = cases
+
+        def mobility_cases(self, merge=True):
+            return self.cases
+
+        def xreplace(self, point):
+            return mech.xreplace(point)
+
+    hidden = [right[0], (right[1][0], right[0][1])]  # the degenerate case given a mobility
+    with pytest.raises(AssertionError):
+        assert_graph_cases_exhaustive(Wrong(hidden), pm, [{a: 0}])
+    invented = [(true, Degenerate("joints[1]: made up"))]  # a degenerate case everywhere
+    with pytest.raises(AssertionError):
+        assert_graph_cases_exhaustive(Wrong(invented), pm, [{a: 1}])
 
 
 def test_mobility_cases_checks_its_arguments():
