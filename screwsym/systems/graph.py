@@ -56,7 +56,7 @@ from __future__ import annotations
 from collections import deque
 from dataclasses import dataclass
 from functools import lru_cache, reduce
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple, cast
 
 from sympy import (
     QQ,
@@ -838,7 +838,8 @@ class Mechanism(ScrewsymBasic):
         merge = check_flag(merge, "merge")
         with case_budget(budget, "mobility_cases"):
             out = _mobility_cases(self, max_cases)
-        return _merge_cases(out) if merge else out
+        merged = _merge_cases(cast("list[tuple[Any, Any]]", out)) if merge else out
+        return cast("list[tuple[Any, MechanismMobility | Degenerate | None]]", merged)
 
     def twists(self, link: Any, relative_to: Any = None) -> ScrewSystem:
         """The instantaneous motions of ``link`` relative to ``relative_to`` (the base by default).
