@@ -47,6 +47,7 @@ from sympy import (
     ZZ,
     Add,
     And,
+    CRootOf,
     Dummy,
     Eq,
     ImmutableMatrix,
@@ -810,7 +811,8 @@ def _rational_parts(entries: list, what: str) -> tuple[list, list, list]:
         for g in found["gens"] if isinstance(found, dict) else found:
             if isinstance(g, Symbol):
                 continue
-            if g.is_number and g.is_algebraic:
+            # a CRootOf of a rational polynomial is algebraic (SymPy 1.13 leaves it None)
+            if g.is_number and (g.is_algebraic or isinstance(g, CRootOf)):
                 numbers.append(g)
                 continue
             raise ValueError(
