@@ -2,7 +2,13 @@
 
 import sys
 
-from .cli import main
+try:
+    from .cli import main
+except KeyboardInterrupt:  # pragma: no cover - timing: Ctrl-C during the command's start
+    from ._launch import exit_if_command_line
+
+    exit_if_command_line()
+    raise
 
 if __name__ == "__main__":
     sys.exit(main())

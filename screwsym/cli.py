@@ -21,12 +21,19 @@ list`` prints one line per entry; ``screwsym --version`` the version.
 
 from __future__ import annotations
 
-import argparse
-import json
 import os
 import sys
-import time
-from collections.abc import Sequence
+
+try:  # Ctrl-C while the command is still importing ends it quietly (see _launch)
+    import argparse
+    import json
+    import time
+    from collections.abc import Sequence
+except KeyboardInterrupt:  # pragma: no cover - timing: exercised by test_cli's Ctrl-C test
+    from ._launch import exit_if_command_line
+
+    exit_if_command_line()
+    raise
 
 __all__ = ["main"]
 

@@ -308,6 +308,11 @@ def test_cache_dir_is_private(tmp_path, monkeypatch):
 
 @pytest.mark.skipif(not HAS_CC, reason="no C compiler")
 def test_c_build_leaves_no_temporary_directory(tmp_path, monkeypatch):
+    # a private temporary directory: another test's build (xdist) cannot show up here
+    private = tmp_path / "tmp"
+    private.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(private))
+
     def leftovers():
         return {p for p in os.listdir(tempfile.gettempdir()) if p.startswith("screwsym-c-")}
 
