@@ -16,9 +16,10 @@ import importlib
 from typing import TYPE_CHECKING as _TYPE_CHECKING
 from typing import Any as _Any
 
+from ._launch import interrupted_quietly as _interrupted_quietly
 from ._version import __version__ as __version__
 
-try:  # the import takes most of the command line's first second: see screwsym._launch
+with _interrupted_quietly():  # the import takes most of the command line's first second
     from .core import (
         CommonNormal,
         LineVector,
@@ -46,11 +47,6 @@ try:  # the import takes most of the command line's first second: see screwsym._
         vector,
     )
     from .core.printing import init_printing as init_printing
-except KeyboardInterrupt:
-    from ._launch import exit_if_command_line
-
-    exit_if_command_line()
-    raise
 
 if _TYPE_CHECKING:  # loaded on first use (_LAZY_NAMES below); a type checker sees them here
     from .motion import Chain, Transform, convert, convert_from, exp6, log6

@@ -2,13 +2,10 @@
 
 import sys
 
-try:
-    from .cli import main
-except KeyboardInterrupt:  # pragma: no cover - timing: Ctrl-C during the command's start
-    from ._launch import exit_if_command_line
+from ._launch import interrupted_quietly
 
-    exit_if_command_line()
-    raise
+with interrupted_quietly():  # Ctrl-C during the command's start ends it quietly
+    from .cli import main
 
 if __name__ == "__main__":
     sys.exit(main())

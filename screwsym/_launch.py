@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import os
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 
 def launched_as_command() -> bool:
@@ -28,3 +30,14 @@ def exit_if_command_line() -> None:
     if launched_as_command():
         sys.stderr.write("screwsym: interrupted\n")
         raise SystemExit(130)
+
+
+@contextmanager
+def interrupted_quietly() -> Iterator[None]:
+    """Around the imports of the command's start: a ``KeyboardInterrupt`` inside ends the
+    command quietly (:func:`exit_if_command_line`) and goes on as usual for anything else."""
+    try:
+        yield
+    except KeyboardInterrupt:
+        exit_if_command_line()
+        raise

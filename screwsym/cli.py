@@ -24,16 +24,13 @@ from __future__ import annotations
 import os
 import sys
 
-try:  # Ctrl-C while the command is still importing ends it quietly (see _launch)
+from ._launch import interrupted_quietly
+
+with interrupted_quietly():  # Ctrl-C while the command is still importing ends it quietly
     import argparse
     import json
     import time
     from collections.abc import Sequence
-except KeyboardInterrupt:  # pragma: no cover - timing: exercised by test_cli's Ctrl-C test
-    from ._launch import exit_if_command_line
-
-    exit_if_command_line()
-    raise
 
 __all__ = ["main"]
 

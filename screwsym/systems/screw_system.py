@@ -1459,9 +1459,9 @@ def _positive_product(p, R, depth: int) -> bool:
     if len(fl) == 1 and fl[0][1] == 1:
         return False  # irreducible: nothing to gain
     sign = 1
-    rest = p
+    lead = R.domain.to_sympy(p.LC)  # LC(p) = c * prod LC(f)**k: c's sign, with the signs below
     for f, k in fl:
-        rest = rest.exquo(f**k)
+        lead /= R.domain.to_sympy(f.LC) ** k
         if k % 2 == 0:
             if not _no_real_zero(f, R, depth + 1):
                 return False
@@ -1471,9 +1471,7 @@ def _positive_product(p, R, depth: int) -> bool:
             sign = -sign
         else:
             return False
-    if not rest.is_ground:  # pragma: no cover - the factors make up p
-        return False
-    return bool(R.domain.to_sympy(rest.LC) * sign > 0)
+    return bool(lead * sign > 0)
 
 
 def _square_split(f, R, depth: int = 0):
@@ -1953,6 +1951,15 @@ def _modular(c, K, p: int, theta: int | None) -> int:
     return v
 
 
+def _term_mod(m: tuple, c, K, p: int, theta: int | None, point: list, skip: tuple = ()) -> int:
+    """The term ``c x**m`` mod ``p`` at ``point``, the symbols of ``skip`` left out."""
+    t = _modular(c, K, p, theta)
+    for i, k in enumerate(m):
+        if k and i not in skip:
+            t = t * pow(point[i], k, p) % p
+    return t
+
+
 def _roots_mod(coeffs: list, p: int) -> list:
     """The roots mod ``p`` of the polynomial with integer coefficients ``coeffs`` (highest first)."""
     from sympy.polys.galoistools import gf_factor_sqf, gf_sqf_part, gf_strip
@@ -1971,14 +1978,8 @@ def _at_point(polys_rows: list, R, p: int, point: list, theta: int | None) -> li
     for row in polys_rows:
         vals = []
         for e in row:
-            total = 0
-            for m, c in (e.items() if e else ()):
-                t = _modular(c, K, p, theta)
-                for i, k in enumerate(m):
-                    if k:
-                        t = t * pow(point[i], k, p) % p
-                total += t
-            vals.append(total % p)
+            vals.append(sum(_term_mod(m, c, K, p, theta, point) for m, c in e.items()) % p
+                        if e else 0)
         out.append(vals)
     return out
 
@@ -2017,10 +2018,7 @@ def _point_on(f, R, p: int, rnd: random.Random) -> tuple[list, int | None]:
         x = max(plain, key=lambda i: f.degree(i))
         by_degree: dict = {}
         for m, c in f.items():
-            t = _modular(c, K, p, theta)
-            for i, k in enumerate(m):
-                if k and i != x:
-                    t = t * pow(point[i], k, p) % p
+            t = _term_mod(m, c, K, p, theta, point, skip=(x,))
             by_degree[m[x]] = (by_degree.get(m[x], 0) + t) % p
         top = max(by_degree)
         if not by_degree[top]:
@@ -2039,10 +2037,7 @@ def _point_on(f, R, p: int, rnd: random.Random) -> tuple[list, int | None]:
               for m in f.monoms())
     num: list = []
     for m, c in f.items():
-        t = _modular(c, K, p, theta)
-        for i, k in enumerate(m):
-            if k and i not in (ci, si):
-                t = t * pow(point[i], k, p) % p
+        t = _term_mod(m, c, K, p, theta, point, skip=(ci, si))
         a = m[si] if si is not None else 0
         b = m[ci] if ci is not None else 0
         term = gf_mul(gf_mul(gf_pow([2 % p, 0], a, p, ZZ), gf_pow([p - 1, 0, 1], b, p, ZZ), p, ZZ),
@@ -2073,13 +2068,13 @@ def _rank_mod(rows: list, p: int) -> tuple[tuple, tuple]:
     return tuple(pivots), tuple(cols)
 
 
-def _rank_on(M: ImmutableMatrix, f, R, seeds: int = 4) -> tuple | None:
+def _rank_on(rg: _Ring, f, seeds: int = 4) -> tuple | None:
     """``(rank, rows, cols, minor, basis)`` proved on ``f = 0`` where the minor is non-zero.
 
-    ``f`` is an element of the ring of ``M``; ``basis`` the Groebner basis of ``f``
-    and the circles (see the section's comment).  None where no point proved a rank.
+    ``f`` is an element of the ring of the system ``rg``; ``basis`` the Groebner basis
+    of ``f`` and the circles (see the section's comment).  None where no point proved
+    a rank.
     """
-    rg = _to_ring(M)
     RM = rg.ring
     B = [_swap(c) for c in rg.cols]
     G = _ideal([f], RM)
@@ -2101,10 +2096,10 @@ def _rank_on(M: ImmutableMatrix, f, R, seeds: int = 4) -> tuple | None:
         if not rows or (rows, cols) in tried:
             continue
         tried.add((rows, cols))
-        vectors = _cramer(B, rows, cols, RM)
         minor = _minor(B, rows, cols, RM)
         if not minor.rem(G):
             continue  # pragma: no cover - zero modulo f although not at the point
+        vectors = _cramer(B, rows, cols, RM, m=minor)
         _charge(sum(len(e.terms()) for v in vectors for e in v) * len(B))
         if all(not sum((b * x for b, x in zip(B[i], v, strict=True)), RM.zero).rem(G)
                for v in vectors for i in range(len(B)) if i not in rows):
@@ -2120,7 +2115,7 @@ def _on_surface(M, conds, subs, nonzero, fe, out: list) -> bool:
         f = _element(fe, RM)
     except Exception:  # pragma: no cover - fe has symbols the system has not
         return False
-    found = _rank_on(M, f, RM)
+    found = _rank_on(rg, f)
     if found is None:
         return False
     rank, rows, cols, minor, G = found
