@@ -12,7 +12,7 @@ from collections import deque
 from functools import cache
 
 import numpy as np
-from sympy import Matrix
+from sympy import Matrix, expand
 from sympy import Rational as Q
 
 from screwsym.systems.graph import Mechanism
@@ -189,6 +189,36 @@ class Closure:
             if np.linalg.norm(step) < 1e-13:
                 break
         return q, float(np.linalg.norm(self.residual(q)))
+
+
+# ------------------------------------------------------------ checking a case
+
+
+def assert_case_at(mech, m, point):
+    """A case's figures ``m`` (of ``mech.mobility_cases()``) checked at an exact ``point`` of it.
+
+    ``point`` is a substitution (``{t: 1, u: 1}``, ``{sin(a): 0, cos(a): 1}``) that leaves no
+    symbol: there the mechanism is rebuilt and analysed on the rational (or algebraic) path of
+    ``Mechanism.mobility``.  Its numbers are the case's, and the case's bases hold there: its
+    joint rates close every loop and are ``mobility`` independent ones, its idle rates too, and
+    each loop's common constraints span that loop's there.
+    """
+    def exact_zero(M):
+        return all(expand(e) == 0 for e in M)
+
+    here = mech.xreplace(point)
+    A = here.network_matrix()
+    assert not A.free_symbols, point
+    generic = here.mobility()
+    assert m.answer() == generic.answer(), (point, m.answer(), generic.answer())
+    rates = Matrix(m.rates.xreplace(point)).applyfunc(expand)
+    assert exact_zero(A * rates) and rates.rank(simplify=True) == m.mobility, (point, rates)
+    idle = Matrix(m.idle_rates.xreplace(point)).applyfunc(expand)
+    assert exact_zero(A * idle) and idle.rank(simplify=True) == m.idle, (point, idle)
+    for case_common, common in zip(m.common, generic.common, strict=True):
+        case_common = case_common.xreplace(point)
+        assert case_common.rank == common.rank == case_common.union(common).rank, (
+            point, case_common, common)
 
 
 # ------------------------------------------------------------------ linkages

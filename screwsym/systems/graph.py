@@ -93,6 +93,7 @@ from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag
 from ..core.decide import is_zero
 from ..core.twist import Twist
+from ..core.wrench import Wrench
 from .joints import Joint, Parallelogram, Spherical, Universal
 from .mechanism import Degenerate, ParallelMechanism, _check_cases, _merge_cases, motion_of
 from .screw_system import (
@@ -101,16 +102,19 @@ from .screw_system import (
     MAX_CASES,
     ScrewSystem,
     _apply,
+    _basis_system,
     _cases,
     _circle_normal,
     _coefficient,
     _det,
     _field,
+    _null_on_surface,
     _on_circle,
     _poly_expr,
     _primitive,
     _rational_parts,
     _substitute,
+    _surface_cases,
     _swap,
     _to_ring,
     _trig_entries,
@@ -437,6 +441,13 @@ class _Network:
 
 @lru_cache(maxsize=64)
 def _network(mech: Mechanism) -> _Network:
+    net = _bare_network(mech)
+    null = _nullspace(net.A) if net.graph.loops else Matrix.eye(net.A.cols)
+    return _Network(net.graph, net.twists, net.accel, net.A, net.A.cols - null.cols, null)
+
+
+def _bare_network(mech: Mechanism) -> _Network:
+    """The network without its (generic) null space: ``rank`` and ``null`` left empty."""
     g = _spanning(mech)
     twists = tuple(tuple(list(t.matrix) for t in j._twists()) for _, _, j in g.edges)
     accel = tuple(tuple(None if y is None else list(y.matrix) for y in j._accelerations())
@@ -448,9 +459,7 @@ def _network(mech: Mechanism) -> _Network:
             for k, t in enumerate(twists[e]):
                 for r in range(6):
                     A[6 * i + r, g.offsets[e] + k] += s * t[r]
-    null = _nullspace(A) if g.loops else Matrix.eye(F)
-    rank = F - null.cols
-    return _Network(g, twists, accel, A, rank, null)
+    return _Network(g, twists, accel, A, 0, zeros(F, 0))
 
 
 def _path_matrix(net: _Network, link: int) -> Matrix:
@@ -743,6 +752,7 @@ class Mechanism(ScrewsymBasic):
             orders.append(T.rank)
             commons.append(T.reciprocal())
         idle = _idle(net)
+        assert idle is not None  # the generic null space is always found
         n, J = len(g.links), len(g.edges)
         return MechanismMobility(
             mobility=F - net.rank,
@@ -793,9 +803,15 @@ class Mechanism(ScrewsymBasic):
         condition in ``sin(q)``, ``cos(q)`` of one angle is decided at each of its
         points on the circle (``q = pi`` included), written
         ``Eq(sin(q), s) & Eq(cos(q), c)`` and, merged, ``Eq(sin(q), 0)`` for both
-        points.  A case that no substitution
-        states (an equation linear in no symbol, or in two angles) comes
-        with ``None``.  A case whose values unmake a joint (a zero
+        points.  A case that no substitution states (an equation ``f = 0``
+        linear in no symbol, ``x**2 + y**2 = 2``, ``cos(a) + cos(b) = 1``) is
+        split on: its rank is proved modulo ``f`` (:meth:`ScrewSystem.rank_conditions
+        <screwsym.systems.screw_system.ScrewSystem.rank_conditions>`), and so
+        is every later split of the case, so its figures hold at every point of
+        it as elsewhere (its idle rates those of the surface's generic point).
+        A case comes with ``None`` only where the rank conditions give ``None``
+        (two such surfaces in three or more symbols meeting).  A case whose
+        values unmake a joint (a zero
         axis, a universal joint's axes made parallel) comes with a
         :class:`~screwsym.systems.mechanism.Degenerate` naming the joint,
         ``joints[k] (link_a, link_b): <its error>``; these are listed last,
@@ -833,6 +849,22 @@ class Mechanism(ScrewsymBasic):
         ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
         >>> [(case, m.mobility, m.orders) for case, m in fourbar.mobility_cases()]
         [(Ne(b, 0), 1, (3,)), (Eq(b, 0), 2, (2,))]
+
+        The coupler joint at ``(1, s**2 + t**2 - 2)``: the four-bar folds on a
+        circle, a case no substitution states; it is decided on the circle
+        itself, its joint rates proved there.
+
+        >>> s, t = symbols("s t", real=True)
+        >>> on_circle = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                        ("crank", "coupler", R([1, s**2 + t**2 - 2, 0], z)),
+        ...                        ("coupler", "rocker", R([3, 0, 0], z)),
+        ...                        ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> [(case, m.mobility) for case, m in on_circle.mobility_cases()]
+        [(Ne(s**2 + t**2 - 2, 0), 1), (Eq(s**2 + t**2 - 2, 0), 2)]
+        >>> on_circle.mobility_cases()[1][1].rates.T
+        Matrix([
+        [2, -3, 1, 0],
+        [3, -4, 0, 1]])
         """
         max_cases = check_count(max_cases, "max_cases")
         merge = check_flag(merge, "merge")
@@ -1056,75 +1088,154 @@ def _mobility_cases(mech: Mechanism,
     F = A.cols
     if not A.free_symbols:
         return [(true, mech.mobility())]
-    # leaves: (conditions, substitution or None when undecided, the rates closing the loops so far)
-    leaves: list[tuple[tuple, dict | None, Matrix | None]] = [((), {}, None)]
+    # a leaf: its conditions; its substitution (None: undecided); its relation, the equation
+    # of a case that no substitution states, () if none (the later splits are made on that
+    # surface, modulo it: _surface_cases); the nodes that proved each loop's order; and the
+    # rates closing the loops so far
+    leaves: list[_Leaf] = [_Leaf((), {}, (), (), None)]
     used = [sorted({g.offsets[e] + k for e, _ in loop for k in range(g.edges[e][2].freedom)})
             for loop in g.loops]
 
     degenerate: list[tuple[Any, MechanismMobility | Degenerate | None]] = []  # listed last
 
-    def split(conds: tuple, subs: dict, M: Matrix) -> list:
-        found: list[tuple[tuple, dict | None, Any]] = []
-        for node in _cases(ImmutableMatrix(M), limit):
-            new = conds if node.condition is true else conds + (node.condition,)
-            if node.rank is None or node.relation:  # undecided, or no substitution states it
-                found.append((new, None, node))
+    def split(leaf: _Leaf, M: Matrix) -> list[tuple[_Leaf, Any]]:
+        found: list[tuple[_Leaf, Any]] = []
+        M = ImmutableMatrix(M)
+        nodes = _surface_cases(M, leaf.relation[0], limit) if leaf.relation else _cases(M, limit)
+        for node in nodes:
+            new = leaf.conds if node.condition is true else leaf.conds + (node.condition,)
+            if node.rank is None:  # undecided
+                found.append((_Leaf(new, None, (), (), None), node))
                 continue
-            composed = _compose(subs, dict(node.subs))
+            subs = cast("dict", leaf.subs)  # split is called on decided leaves only
+            composed = _compose(subs, dict(node.subs)) if node.subs else subs
+            # a substitution made on the surface states it (fe imposed after the minor's factor)
+            relation = node.relation if node.relation or node.subs else leaf.relation
             if _contradicts(new, composed):
                 continue
             unmade = _unmade(mech, composed) if node.subs else None
             if unmade is not None:  # the case's values unmake a joint: nothing to analyse there
                 degenerate.append((And(*new), unmade))
                 continue
-            found.append((new, composed, node))
+            found.append((_Leaf(new, composed, relation, leaf.orders, leaf.rates), node))
         return found
 
     for i in range(len(g.loops)):  # each loop's twists: its order d_i exact on each case
-        grown: list = []
-        for conds, subs, _ in leaves:
-            if subs is None:
-                grown.append((conds, None, None))
+        grown: list[_Leaf] = []
+        for leaf in leaves:
+            if leaf.subs is None:
+                grown.append(leaf)
                 continue
-            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), used[i]), subs)
-            grown.extend((c, s, None) for c, s, _ in split(conds, subs, block))
+            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), used[i]), leaf.subs)
+            # each loop's order with the node that proved it, at every point of its case
+            grown.extend(new._replace(orders=new.orders + (node,)) if new.subs is not None
+                         else new for new, node in split(leaf, block))
         leaves = grown
         _check_cases(len(leaves), limit)
-    leaves = [(c, s, None if s is None else Matrix.eye(F)) for c, s, _ in leaves]
+    leaves = [leaf._replace(rates=None if leaf.subs is None else Matrix.eye(F)) for leaf in leaves]
     for i in range(len(g.loops)):  # the network matrix, loop by loop
         grown = []
-        for conds, subs, N in leaves:
-            if subs is None or N is None:
-                grown.append((conds, None, None))
+        for leaf in leaves:
+            if leaf.subs is None or leaf.rates is None:
+                grown.append(leaf)
                 continue
-            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), list(range(F))), subs) * N
-            block, N = _polynomial_columns(block, N)
-            for c, s, node in split(conds, subs, block):
-                if s is None:
-                    grown.append((c, None, None))
+            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), list(range(F))), leaf.subs)
+            block, N = _polynomial_columns(block * leaf.rates, leaf.rates)
+            for new, node in split(leaf._replace(rates=N), block):
+                if new.subs is None:
+                    grown.append(new)
                     continue
                 more = dict(node.subs)
-                grown.append((c, s, (_put(N, more) * _relations(node)).applyfunc(cancel)))
+                rates = (_put(N, more) * _relations(node)).applyfunc(cancel)
+                grown.append(new._replace(rates=rates))
         leaves = grown
         _check_cases(len(leaves), limit)
     out: list[tuple[Any, MechanismMobility | Degenerate | None]] = []
-    for conds, subs, N in leaves:
-        condition = And(*conds) if conds else true
+    for leaf in leaves:
+        condition = And(*leaf.conds) if leaf.conds else true
         if condition is false:
             continue
-        if subs is None or N is None:
+        if leaf.subs is None or leaf.rates is None:
             out.append((condition, None))
             continue
-        m = (_substitute(mech, subs) if subs else mech).mobility()
-        if m.mobility != N.cols:  # pragma: no cover - the split proves the rank on the case
+        here = _substitute(mech, leaf.subs) if leaf.subs else mech
+        if leaf.relation:  # on a surface: the figures of the split, proved there
+            out.append((condition, _on_surface_mobility(here, leaf)))
+            continue
+        m = here.mobility()
+        if m.mobility != leaf.rates.cols:  # pragma: no cover - the split proves the rank on the case
             raise AssertionError("mobility_cases: the case's rank and its generic rank differ")
         out.append((condition, m))
     return out + degenerate
 
 
-def _idle(net: _Network) -> Matrix:
+class _Leaf(NamedTuple):
+    """A case of the graph's split (see ``_mobility_cases``)."""
+
+    conds: tuple
+    subs: dict | None
+    relation: tuple
+    orders: tuple  # the nodes (of screw_system's split) that proved each loop's order
+    rates: Matrix | None
+
+
+def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | None:
+    """The figures of a case on a surface ``fe = 0`` (``leaf.relation``) from its split.
+
+    The mobility, rank, orders and common constraints are proved at every point of the
+    case (the split proved each rank there, and each basis is Cramer's rule on the
+    minor that proved it); the idle rates, as elsewhere, are those of the generic point
+    of the case, here of the surface (the null space proved modulo ``fe``).  None where
+    no point of the surface proved that null space.
+    """
+    fe = leaf.relation[0]
+    net = _bare_network(mech)
     g = net.graph
-    N = net.null
+    N = cast(Matrix, leaf.rates)
+    N = Matrix.hstack(*(Matrix(_clean(list(N.col(k)))) for k in range(N.cols))) if N.cols \
+        else N
+
+    def nullspace(C: Matrix) -> Matrix | None:
+        found = _null_on_surface(ImmutableMatrix(C), fe)
+        if found is None:
+            return None
+        _, _, vectors, R = found
+        cols = [_clean([_poly_expr(e, R) for e in v]) for v in vectors]
+        return Matrix.hstack(*(Matrix(c) for c in cols)) if cols else zeros(C.cols, 0)
+
+    idle = _idle(net, N, nullspace)
+    if idle is None:  # pragma: no cover - no point of the surface proved the idle rates
+        return None
+    orders = tuple(node.rank for node in leaf.orders)
+    # each basis by Cramer's rule on the minor that proved its loop's order (non-zero on
+    # the case), written with the case's substitution (a later case's may set more symbols)
+    common = tuple(_substitute(_basis_system(node, Wrench), subs) if (subs := leaf.subs)
+                   else _basis_system(node, Wrench) for node in leaf.orders)
+    F = net.A.cols
+    rank = F - N.cols
+    n, J = len(g.links), len(g.edges)
+    return MechanismMobility(
+        mobility=N.cols,
+        freedoms=F,
+        loops=len(g.loops),
+        rank=rank,
+        orders=orders,
+        common=common,
+        redundant=sum(orders) - rank,
+        idle=idle.cols,
+        idle_rates=ImmutableMatrix(idle),
+        rates=ImmutableMatrix(N),
+        classical=6 * (n - J - 1) + F,
+        links=n,
+        joints=J,
+    )
+
+
+def _idle(net: _Network, N: Matrix | None = None, nullspace: Any = None) -> Matrix | None:
+    """A basis of the idle rates among the rates ``N`` (the network's null space by default),
+    the null space taken by ``nullspace`` (generic: ``_nullspace``); None where it says None."""
+    g = net.graph
+    N = net.null if N is None else N
     if N.cols == 0:
         return zeros(N.rows, 0)
     rows: list[Matrix] = []
@@ -1142,7 +1253,9 @@ def _idle(net: _Network) -> Matrix:
     if not rows:
         return Matrix(N)
     C = Matrix.vstack(*rows)
-    K = _nullspace(C)
+    K = (nullspace or _nullspace)(C)
+    if K is None:
+        return None
     if K.cols == 0:
         return zeros(N.rows, 0)
     cols = [_clean(list((N * K).col(k))) for k in range(K.cols)]

@@ -562,7 +562,10 @@ class ParallelMechanism(ScrewsymBasic):
         A case that no substitution states (a condition in two or more
         symbols linear in none of them, ``x**2 + y**2 = 2``: its rank is
         decided by :meth:`ScrewSystem.rank_conditions`, but the mechanism
-        cannot be rebuilt there) comes with ``None``.  A case whose values unmake a joint (a zero axis, a
+        cannot be rebuilt there) comes with ``None``; the graph's split,
+        ``Mechanism.from_parallel(pm).mobility_cases()``
+        (:meth:`screwsym.systems.graph.Mechanism.mobility_cases`), goes on modulo
+        such a condition and decides it.  A case whose values unmake a joint (a zero axis, a
         universal joint's axes made parallel) comes with a
         :class:`Degenerate` that says which and why.  Geometry may be
         polynomial in ``sin`` and ``cos`` of the symbols: the conditions are

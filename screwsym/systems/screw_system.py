@@ -433,10 +433,13 @@ class ScrewSystem(ScrewsymBasic):
         minor ``g`` is non-zero, the minor found at a point of ``f = 0`` over
         a finite field and the rank proved by the normal forms modulo a
         Groebner basis of ``f`` (and the circles).  Where ``g`` vanishes too,
-        each factor of ``g`` is imposed and then ``f``.  A case is listed with
+        each factor of ``g`` is imposed and then ``f``; two such equations of a
+        plane (two symbols, or angles, between them) meet in finitely many
+        points, found from a lex Groebner basis of both (SymPy's ``groebner``)
+        and decided one by one.  A case is listed with
         rank ``None`` (at most the rank of the case above it; not analysed
-        further) only where two such equations, linear in no symbol, meet, or
-        where no point proves a rank: the cases SymPy's tools here cannot
+        further) only where two such equations in three or more symbols meet,
+        or where no point proves a rank: the cases SymPy's tools here cannot
         decide.  A system with many free symbols can have
         very many cases: past ``max_cases`` a ``ValueError`` says so.  The
         work is bounded too: ``budget`` units of polynomial arithmetic
@@ -692,8 +695,9 @@ def _vanishes(e: Any) -> bool:
     >>> _vanishes((1 + cos(q)) * (1 - cos(q)) - sin(q)**2), _vanishes(sin(q) - 1)
     (True, False)
     """
-    if not e.has(sin, cos):
+    if not e.has(sin, cos, CRootOf):
         return cancel(e) == 0
+    # in the ring: over the algebraic field of the CRootOf (cancel would take it for a symbol)
     return not _to_ring(ImmutableMatrix([e])).cols[0][0]
 
 
@@ -1503,6 +1507,44 @@ def _no_real_zero(f, R, depth: int = 0) -> bool:
     return _positive(f, R, depth) or _positive(-f, R, depth)
 
 
+def _dimension(polys: list, R) -> int:
+    """How many user symbols the polynomials involve: plain ones and angles (``sin(q)``, ``cos(q)``)."""
+    seen = set()
+    for p in polys:
+        for i in _involved(p, R):
+            x = R.symbols[i]
+            seen.add(_TRIG_BACK[x].args[0] if x in _TRIG_BACK else x)
+    return len(seen)
+
+
+def _meeting(f, h_expr: Any, subs: tuple, R) -> Any:
+    """Where ``f = 0`` (linear in no symbol) meets ``h = 0``: an equation in fewer symbols.
+
+    Two distinct irreducible curves of a plane (two symbols, or angles, between
+    them) meet in finitely many points; the last polynomial of a lex Groebner
+    basis of ``f``, ``h`` and the circles (SymPy's ``groebner``) is in one ring
+    symbol and vanishes at each of them, so imposing it first, then ``f`` and
+    ``h`` there, decides them.  Returns that polynomial (an element of ``R``),
+    ``R.zero`` where the two have no common point even over the complex numbers
+    (the basis is 1), or None: more than two symbols (a curve or more in common,
+    whose basis may take minutes: see the section on surfaces), or no such
+    polynomial.
+    """
+    if subs:
+        h_expr = cancel(_substitute(h_expr, subs))
+    try:
+        h = _reduce(_element(h_expr, R), R)
+    except Exception:  # h has symbols (or a form) the ring of f has not
+        return None
+    if not h or _dimension([f, h], R) > 2:
+        return None
+    G = _ideal([f, h], R)
+    if G == [R.ring.one]:
+        return R.zero
+    fewer = [g for g in G if _reduce(g, R) and len(_involved(g, R)) < len(_involved(f, R))]
+    return min(fewer, key=lambda g: (len(_involved(g, R)), len(g.terms()))) if fewer else None
+
+
 def _solvable(i: int, R) -> bool:
     """Whether ring symbol ``i`` may be solved for: a user symbol that is not an angle of sin/cos."""
     x = R.symbols[i]
@@ -1851,8 +1893,16 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
             return
         if points is None and not rest and _on_surface(M, conds, subs, nonzero, fe, out):
             return  # decided on the surface itself, modulo fe
-        if points is None:  # not decided here: listed with rank None
-            out.append(_Node(_condition(conds + (Eq(fe, 0),)), None, subs, M))
+        if points is None and rest:  # two curves of a plane meet: at the points they share
+            meet = _meeting(f, rest[0], subs, R)
+            if meet is not None:
+                if meet:  # (no common point at all: no case)
+                    _impose(M, conds, subs, nonzero, [_poly_expr(meet, R), fe] + rest, out)
+                return
+        if points is None:  # not decided here: listed with rank None, every equation stated
+            later = tuple(Eq(e, 0) for e in (cancel(_substitute(r, subs)) if subs else r
+                                              for r in rest) if e != 0)
+            out.append(_Node(_condition(conds + (Eq(fe, 0),) + later), None, subs, M))
             return
         for pairs, condition in points:
             new_nonzero = _substitute_nonzero(nonzero, pairs)
@@ -1864,6 +1914,8 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
     eq = Eq(fe, 0)
     x, a, b = lin
     value = -_poly_expr(b, R) / _poly_expr(a, R)
+    if a.is_ground and value.has(CRootOf):  # at a point already: the symbol's value reads best
+        eq = Eq(x, value)
     a_factors = [_poly_expr(g, R) for g in _factors(a, R)]
     a_factors = [g for g in a_factors if not _known_nonzero(g, nonzero)]
     pairs = ((x, value),)
@@ -1896,10 +1948,12 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
 # minor non-zero there is non-zero modulo f, so r is at most the rank on the case, and
 # the proof above decides; a point that proves nothing is followed by another (seeds).
 # What is left, f = 0 with a factor h of g zero, is imposed as two equations, h first
-# (solved for a symbol or at its points where it can be, and f then in fewer symbols);
-# where h is neither, the intersection is listed with rank None.  (A Groebner basis of
-# f and h, which would tell an empty intersection, is not computed: on the 3-RPS it
-# did not finish in 90 s.)
+# (solved for a symbol or at its points where it can be, and f then in fewer symbols).
+# Where h is neither and f, h are curves of a plane (two symbols or angles between them,
+# ``_meeting``), they meet in finitely many points: the last polynomial of a lex Groebner
+# basis of f, h (and the circles) is in one symbol, and is imposed first.  In three or
+# more symbols the intersection is listed with rank None: a Groebner basis of two such
+# surfaces (a curve in common) did not finish in 90 s on the 3-RPS.
 
 #: the primes of the points of f = 0 over a finite field (large: an unlucky zero of a
 #: minor at the point has probability about degree / prime)
@@ -2068,15 +2122,18 @@ def _rank_mod(rows: list, p: int) -> tuple[tuple, tuple]:
     return tuple(pivots), tuple(cols)
 
 
-def _rank_on(rg: _Ring, f, seeds: int = 4) -> tuple | None:
+def _rank_on(rg: _Ring, f, seeds: int = 4, swap: bool = True) -> tuple | None:
     """``(rank, rows, cols, minor, basis)`` proved on ``f = 0`` where the minor is non-zero.
 
     ``f`` is an element of the ring of the system ``rg``; ``basis`` the Groebner basis
     of ``f`` and the circles (see the section's comment).  None where no point proved
-    a rank.
+    a rank.  ``swap``: the members are screws (their halves swapped, as ``_analysis``
+    takes them); ``False`` for the columns of any matrix (``cols`` then its rows).
     """
     RM = rg.ring
-    B = [_swap(c) for c in rg.cols]
+    B = [_swap(c) for c in rg.cols] if swap else [tuple(c) for c in rg.cols]
+    if not B:
+        return 0, (), (), RM.one, _ideal([f], RM)
     G = _ideal([f], RM)
     if G == [RM.ring.one]:
         return None  # pragma: no cover - f has points (it came with real ones)
@@ -2099,7 +2156,7 @@ def _rank_on(rg: _Ring, f, seeds: int = 4) -> tuple | None:
         minor = _minor(B, rows, cols, RM)
         if not minor.rem(G):
             continue  # pragma: no cover - zero modulo f although not at the point
-        vectors = _cramer(B, rows, cols, RM, m=minor)
+        vectors = _cramer(B, rows, cols, RM, m=minor, width=len(B[0]))
         _charge(sum(len(e.terms()) for v in vectors for e in v) * len(B))
         if all(not sum((b * x for b, x in zip(B[i], v, strict=True)), RM.zero).rem(G)
                for v in vectors for i in range(len(B)) if i not in rows):
@@ -2107,9 +2164,16 @@ def _rank_on(rg: _Ring, f, seeds: int = 4) -> tuple | None:
     return None
 
 
+def _ring_with(M: ImmutableMatrix, fe: Any) -> _Ring:
+    """``M``'s columns in a ring that has ``fe``'s symbols too (a case of an earlier system)."""
+    extra = ImmutableMatrix(M.rows, 1, [fe] + [0] * (M.rows - 1))
+    rg = _to_ring(ImmutableMatrix.hstack(M, extra))
+    return _Ring(rg.ring, rg.gens, rg.cols[:-1], rg.scales[:-1])
+
+
 def _on_surface(M, conds, subs, nonzero, fe, out: list) -> bool:
     """The cases of ``fe = 0`` proved modulo ``fe`` (see the section's comment); False: not done."""
-    rg = _to_ring(M)
+    rg = _ring_with(M, fe)
     RM = rg.ring
     try:
         f = _element(fe, RM)
@@ -2139,6 +2203,66 @@ def _on_surface(M, conds, subs, nonzero, fe, out: list) -> bool:
         _impose(M, conds + tuple(Ne(g, 0) for g in earlier), subs, nonzero + earlier,
                 [h, fe], out)
     return True
+
+
+def _surface_cases(M: ImmutableMatrix, fe: Any, limit: int = MAX_CASES) -> tuple[_Node, ...]:
+    """The cases of ``M`` where ``fe = 0`` holds already: ``_cases`` for a system on a surface.
+
+    ``fe`` is the equation of an earlier case that no substitution states
+    (``_Node.relation``, an irreducible polynomial linear in none of its
+    symbols); the rank is proved modulo it as ``_on_surface`` proves it, and
+    the cases cover the surface: where the minor also vanishes, each factor is
+    imposed with ``fe`` (by a substitution where one states both).  A single
+    case of rank None where no point proves a rank.
+    """
+    M = _normal(M)
+    out = _Cases(limit)
+    try:
+        if M.cols == 0:
+            out.append(_Node(Eq(fe, 0), 0, (), M, relation=(fe,)))
+        elif not _on_surface(M, (), (), (), fe, out):
+            out.append(_Node(Eq(fe, 0), None, (), M))
+    except _TooManyCases:
+        raise ValueError(
+            f"rank_conditions: the case split of this system has more than {limit} cases; "
+            "give some symbols values (xreplace) or pass a larger max_cases"
+        ) from None
+    return tuple(out)
+
+
+def _null_on_surface(M: ImmutableMatrix, fe: Any) -> tuple | None:
+    """The null space of the matrix ``M`` at the generic point of ``fe = 0``: ring columns.
+
+    ``(rank, members, vectors, ring)``: ``rank`` columns of ``M`` (``members``)
+    are independent at a point of the surface, and each vector of Cramer's rule on
+    their minor (one per other column, polynomial, that column's entry the minor)
+    is proved a null vector modulo ``fe``: together a basis of the null space
+    wherever ``fe = 0`` and the minor is non-zero.  None where no point proved it.
+    """
+    rg = _ring_with(M, fe)
+    R = rg.ring
+    try:
+        f = _element(fe, R)
+    except Exception:  # pragma: no cover - fe has symbols the ring has not
+        return None
+    found = _rank_on(rg, f, swap=False)
+    if found is None:
+        return None
+    rank, members, coords, minor, G = found
+    B = [tuple(c) for c in rg.cols]
+    vectors = []
+    for j in range(len(B)):
+        if j in members:
+            continue
+        x = [R.zero] * len(B)
+        x[j] = minor
+        for pp, p in enumerate(members):
+            rows = [[B[j if q == pp else members[q]][c] for c in coords]
+                    for q in range(len(members))]
+            x[p] = -_det(rows, R)
+        # the columns were cleared of denominators (cols[k] = scales[k] * column k)
+        vectors.append([(e * s).rem(G) for e, s in zip(x, rg.scales, strict=True)])
+    return rank, members, vectors, R
 
 
 @lru_cache(maxsize=256)

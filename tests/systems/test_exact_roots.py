@@ -317,3 +317,59 @@ def test_a_product_of_positive_factors_has_no_real_zero():
     assert [r for _, r in cases] == [2, 1]
     assert cases[1][0].xreplace({x: 2, y: 0, z: 1 / sqrt(3)}) is true
     assert W2.xreplace({x: 2, y: 0, z: 1 / sqrt(3)}).matrix.rank() == 1
+
+
+def planar_4r_twists(f, h):
+    """The twists of a planar 4R loop: pivots O, B = (1, f), C = (3, h), D = (4, 0) on z axes."""
+    return ScrewSystem(*(Twist.rotation(Z, point=p)
+                         for p in ([0, 0, 0], [1, f, 0], [3, h, 0], [4, 0, 0])))
+
+
+def assert_one_case_with_its_rank(T, cases, points):
+    for point in points:
+        holding = [r for c, r in cases if c.xreplace(point) is true]
+        assert len(holding) == 1, (point, holding)
+        assert holding[0] is None or holding[0] == rank_at(T, point), (point, holding)
+
+
+def test_where_two_curves_meet_off_any_substitution_their_points_are_decided():
+    # B = (1, f), C = (3, h) with f = t**2 + u**2 - 2, h = t**3 + u**2 - 2.  The generic minor
+    # is g = h - 3 f (O, B, C in one line), a cubic linear in no symbol; on g = 0 the rank
+    # stays 3 (Gosselin & Angeles 1990: a planar loop loses rank only with its four pivots
+    # in one line) until f = 0 too, and f modulo g is f itself: two curves, linear in no
+    # symbol, meeting.  A lex Groebner basis of both gives t**2 (t - 1) there (one symbol),
+    # decided at its roots: the four points (1, +-1), (0, +-sqrt(2)), rank 2
+    t, u = symbols("t u", real=True)
+    f, h = t**2 + u**2 - 2, t**3 + u**2 - 2
+    T = planar_4r_twists(f, h)
+    cases = T.rank_conditions()
+    g = t**3 - 3 * t**2 - 2 * u**2 + 4
+    assert cases[:2] == [(Ne(g, 0), 3), (And(Ne(f, 0), Eq(g, 0)), 3)]
+    assert [r for _, r in cases[2:]] == [2, 2, 2, 2]
+    meet = [{t: 1, u: 1}, {t: 1, u: -1}, {t: 0, u: sqrt(2)}, {t: 0, u: -sqrt(2)}]
+    on_g = [{t: 2, u: 0}, {t: -1, u: 0}]  # g = 0, f != 0
+    on_f = [{t: Rational(7, 5), u: Rational(1, 5)}, {t: -1, u: 1}]  # f = 0, g != 0
+    rng = random.Random(3)
+    off = [{t: Rational(rng.randint(-9, 9), rng.randint(1, 4)),
+            u: Rational(rng.randint(-9, 9), rng.randint(1, 4))} for _ in range(4)]
+    assert [rank_at(T, p) for p in meet + on_g] == [2] * 4 + [3] * 2
+    assert_one_case_with_its_rank(T, cases, meet + on_g + on_f + off)
+    # the check rejects a wrong answer: the points of f = 0 and g = 0 given rank 3
+    with pytest.raises(AssertionError):
+        assert_one_case_with_its_rank(T, cases[:2] + [(c, 3) for c, _ in cases[2:]], meet)
+
+
+def test_an_intersection_left_undecided_states_both_equations():
+    # with a third symbol the two surfaces meet in a curve: that case is undecided (None),
+    # and its condition holds only where both equations do (it once said f = 0 alone, and
+    # two cases held at the points of f = 0 off g = 0)
+    t, u, w = symbols("t u w", real=True)
+    f, h = t**2 + u**2 + w**2 - 2, t**3 + u**2 - 2
+    T = planar_4r_twists(f, h)
+    cases = T.rank_conditions()
+    g = h - 3 * f
+    assert cases[-1] == (And(Eq(f, 0), Eq(g.expand(), 0)), None)
+    on_f = [{t: Rational(7, 5), u: Rational(1, 5), w: 0}, {t: 1, u: 0, w: 1}]
+    meet = [{t: 1, u: 1, w: 0}, {t: 1, u: -1, w: 0}]
+    assert_one_case_with_its_rank(T, cases, on_f + meet + [{t: 0, u: 0, w: 0}])
+    assert [rank_at(T, p) for p in meet] == [2, 2]  # undecided there, not wrong

@@ -15,6 +15,7 @@ from _linkages import (
     ISOGRAM,
     Closure,
     Z,
+    assert_case_at,
     bennett,
     cross,
     delta,
@@ -718,18 +719,71 @@ def test_mobility_cases_decides_a_quadratic_at_its_roots():
     assert mech.xreplace({t: sqrt(2)}).mobility().mobility == 2
 
 
-def test_mobility_cases_says_none_where_sympy_cannot_decide():
-    # the coupler joint at (1, t**2 + u**2 - 2): a circle of folded four-bars, an equation
-    # in two symbols linear in neither: that case is listed undecided (None), never guessed
-    from sympy import Eq, Ne, sqrt
+def test_mobility_cases_decides_a_case_that_no_substitution_states():
+    # the coupler joint at (1, t**2 + u**2 - 2): a circle of folded four-bars (Gosselin &
+    # Angeles 1990: a planar loop is singular with its four pivots in one line), an
+    # equation in two symbols linear in neither.  No substitution states it; the split
+    # goes on modulo it, and every figure of the case holds at exact points of the circle
+    from sympy import Eq, Ne, Rational, sqrt
 
     t, u = symbols("t u", real=True)
-    mech = four_r([[0, 0, 0], [1, t**2 + u**2 - 2, 0], [3, 0, 0], [4, 0, 0]], [Z] * 4)
+    f = t**2 + u**2 - 2
+    mech = four_r([[0, 0, 0], [1, f, 0], [3, 0, 0], [4, 0, 0]], [Z] * 4)
     cases = mech.mobility_cases()
-    assert [(c, None if m is None else m.mobility) for c, m in cases] == [
-        (Ne(t**2 + u**2 - 2, 0), 1), (Eq(t**2 + u**2 - 2, 0), None)]
-    # and it is undecided, not wrong: at t = sqrt(2), u = 0 the four-bar is folded
-    assert mech.xreplace({t: sqrt(2), u: 0}).mobility().mobility == 2
+    assert [(c, m.mobility, m.orders) for c, m in cases] == [(Ne(f, 0), 1, (3,)),
+                                                             (Eq(f, 0), 2, (2,))]
+    on = [{t: 1, u: 1}, {t: Rational(7, 5), u: Rational(1, 5)}, {t: sqrt(2), u: 0}]
+    off = [{t: 0, u: 0}, {t: 2, u: Rational(1, 3)}]
+    for point in on:
+        assert_case_at(mech, cases[1][1], point)
+    for point in off:
+        assert_case_at(mech, cases[0][1], point)
+    # the checker rejects a wrong answer: the generic case's figures on the circle, its
+    # rates with an entry changed, a loop's common constraints cut short
+    m = cases[1][1]
+    with pytest.raises(AssertionError):
+        assert_case_at(mech, cases[0][1], on[0])
+    with pytest.raises(AssertionError):
+        assert_case_at(mech, m._replace(rates=m.rates + Matrix.eye(4)[:, :2]), on[1])
+    with pytest.raises(AssertionError):
+        assert_case_at(mech, m._replace(common=(ScrewSystem(*m.common[0].screws[:3]),)), on[0])
+
+
+def test_mobility_cases_decides_where_two_curves_meet():
+    # B = (1, t**2 + u**2 - 2), C = (3, t**3 + u**2 - 2): O, B, C are in one line on a
+    # cubic curve (the loop keeps its order 3 there), and all four pivots where it meets
+    # the circle: at four points, found exactly (test_exact_roots has the split)
+    from sympy import sqrt
+
+    t, u = symbols("t u", real=True)
+    mech = four_r([[0, 0, 0], [1, t**2 + u**2 - 2, 0], [3, t**3 + u**2 - 2, 0], [4, 0, 0]],
+                  [Z] * 4)
+    cases = mech.mobility_cases(merge=False)
+    assert [m.mobility for _, m in cases] == [1, 1, 2, 2, 2, 2]
+    points = {1: [{t: 2, u: 0}, {t: 0, u: 0}, {t: 3, u: -1}],
+              2: [{t: 1, u: 1}, {t: 1, u: -1}, {t: 0, u: sqrt(2)}, {t: 0, u: -sqrt(2)}]}
+    for mobility, at in points.items():
+        for point in at:
+            [m] = [m for c, m in cases if c.xreplace(point) is true]
+            assert m.mobility == mobility
+            assert_case_at(mech, m, point)
+    assert [m.mobility for _, m in mech.mobility_cases()] == [1, 2]
+
+
+def test_mobility_cases_says_none_where_sympy_cannot_decide():
+    # with a third symbol, B = (1, t**2 + u**2 + w**2 - 2): the two surfaces meet in a
+    # curve that no substitution states and no point decides: that case is undecided
+    # (None), never guessed, and holds only there
+    t, u, w = symbols("t u w", real=True)
+    mech = four_r([[0, 0, 0], [1, t**2 + u**2 + w**2 - 2, 0], [3, t**3 + u**2 - 2, 0],
+                   [4, 0, 0]], [Z] * 4)
+    cases = mech.mobility_cases()
+    assert [None if m is None else m.mobility for _, m in cases] == [1, None]
+    meet, beside = {t: 1, u: 1, w: 0}, {t: 1, u: 0, w: 1}
+    assert cases[1][0].xreplace(meet) is true and cases[1][0].xreplace(beside) is not true
+    # and it is undecided, not wrong: there the four-bar is folded
+    assert mech.xreplace(meet).mobility().mobility == 2
+    assert_case_at(mech, cases[0][1], beside)
 
 
 def test_mobility_cases_keeps_to_its_budget():

@@ -14,7 +14,7 @@ from __future__ import annotations
 import random
 
 import pytest
-from _linkages import four_r, planar
+from _linkages import assert_case_at, four_r, planar
 from sympy import Eq, Matrix, Ne, Rational, cos, pi, sin, sqrt, symbols, tan, true
 
 from screwsym import Twist
@@ -246,25 +246,34 @@ def test_the_checker_rejects_a_wrong_answer():
         assert_circle_cases(mech, points, Liar(*pm.args))
 
 
-def test_two_angles_the_case_sympy_cannot_decide_says_none():
-    # both pivots on circles, B = (cos a, sin a), C = (4 + cos b, sin b): the loop's minor is
-    # in two angles and linear in no symbol.  Its rank is proved on that curve modulo it
-    # (rank_conditions), but no substitution states the curve, so the graph's split
-    # cannot go on there: that case is undecided (None), never guessed.  Where sin(a) = 0
-    # too, the curve meets sin(b) = 0: the four points in one line, folded (mobility 2)
+def test_two_angles_a_curve_no_substitution_states_is_decided_on_itself():
+    # both pivots on circles, B = (cos a, sin a), C = (4 + cos b, sin b): the loop's minor
+    # vanishes where O, B, C are in one line, sin(b - a) = 4 sin(a), a curve in two angles
+    # linear in no symbol.  No substitution states it; the split goes on modulo it: the loop
+    # keeps order 3 there (one freedom, as off it) unless sin(a) = 0 too, where the curve
+    # meets sin(b) = 0: the four points in one line, folded (mobility 2)
     a, b = symbols("a b", real=True)
     mech = four_r([[0, 0, 0], [cos(a), sin(a), 0], [4 + cos(b), sin(b), 0], [4, 0, 0]], [Z] * 4)
+    unmerged = mech.mobility_cases(merge=False)
+    curve = sin(b) * cos(a) - sin(a) * cos(b) - 4 * sin(a)
+    assert unmerged[1][0] == (Ne(sin(a), 0) & Eq(curve, 0))
+    assert [m.mobility for _, m in unmerged] == [1, 1, 2, 2, 2, 2]
     cases = mech.mobility_cases()
-    assert [None if m is None else m.mobility for _, m in cases] == [1, None, 2]
+    assert [m.mobility for _, m in cases] == [1, 2]
     points = circle_points([a, b], [{a: 0, b: pi}, {a: pi, b: 0}, {a: 0, b: 0}])
-    assert_circle_cases(mech, points, cases=cases)
-    folded = {sin(a): 0, cos(a): 1, sin(b): 0, cos(b): 1}
-    assert cases[2][0].xreplace(folded) is true
-    assert mech.xreplace({a: 0, b: 0}).mobility().mobility == 2
-    # the undecided case holds on the rest of the curve (b = pi/2, tan(a) = 1/4: B, C and
+    # on the curve: b = pi/2 with tan(a) = 1/4, and b = -pi/2 with tan(a) = -1/4 (B, C and
     # the origin in one line)
-    on_curve = {sin(a): 1 / sqrt(17), cos(a): 4 / sqrt(17), sin(b): 1, cos(b): 0}
-    assert cases[1][0].xreplace(on_curve) is true
+    on_curve = [{sin(a): 1 / sqrt(17), cos(a): 4 / sqrt(17), sin(b): 1, cos(b): 0},
+                {sin(a): -1 / sqrt(17), cos(a): 4 / sqrt(17), sin(b): -1, cos(b): 0}]
+    assert_circle_cases(mech, points + on_curve, cases=unmerged)
+    assert_circle_cases(mech, points + on_curve, cases=cases)
+    for point in on_curve:
+        assert unmerged[1][0].xreplace(point) is true
+        assert_case_at(mech, unmerged[1][1], point)
+    folded = {sin(a): 0, cos(a): 1, sin(b): 0, cos(b): 1}
+    assert cases[1][0].xreplace(folded) is true
+    assert_case_at(mech, cases[1][1], folded)
+    assert mech.xreplace({a: 0, b: 0}).mobility().mobility == 2
 
 
 def test_geometry_that_is_not_polynomial_in_sin_and_cos_is_refused():
