@@ -1199,9 +1199,7 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
         found = _null_on_surface(ImmutableMatrix(C), fe)
         if found is None:
             return None
-        _, _, vectors, R = found
-        cols = [_clean([_poly_expr(e, R) for e in v]) for v in vectors]
-        return Matrix.hstack(*(Matrix(c) for c in cols)) if cols else zeros(C.cols, 0)
+        return Matrix(found[2])
 
     idle = _idle(net, N, nullspace)
     if idle is None:  # pragma: no cover - no point of the surface proved the idle rates

@@ -70,9 +70,15 @@ from .screw_system import (
     MAX_CASES,
     ScrewSystem,
     _analysis,
+    _basis_system,
+    _cases,
     _circle_simplify,
+    _null_on_surface,
     _pure_translations,
+    _rank_on_surface,
     _substitute,
+    _surface_cases,
+    _zero_on_surface,
     case_budget,
 )
 
@@ -389,6 +395,56 @@ def motion_of(twists: ScrewSystem) -> MotionType:
     )
 
 
+def _motion_on_surface(twists: ScrewSystem, fe: Any) -> MotionType | None:
+    """:func:`motion_of` at the generic point of the surface ``fe = 0``, for independent twists.
+
+    The ranks and null spaces of :func:`motion_of` proved modulo ``fe``
+    (``_null_on_surface``).  The helical test is made for one rotation left once
+    the translations are taken off (its pitch zero modulo ``fe`` or not); with
+    two or more, ``motion`` and ``helical_pitches`` are None (the sign of the
+    pitch form is not decided on a surface).  None where no point of the
+    surface proved a rank.
+    """
+    empty = ImmutableMatrix.zeros(3, 0)
+    if not len(twists):
+        return MotionType(motion_type(0, 0), 0, 0, (), empty, empty)
+    T = twists.matrix
+    omega = ImmutableMatrix(T[:3, :])
+    found = _null_on_surface(omega, fe)
+    if found is None:  # pragma: no cover - no point of the surface proved the rank
+        return None
+    rotations, members, null = found
+    moves = ImmutableMatrix(T[3:, :]) * null if null.cols else empty
+    pitches: tuple | None = ()
+    if rotations:
+        X = T
+        C = (moves.T * X[:3, :]).applyfunc(cancel) if moves.cols else None
+        if C is not None and not all(_zero_on_surface(e, fe) for e in C):
+            # the twists whose omega is orthogonal to every translation (see _helical_pitches)
+            kept = _null_on_surface(ImmutableMatrix(C), fe)
+            if kept is None:  # pragma: no cover - no point of the surface proved the rank
+                return None
+            X = (X * kept[2]).applyfunc(cancel)
+        spin = _null_on_surface(ImmutableMatrix(X[:3, :]), fe)
+        if spin is None:  # pragma: no cover - no point of the surface proved the rank
+            return None
+        X = X.extract(list(range(6)), list(spin[1]))  # one twist per rotation, modulo moves
+        if X.cols == 1:
+            pitch = cancel(X[:3, 0].dot(X[3:, 0]) / X[:3, 0].dot(X[:3, 0]))
+            pitches = () if _zero_on_surface(pitch, fe) else (pitch,)
+        elif X.cols:
+            pitches = None
+    return MotionType(
+        motion=None if pitches is None else motion_type(rotations, T.cols - rotations,
+                                                        len(pitches)),
+        rotations=rotations,
+        translations=T.cols - rotations,
+        helical_pitches=pitches,
+        rotation_directions=ImmutableMatrix(omega.extract([0, 1, 2], list(members))),
+        translation_directions=ImmutableMatrix(moves),
+    )
+
+
 def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple | None:
     """The pitches of the helical freedoms of ``twists`` (translations ``moves``): see motion_of.
 
@@ -559,13 +615,16 @@ class ParallelMechanism(ScrewsymBasic):
         in one symbol (or in ``sin(q)``, ``cos(q)`` of one angle), once the
         earlier ones are substituted, is decided at each of its real roots
         (points of the circle); a condition with no real solution is dropped.
-        A case that no substitution states (a condition in two or more
-        symbols linear in none of them, ``x**2 + y**2 = 2``: its rank is
-        decided by :meth:`ScrewSystem.rank_conditions`, but the mechanism
-        cannot be rebuilt there) comes with ``None``; the graph's split,
-        ``Mechanism.from_parallel(pm).mobility_cases()``
-        (:meth:`screwsym.systems.graph.Mechanism.mobility_cases`), goes on modulo
-        such a condition and decides it.  A case whose values unmake a joint (a zero axis, a
+        A case that no substitution states (a condition ``f = 0`` in two or
+        more symbols linear in none of them, ``x**2 + y**2 = 2``) is split on
+        modulo ``f``, as :meth:`ScrewSystem.rank_conditions` proves a rank
+        there: the limbs' and the constraints' ranks hold at every point of
+        the case, the platform's ``twists`` are Cramer's rule on the minor that
+        proved the constraints' rank, and ``common`` and the motion type are
+        those of the surface's generic point (the motion ``None`` where two or
+        more rotations are left: the sign of the pitch form is not decided on
+        a surface).  A case comes with ``None`` only where the rank conditions
+        give ``None``.  A case whose values unmake a joint (a zero axis, a
         universal joint's axes made parallel) comes with a
         :class:`Degenerate` that says which and why.  Geometry may be
         polynomial in ``sin`` and ``cos`` of the symbols: the conditions are
@@ -603,6 +662,15 @@ class ParallelMechanism(ScrewsymBasic):
         ...                           Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
         >>> [(case, m.mobility) for case, m in crank.mobility_cases()]
         [(Ne(sin(q), 0), 1), (Eq(sin(q), 0), 2)]
+
+        The coupler pivot at ``(1, s**2 + t**2 - 2)``: folded on a circle, a
+        case no substitution states, decided on the circle itself.
+
+        >>> s, t = symbols("s t", real=True)
+        >>> folds = ParallelMechanism(Limb(R([0, 0, 0], z), R([1, s**2 + t**2 - 2, 0], z)),
+        ...                           Limb(R([4, 0, 0], z), R([3, 0, 0], z)))
+        >>> [(case, m.mobility, m.motion) for case, m in folds.mobility_cases()]
+        [(Ne(s**2 + t**2 - 2, 0), 1, '1R'), (Eq(s**2 + t**2 - 2, 0), 2, '1T1R')]
         """
         max_cases = check_count(max_cases, "max_cases")
         merge = check_flag(merge, "merge")
@@ -615,39 +683,50 @@ class ParallelMechanism(ScrewsymBasic):
         return cast("list[tuple[Any, Mobility | Degenerate | None]]", _merge_cases(answered))
 
     def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | Degenerate | None]]:
-        leaves: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = [((), {})]
+        leaves: list[_Leaf] = [_Leaf((), {}, (), ())]
         out: list[tuple[Any, Mobility | Degenerate | None]] = []
         degenerate: list[tuple[Any, Mobility | Degenerate | None]] = []  # listed last
         for i in range(len(self.args)):
-            grown = []
-            for conds, subs in leaves:
-                try:
-                    limb = _substitute(self.args[i], subs) if subs else self.args[i]
-                except ValueError as error:  # the case's values unmake a joint of this limb
-                    degenerate.append((And(*conds), Degenerate(f"limbs[{i}]: {error}")))
+            grown: list[_Leaf] = []
+            for leaf in leaves:
+                if leaf.subs is None:
+                    grown.append(leaf)
                     continue
-                grown.extend(_refine(conds, subs, limb.twists, max_cases))
+                try:
+                    limb = _substitute(self.args[i], leaf.subs) if leaf.subs else self.args[i]
+                except ValueError as error:  # the case's values unmake a joint of this limb
+                    degenerate.append((And(*leaf.conds), Degenerate(f"limbs[{i}]: {error}")))
+                    continue
+                grown.extend(_refine(leaf, limb.twists, max_cases))
             leaves = grown
             _check_cases(len(leaves), max_cases)
-        for conds, subs in leaves:
-            try:
-                mech = _substitute(self, subs) if subs else self
-            except ValueError as error:  # a later limb's case unmakes a joint of an earlier one
-                degenerate.append((And(*conds), Degenerate(_which_limb(self, subs or {}, error))))
+        for leaf in leaves:
+            if leaf.subs is None:
+                out.append((And(*leaf.conds) if leaf.conds else true, None))
                 continue
-            for conds2, subs2 in _refine(conds, subs, mech.constraints, max_cases):
-                condition = And(*conds2) if conds2 else true
+            try:
+                mech = _substitute(self, leaf.subs) if leaf.subs else self
+            except ValueError as error:  # a later limb's case unmakes a joint of an earlier one
+                degenerate.append((And(*leaf.conds),
+                                   Degenerate(_which_limb(self, leaf.subs, error))))
+                continue
+            # on a surface, each limb's constraints are those its own case proved there
+            W = _surface_constraints(leaf) if leaf.relation else mech.constraints
+            for case in _refine(leaf, W, max_cases):
+                condition = And(*case.conds) if case.conds else true
                 if condition is false:  # contradicts the limb's case: no point
                     continue
-                if subs2 is None:
+                if case.subs is None:
                     out.append((condition, None))
                     continue
                 try:
-                    here = _substitute(self, subs2) if subs2 else self
+                    here = _substitute(self, case.subs) if case.subs else self
                 except ValueError as error:  # the constraints' case unmakes a joint
-                    degenerate.append((condition, Degenerate(_which_limb(self, subs2, error))))
+                    degenerate.append((condition,
+                                       Degenerate(_which_limb(self, case.subs, error))))
                     continue
-                out.append((condition, _mobility(here)))
+                out.append((condition, _surface_mobility(here, case) if case.relation
+                            else _mobility(here)))
                 _check_cases(len(out), max_cases)
         return out + degenerate
 
@@ -712,37 +791,90 @@ def _check_cases(count: int, limit: int) -> None:
         )
 
 
-def _refine(conds: tuple[Any, ...], subs: dict[Any, Any] | None, system: ScrewSystem,
-            limit: int) -> list[tuple[tuple[Any, ...], dict[Any, Any] | None]]:
-    """The cases of ``system`` (already substituted) under ``conds``/``subs``: composed.
+class _Leaf(NamedTuple):
+    """A case of the split: its conditions, its substitution (None: undecided), its relation
+    (the equation of a case that no substitution states, the later splits made modulo it),
+    and the nodes of screw_system's split that proved each rank so far (limbs, constraints)."""
 
-    A case whose rank is undecided keeps ``None`` as its substitution.
+    conds: tuple
+    subs: dict | None
+    relation: tuple
+    nodes: tuple
+
+
+def _refine(leaf: _Leaf, system: ScrewSystem, limit: int) -> list[_Leaf]:
+    """The cases of ``system`` (already substituted) within ``leaf``: composed with it.
+
+    On a leaf with a relation ``fe``, the system's cases on the surface ``fe = 0``
+    (:func:`~screwsym.systems.screw_system._surface_cases`).  A case whose rank is
+    undecided keeps ``None`` as its substitution.
     """
-    out: list[tuple[tuple[Any, ...], dict[Any, Any] | None]] = []
-    ranks = system.rank_conditions(max_cases=limit)
-    for (cond, rank), (_, more) in zip(ranks, system.substitutions(max_cases=limit), strict=True):
-        new_conds = conds if cond is true else conds + (cond,)
-        if rank is None or subs is None or more is None:  # undecided, or no substitution
-            out.append((new_conds, None))
+    out: list[_Leaf] = []
+    subs = cast("dict[Any, Any]", leaf.subs)  # called on decided leaves only
+    M = system.matrix
+    nodes = _surface_cases(M, leaf.relation[0], limit) if leaf.relation else _cases(M, limit)
+    for node in nodes:
+        new_conds = leaf.conds if node.condition is true else leaf.conds + (node.condition,)
+        if node.rank is None:  # undecided
+            out.append(_Leaf(new_conds, None, (), ()))
             continue
-        composed = {k: cancel(_substitute(v, more)) for k, v in subs.items()}
-        composed.update(more)
-        out.append((new_conds, composed))
+        composed = subs
+        if node.subs:
+            composed = {k: cancel(_substitute(v, dict(node.subs))) for k, v in subs.items()}
+            composed.update(dict(node.subs))
+        # a substitution made on the surface states it (fe imposed after the minor's factor)
+        relation = node.relation if node.relation or node.subs else leaf.relation
+        out.append(_Leaf(new_conds, composed, relation, leaf.nodes + (node,)))
     return out
 
 
+def _surface_constraints(leaf: _Leaf) -> ScrewSystem:
+    """The union of the limbs' constraints on a case on a surface, each by Cramer's rule on
+    the minor that proved its limb's rank there (non-zero on the case), with the case's
+    substitution made (a later limb's case may set more symbols)."""
+    wrenches: list = []
+    for node in leaf.nodes:
+        basis = _basis_system(node, Wrench)
+        wrenches.extend(_substitute(basis, leaf.subs) if leaf.subs else basis)
+    return ScrewSystem(*wrenches, kind=Wrench)
+
+
 def _mobility(mech: ParallelMechanism) -> Mobility:
+    limb_twists = [limb.twists for limb in mech.args]
+    all_twists = ScrewSystem(*(t for T in limb_twists for t in T), kind=Twist)
+    W = mech.constraints
+    twists = W.reciprocal()
+    return _figures(mech, [T.rank for T in limb_twists], all_twists.rank, W.rank, twists,
+                    motion_of(twists))
+
+
+def _surface_mobility(mech: ParallelMechanism, leaf: _Leaf) -> Mobility | None:
+    """The figures of a case on a surface ``fe = 0`` (``leaf.relation``): each limb's rank and
+    the constraints' rank as the split proved them at every point of the case, the platform's
+    twists by Cramer's rule on the constraints' minor there; the rank of all the limbs' twists
+    (``common``) and the motion type those of the surface's generic point
+    (:func:`_motion_on_surface`).  None where no point of the surface proved them."""
+    fe = leaf.relation[0]
+    *limb_nodes, w_node = leaf.nodes
+    all_twists = ScrewSystem(*(t for limb in mech.args for t in limb.twists), kind=Twist)
+    all_rank = _rank_on_surface(all_twists.matrix, fe)
+    twists = _basis_system(w_node, Twist)
+    kinds = _motion_on_surface(twists, fe)
+    if all_rank is None or kinds is None:  # pragma: no cover - no point proved a rank
+        return None
+    return _figures(mech, [node.rank for node in limb_nodes], all_rank, w_node.rank, twists,
+                    kinds)
+
+
+def _figures(mech: ParallelMechanism, limb_ranks: list, all_rank: int, union: int,
+             twists: ScrewSystem, kinds: MotionType) -> Mobility:
+    """The modified Grübler–Kutzbach count and its parts from the ranks of a case."""
     limbs = mech.args
     freedoms = sum(limb.freedom for limb in limbs)
     g = sum(len(limb.joints) for limb in limbs)
     n = 2 + sum(len(limb.joints) - 1 for limb in limbs)
-    limb_twists = [limb.twists for limb in limbs]
-    limb_ranks = [T.rank for T in limb_twists]
-    all_twists = ScrewSystem(*(t for T in limb_twists for t in T), kind=Twist)
-    common = 6 - all_twists.rank
+    common = 6 - all_rank
     constraint_counts = [6 - r for r in limb_ranks]
-    W = mech.constraints
-    union = W.rank
     redundant = sum(c - common for c in constraint_counts) - (union - common)
     # an idle motion of a limb (freedom - rank) is a passive freedom when the limb has it at
     # every configuration (a S-S leg's spin), a momentary internal motion when only here
@@ -753,8 +885,6 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
     internal = sum(generic_ranks) - sum(limb_ranks)
     order = 6 - common
     dof = order * (n - g - 1) + freedoms + redundant - passive
-    twists = W.reciprocal()
-    kinds = motion_of(twists)
     return Mobility(
         mobility=dof,
         order=order,

@@ -2230,14 +2230,39 @@ def _surface_cases(M: ImmutableMatrix, fe: Any, limit: int = MAX_CASES) -> tuple
     return tuple(out)
 
 
+def _rank_on_surface(M: ImmutableMatrix, fe: Any, swap: bool = True) -> int | None:
+    """The rank of ``M``'s columns at the generic point of ``fe = 0`` (proved modulo ``fe``
+    where a minor found at a point of it is non-zero); None where no point proved it."""
+    if M.cols == 0:
+        return 0
+    rg = _ring_with(M, fe)
+    try:
+        f = _element(fe, rg.ring)
+    except Exception:  # pragma: no cover - fe has symbols the ring has not
+        return None
+    found = _rank_on(rg, f, swap=swap)
+    return None if found is None else found[0]
+
+
+def _zero_on_surface(e: Any, fe: Any) -> bool:
+    """Whether the polynomial (or rational function) ``e`` vanishes wherever ``fe = 0``
+    (where it is defined): its numerator is in the ideal of ``fe`` and the circles."""
+    num = fraction(cancel(e))[0]
+    rg = _ring_with(ImmutableMatrix([[num]]), fe)
+    R = rg.ring
+    return not rg.cols[0][0].rem(_ideal([_element(fe, R)], R))
+
+
 def _null_on_surface(M: ImmutableMatrix, fe: Any) -> tuple | None:
     """The null space of the matrix ``M`` at the generic point of ``fe = 0``: ring columns.
 
-    ``(rank, members, vectors, ring)``: ``rank`` columns of ``M`` (``members``)
-    are independent at a point of the surface, and each vector of Cramer's rule on
-    their minor (one per other column, polynomial, that column's entry the minor)
-    is proved a null vector modulo ``fe``: together a basis of the null space
-    wherever ``fe = 0`` and the minor is non-zero.  None where no point proved it.
+    ``(rank, members, null)``: ``rank`` columns of ``M`` (``members``) are
+    independent at a point of the surface, and each vector of Cramer's rule on
+    their minor (one per other column, polynomial, that column's entry the
+    minor, reduced modulo ``fe``) is a null vector wherever ``fe = 0``: the
+    columns of ``null`` (``M.cols x (M.cols - rank)``, in lowest terms), a
+    basis of the null space wherever ``fe = 0`` and the minor is non-zero.
+    None where no point proved it.
     """
     rg = _ring_with(M, fe)
     R = rg.ring
@@ -2261,8 +2286,10 @@ def _null_on_surface(M: ImmutableMatrix, fe: Any) -> tuple | None:
                     for q in range(len(members))]
             x[p] = -_det(rows, R)
         # the columns were cleared of denominators (cols[k] = scales[k] * column k)
-        vectors.append([(e * s).rem(G) for e, s in zip(x, rg.scales, strict=True)])
-    return rank, members, vectors, R
+        v = [(e * s).rem(G) for e, s in zip(x, rg.scales, strict=True)]
+        vectors.append([_poly_expr(e, R) for e in _primitive(v, R)])
+    null = ImmutableMatrix(vectors).T if vectors else ImmutableMatrix.zeros(M.cols, 0)
+    return rank, members, null
 
 
 @lru_cache(maxsize=256)

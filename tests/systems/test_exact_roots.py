@@ -373,3 +373,50 @@ def test_an_intersection_left_undecided_states_both_equations():
     meet = [{t: 1, u: 1, w: 0}, {t: 1, u: -1, w: 0}]
     assert_one_case_with_its_rank(T, cases, on_f + meet + [{t: 0, u: 0, w: 0}])
     assert [rank_at(T, p) for p in meet] == [2, 2]  # undecided there, not wrong
+
+
+def assert_mobility_at(pm, m, point):
+    """A ParallelMechanism case's Mobility checked where it holds: the mechanism rebuilt at the
+    exact ``point`` has its numbers, and the case's platform twists span its twists there."""
+    here = pm.xreplace(point).mobility()
+    assert m.answer() == here.answer(), (point, m, here)
+    twists = m.twists.xreplace(point)
+    assert twists.rank == here.twists.rank == (twists | here.twists).rank, (point, twists)
+
+
+def test_a_parallel_mechanism_is_decided_on_a_surface():
+    # the four-bar of test_graph's circle as a ParallelMechanism, B = (1, t**2 + u**2 - 2):
+    # folded on the circle (Gosselin & Angeles 1990), a case no substitution states.  The
+    # split goes on modulo it: the platform's twists by Cramer's rule on the proved minor
+    t, u = symbols("t u", real=True)
+    f = t**2 + u**2 - 2
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([1, f, 0], Z)),
+                           Limb(R([4, 0, 0], Z), R([3, 0, 0], Z)))
+    cases = pm.mobility_cases()
+    assert [(c, m.mobility, m.motion) for c, m in cases] == [(Ne(f, 0), 1, "1R"),
+                                                             (Eq(f, 0), 2, "1T1R")]
+    on = [{t: 1, u: 1}, {t: Rational(7, 5), u: Rational(1, 5)}, {t: sqrt(2), u: 0}]
+    for point in on:
+        assert_mobility_at(pm, cases[1][1], point)
+    assert_mobility_at(pm, cases[0][1], {t: 0, u: 0})
+    # the checker rejects a wrong answer: the generic case's figures on the circle
+    with pytest.raises(AssertionError):
+        assert_mobility_at(pm, cases[0][1], on[0])
+
+
+def test_a_helical_freedom_on_a_surface_keeps_its_pitch():
+    # two H-P limbs about the z axis, pitches 1 and t**2 + u**2 - 1: the helices agree on the
+    # circle t**2 + u**2 = 2, where the platform gains a screw motion of pitch 1 (Hunt 1978,
+    # Ch. 12: a helical freedom is no rotation); off it, the translation alone
+    from screwsym.systems.joints import Helical
+
+    t, u = symbols("t u", real=True)
+    f = t**2 + u**2 - 2
+    pm = ParallelMechanism(Limb(Helical([0, 0, 0], Z, 1), P([1, 0, 0])),
+                           Limb(Helical([0, 0, 0], Z, f + 1), P([1, 0, 0])))
+    cases = pm.mobility_cases()
+    assert [(c, m.motion, m.helical_pitches) for c, m in cases] == [
+        (Ne(f, 0), "1T", ()), (Eq(f, 0), "1T1H", (1,))]
+    for point in ({t: 1, u: 1}, {t: 0, u: sqrt(2)}):
+        assert_mobility_at(pm, cases[1][1], point)
+        assert pm.xreplace(point).mobility().helical_pitches == (1,)
