@@ -2137,6 +2137,8 @@ def _rank_on(rg: _Ring, f, seeds: int = 4, swap: bool = True) -> tuple | None:
     G = _ideal([f], RM)
     if G == [RM.ring.one]:
         return None  # pragma: no cover - f has points (it came with real ones)
+    if all(not e.rem(G) for b in B for e in b if e):  # every member zero there: rank 0
+        return 0, (), (), RM.one, G
     tried: set = set()
     for seed in range(seeds):
         rnd = random.Random(seed)

@@ -420,3 +420,17 @@ def test_a_helical_freedom_on_a_surface_keeps_its_pitch():
     for point in ({t: 1, u: 1}, {t: 0, u: sqrt(2)}):
         assert_mobility_at(pm, cases[1][1], point)
         assert pm.xreplace(point).mobility().helical_pitches == (1,)
+
+
+def test_pure_translations_on_a_surface_are_decided():
+    # two P-P limbs, the second's axis (0, 1, t**2 + u**2 - 2): in the plane of the first's
+    # exactly on the circle, where the platform translates in the plane (2T); off it along x
+    # alone.  No angular velocity at all on the circle (rank 0 proved modulo it)
+    t, u = symbols("t u", real=True)
+    f = t**2 + u**2 - 2
+    pm = ParallelMechanism(Limb(P([1, 0, 0]), P([0, 1, 0])), Limb(P([1, 0, 0]), P([0, 1, f])))
+    cases = pm.mobility_cases()
+    assert [(c, m.motion) for c, m in cases] == [(Ne(f, 0), "1T"), (Eq(f, 0), "2T")]
+    assert cases[1][1].translation_directions == Matrix([[1, 0], [0, 1], [0, 0]])
+    for point in ({t: 1, u: 1}, {t: sqrt(2), u: 0}):
+        assert_mobility_at(pm, cases[1][1], point)
