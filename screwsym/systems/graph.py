@@ -95,7 +95,14 @@ from ..core.decide import is_zero
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .joints import Joint, Parallelogram, Spherical, Universal
-from .mechanism import Degenerate, ParallelMechanism, _check_cases, _merge_cases, motion_of
+from .mechanism import (
+    Degenerate,
+    ParallelMechanism,
+    _check_cases,
+    _merge_cases,
+    _unmade_on_surface,
+    motion_of,
+)
 from .screw_system import (
     _TRIG_BACK,
     BUDGET,
@@ -1069,6 +1076,10 @@ def _polynomial_columns(block: Matrix, N: Matrix) -> tuple[Matrix, Matrix]:
     return block, N
 
 
+def _named_joints(mech: Mechanism) -> list[tuple[str, Joint]]:
+    return [(f"joints[{k}] ({a!r}, {b!r})", j) for k, (a, b, j) in enumerate(mech.joints)]
+
+
 def _unmade(mech: Mechanism, subs: dict) -> Degenerate | None:
     """The first joint that ``subs`` unmakes (its ``ValueError`` when built with those values),
     named as the graph knows it, ``joints[k] (link_a, link_b): ...``; ``None`` when all stand."""
@@ -1114,6 +1125,9 @@ def _mobility_cases(mech: Mechanism,
             if _contradicts(new, composed):
                 continue
             unmade = _unmade(mech, composed) if node.subs else None
+            if unmade is None and relation and relation != leaf.relation:  # a new surface
+                why = _unmade_on_surface(_named_joints(mech), composed, relation[0])
+                unmade = None if why is None else Degenerate(why)
             if unmade is not None:  # the case's values unmake a joint: nothing to analyse there
                 degenerate.append((And(*new), unmade))
                 continue

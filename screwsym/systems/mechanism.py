@@ -278,7 +278,9 @@ class Degenerate(NamedTuple):
     (a zero axis direction; the two axes of a universal joint made parallel),
     so no mechanism is there to analyse: this is a finding, reported in the
     place of a :class:`Mobility`.  ``reason`` is what the joint says (the
-    ``ValueError`` it raises when built with those values).
+    ``ValueError`` it raises when built with those values); on a case that no
+    substitution states (a surface ``f = 0``), where the joint cannot be
+    rebuilt, that its twists lose rank there.
 
     >>> from screwsym.systems.mechanism import Degenerate
     >>> Degenerate("limbs[0]: direction: a joint axis needs a non-zero direction").answer()
@@ -697,7 +699,12 @@ class ParallelMechanism(ScrewsymBasic):
                 except ValueError as error:  # the case's values unmake a joint of this limb
                     degenerate.append((And(*leaf.conds), Degenerate(f"limbs[{i}]: {error}")))
                     continue
-                grown.extend(_refine(leaf, limb.twists, max_cases))
+                for case in _refine(leaf, limb.twists, max_cases):
+                    unmade = _surface_unmade(self, leaf, case)
+                    if unmade is not None:  # a joint unmade on the case's surface
+                        degenerate.append((And(*case.conds), Degenerate(unmade)))
+                    else:
+                        grown.append(case)
             leaves = grown
             _check_cases(len(leaves), max_cases)
         for leaf in leaves:
@@ -719,6 +726,10 @@ class ParallelMechanism(ScrewsymBasic):
                 if case.subs is None:
                     out.append((condition, None))
                     continue
+                unmade = _surface_unmade(self, leaf, case)
+                if unmade is not None:  # a joint unmade on the case's surface
+                    degenerate.append((condition, Degenerate(unmade)))
+                    continue
                 try:
                     here = _substitute(self, case.subs) if case.subs else self
                 except ValueError as error:  # the constraints' case unmakes a joint
@@ -729,6 +740,30 @@ class ParallelMechanism(ScrewsymBasic):
                             else _mobility(here)))
                 _check_cases(len(out), max_cases)
         return out + degenerate
+
+
+def _unmade_on_surface(joints: Any, subs: dict[Any, Any], fe: Any) -> str | None:
+    """Why the first of ``joints`` (``(name, joint)`` pairs) is unmade on a case on ``fe = 0``.
+
+    A case that no substitution states cannot rebuild the joints there; a
+    joint is unmade where its own twists lose rank (a zero axis, a universal
+    joint's axes made parallel, a parallelogram folded flat: what its
+    constructor refuses), here at the generic point of the surface, proved
+    modulo ``fe``.  None when every joint keeps its freedoms there.
+    """
+    for name, joint in joints:
+        here = _substitute(joint, subs) if subs else joint
+        T = ImmutableMatrix.hstack(*(t.matrix for t in here._twists()))
+        rank = _rank_on_surface(T, fe)
+        if rank is not None and rank < joint.freedom:
+            return (f"{name}: its {joint.freedom} twist(s) have rank {rank} where {fe} = 0 "
+                    "(a zero axis, or axes made parallel)")
+    return None
+
+
+def _limb_joints(mech: ParallelMechanism) -> list[tuple[str, Joint]]:
+    return [(f"limbs[{i}]: joints[{k}]", j) for i, limb in enumerate(mech.args)
+            for k, j in enumerate(limb.joints)]
 
 
 def _which_limb(mech: ParallelMechanism, subs: dict[Any, Any], error: ValueError) -> str:
@@ -826,6 +861,13 @@ def _refine(leaf: _Leaf, system: ScrewSystem, limit: int) -> list[_Leaf]:
         relation = node.relation if node.relation or node.subs else leaf.relation
         out.append(_Leaf(new_conds, composed, relation, leaf.nodes + (node,)))
     return out
+
+
+def _surface_unmade(mech: ParallelMechanism, leaf: _Leaf, case: _Leaf) -> str | None:
+    """Why ``case`` unmakes a joint of ``mech`` where it brings a new surface; else None."""
+    if not case.relation or case.relation == leaf.relation or case.subs is None:
+        return None
+    return _unmade_on_surface(_limb_joints(mech), case.subs, case.relation[0])
 
 
 def _surface_constraints(leaf: _Leaf) -> ScrewSystem:

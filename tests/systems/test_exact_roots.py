@@ -434,3 +434,26 @@ def test_pure_translations_on_a_surface_are_decided():
     assert cases[1][1].translation_directions == Matrix([[1, 0], [0, 1], [0, 0]])
     for point in ({t: 1, u: 1}, {t: sqrt(2), u: 0}):
         assert_mobility_at(pm, cases[1][1], point)
+
+
+def test_a_joint_unmade_on_a_surface_is_reported():
+    # an R axis (0, 0, t**2 + u**2 - 2) vanishes on the circle, and a universal joint's axes
+    # (1, 0, 0), (1, t**2 + u**2 - 2, 0) become parallel there: no substitution states the
+    # case, so the joints cannot be rebuilt; their twists lose rank on it instead
+    t, u = symbols("t u", real=True)
+    f = t**2 + u**2 - 2
+    on = {t: 1, u: 1}
+    zero_axis = ParallelMechanism(Limb(R([0, 0, 0], [0, 0, f]), R([1, 2, 0], Z)),
+                                  Limb(R([4, 0, 0], Z), R([3, 3, 0], Z)))
+    parallel = ParallelMechanism(Limb(U([0, 0, 0], [1, 0, 0], [1, f, 0]), P(Z), S([0, 0, 1])),
+                                 Limb(S([2, 0, 0]), S([1, 1, 1])))
+    for pm, where in ((zero_axis, "limbs[0]: joints[0]: its 1 twist(s) have rank 0"),
+                      (parallel, "limbs[0]: joints[0]: its 2 twist(s) have rank 1")):
+        cases = pm.mobility_cases()
+        assert cases[0][0] == Ne(f, 0) and not isinstance(cases[0][1], Degenerate)
+        (cond, found), = [(c, m) for c, m in cases if isinstance(m, Degenerate)]
+        assert cond == Eq(f, 0) and found.reason.startswith(where)
+        # independently: the joint's constructor refuses it at a point of the circle
+        with pytest.raises(ValueError):
+            pm.xreplace(on)
+        assert_cases_at(pm, cases, [on, {t: 0, u: 0}])

@@ -749,6 +749,24 @@ def test_mobility_cases_decides_a_case_that_no_substitution_states():
         assert_case_at(mech, m._replace(common=(ScrewSystem(*m.common[0].screws[:3]),)), on[0])
 
 
+def test_mobility_cases_reports_a_joint_unmade_on_a_surface():
+    # the first axis (0, 0, t**2 + u**2 - 2) vanishes on the circle: a degenerate joint on a
+    # case that no substitution states, found by its twist losing rank there
+    from sympy import Eq, Ne
+
+    t, u = symbols("t u", real=True)
+    f = t**2 + u**2 - 2
+    mech = four_r([[0, 0, 0], [1, 2, 0], [3, 3, 0], [4, 0, 0]], [[0, 0, f]] + [Z] * 3)
+    cases = mech.mobility_cases()
+    assert [c for c, _ in cases] == [Ne(f, 0), Eq(f, 0)]
+    assert cases[1][1] == Degenerate(
+        "joints[0] ('ground', 'crank'): its 1 twist(s) have rank 0 where t**2 + u**2 - 2 = 0 "
+        "(a zero axis, or axes made parallel)")
+    with pytest.raises(ValueError, match="non-zero direction"):  # the joint refuses it there
+        mech.xreplace({t: 1, u: 1})
+    assert_case_at(mech, cases[0][1], {t: 0, u: 0})
+
+
 def test_mobility_cases_decides_where_two_curves_meet():
     # B = (1, t**2 + u**2 - 2), C = (3, t**3 + u**2 - 2): O, B, C are in one line on a
     # cubic curve (the loop keeps its order 3 there), and all four pivots where it meets
