@@ -834,7 +834,9 @@ class Mechanism(ScrewsymBasic):
 
         With ``merge=True`` (the default) cases with the same answer
         (:meth:`MechanismMobility.answer`) are given as one, whose condition is
-        the ``Or`` of theirs, in the place of the first, with the first case's
+        the ``Or`` of theirs (or, where that is shorter and made of
+        inequalities alone, the negation of the other cases': the cases hold
+        one at each point), in the place of the first, with the first case's
         :class:`MechanismMobility`; ``merge=False`` gives each case with its own.
 
         Examples

@@ -55,7 +55,22 @@ import operator
 import sys
 from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar, cast
 
-from sympy import And, Basic, Eq, ImmutableMatrix, Ne, Not, Or, Tuple, cancel, cos, false, sin, true
+from sympy import (
+    And,
+    Basic,
+    Eq,
+    ImmutableMatrix,
+    Ne,
+    Not,
+    Or,
+    Tuple,
+    cancel,
+    cos,
+    count_ops,
+    false,
+    sin,
+    true,
+)
 from sympy.logic.boolalg import simplify_logic
 
 from ..core.basic import ScrewsymBasic
@@ -637,7 +652,9 @@ class ParallelMechanism(ScrewsymBasic):
         With ``merge=True`` (the default) cases with the same answer (the same
         mobility, order, common and redundant constraints, passive freedoms,
         classical count and motion type: :meth:`Mobility.answer`) are given as
-        one, whose condition is the ``Or`` of theirs, in the place of the first;
+        one, whose condition is the ``Or`` of theirs (or, where that is shorter
+        and made of inequalities alone, the negation of the other cases': the
+        cases hold one at each point), in the place of the first;
         its :class:`Mobility` is the first case's, so its ``twists`` (a basis
         of the platform's twists) are those of that case: ``merge=False`` gives
         each case with its own.
@@ -804,6 +821,7 @@ def _merge_cases(cases: list[tuple[Any, _A | None]]) -> list[tuple[Any, _A | Non
     """
     merged: list[tuple[Any, _A | None]] = []
     where: dict[tuple[Any, ...], int] = {}
+    joined: set[int] = set()
     for condition, m in cases:
         if m is None:
             merged.append((condition, None))
@@ -812,10 +830,34 @@ def _merge_cases(cases: list[tuple[Any, _A | None]]) -> list[tuple[Any, _A | Non
         if key in where:
             i = where[key]
             merged[i] = (_union(merged[i][0], condition), merged[i][1])
+            joined.add(i)
         else:
             where[key] = len(merged)
             merged.append((condition, m))
+    # the cases hold one at each point, so a merged case is where none of the others holds:
+    # written so where that is an open condition (inequalities alone) and shorter:
+    # Ne(sin(a), 0) | Ne(sin(b), 0) for a union of five conjunctions that say the same on
+    # the circles (a case of equations keeps them: its roots, its points)
+    for i in joined:
+        others = [c for j, (c, _) in enumerate(merged) if j != i]
+        if not others:
+            merged[i] = (true, merged[i][1])
+            continue
+        alt = _complement(others)
+        if alt is not None and not alt.atoms(Eq) and count_ops(alt) < count_ops(merged[i][0]):
+            merged[i] = (alt, merged[i][1])
     return merged
+
+
+def _complement(conditions: list) -> Any:
+    """Where none of ``conditions`` holds, in few terms (None beyond 6 atoms: see ``_union``)."""
+    expr = And(*(Not(c) for c in conditions)).replace(lambda x: isinstance(x, Ne),
+                                                      lambda x: Not(Eq(*x.args)))
+    if len(expr.atoms(Eq)) > 6:
+        return None
+    expr = simplify_logic(expr, deep=False)
+    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
+                        lambda x: Ne(*x.args[0].args))
 
 
 def _check_cases(count: int, limit: int) -> None:

@@ -276,6 +276,27 @@ def test_two_angles_a_curve_no_substitution_states_is_decided_on_itself():
     assert mech.xreplace({a: 0, b: 0}).mobility().mobility == 2
 
 
+def test_a_merged_case_is_written_as_where_no_other_holds():
+    # the same four-bar as a ParallelMechanism: its generic case merges five conjunctions
+    # (sin(a) = +-1, or sin(a), cos(a) non-zero, ...) that say, on the circles, "not both
+    # sines zero"; the cases hold one at each point, so it is written as that complement
+    a, b = symbols("a b", real=True)
+    pm = ParallelMechanism(Limb(R([0, 0, 0], Z), R([cos(a), sin(a), 0], Z)),
+                           Limb(R([4, 0, 0], Z), R([4 + cos(b), sin(b), 0], Z)))
+    cases = pm.mobility_cases()
+    assert [(c, m.mobility) for c, m in cases] == [
+        (Ne(sin(a), 0) | Ne(sin(b), 0), 1), (Eq(sin(a), 0) & Eq(sin(b), 0), 2)]
+    points = circle_points([a, b], [{a: 0, b: pi}, {a: pi, b: 0}, {a: 0, b: 0},
+                                    {a: pi / 2, b: 0}, {a: -pi / 2, b: pi}])
+    assert_circle_cases(Mechanism.from_parallel(pm), points, pm)
+    # the unmerged split says the same at every point
+    unmerged = pm.mobility_cases(merge=False)
+    for point in points:
+        [m] = [m for c, m in unmerged if c.xreplace(point) is true]
+        [merged] = [mm for c, mm in cases if c.xreplace(point) is true]
+        assert m.answer() == merged.answer(), point
+
+
 def test_geometry_that_is_not_polynomial_in_sin_and_cos_is_refused():
     mech = four_r([[0, 0, 0], [tan(q), 1, 0], [3, 1, 0], [4, 0, 0]], [Z] * 4)
     with pytest.raises(ValueError, match="polynomial in sin and cos of symbols.*tan"):
