@@ -1748,17 +1748,22 @@ class _Cases(list):
         super().append(node)
 
 
-@lru_cache(maxsize=256)
-def _cases(M: ImmutableMatrix, limit: int = MAX_CASES) -> tuple[_Node, ...]:
+def _split(run: Any, limit: int) -> tuple[_Node, ...]:
+    """The cases that ``run(out)`` appends to ``out``: at most ``limit`` (a ValueError beyond)."""
     out = _Cases(limit)
     try:
-        _node(_normal(M), (), (), (), out)
+        run(out)
     except _TooManyCases:
         raise ValueError(
             f"rank_conditions: the case split of this system has more than {limit} cases; "
             "give some symbols values (xreplace) or pass a larger max_cases"
         ) from None
     return tuple(out)
+
+
+@lru_cache(maxsize=256)
+def _cases(M: ImmutableMatrix, limit: int = MAX_CASES) -> tuple[_Node, ...]:
+    return _split(lambda out: _node(_normal(M), (), (), (), out), limit)
 
 
 @lru_cache(maxsize=256)
@@ -2182,15 +2187,17 @@ def _ring_with(M: ImmutableMatrix, fe: Any) -> _Ring:
     return _Ring(rg.ring, rg.gens, rg.cols[:-1], rg.scales[:-1])
 
 
+def _proved_on(M: ImmutableMatrix, fe: Any, swap: bool = True) -> tuple[_Ring, tuple | None]:
+    """``M``'s ring (with ``fe``'s symbols) and the rank of its columns proved on ``fe = 0``
+    (``_rank_on``: ``(rank, rows, cols, minor, basis)``, or None)."""
+    rg = _ring_with(M, fe)
+    return rg, _rank_on(rg, _element(fe, rg.ring), swap=swap)
+
+
 def _on_surface(M, conds, subs, nonzero, fe, out: list) -> bool:
     """The cases of ``fe = 0`` proved modulo ``fe`` (see the section's comment); False: not done."""
-    rg = _ring_with(M, fe)
+    rg, found = _proved_on(M, fe)
     RM = rg.ring
-    try:
-        f = _element(fe, RM)
-    except Exception:  # pragma: no cover - fe has symbols the system has not
-        return False
-    found = _rank_on(rg, f)
     if found is None:
         return False
     rank, rows, cols, minor, G = found
@@ -2216,6 +2223,7 @@ def _on_surface(M, conds, subs, nonzero, fe, out: list) -> bool:
     return True
 
 
+@lru_cache(maxsize=256)
 def _surface_cases(M: ImmutableMatrix, fe: Any, limit: int = MAX_CASES) -> tuple[_Node, ...]:
     """The cases of ``M`` where ``fe = 0`` holds already: ``_cases`` for a system on a surface.
 
@@ -2227,18 +2235,14 @@ def _surface_cases(M: ImmutableMatrix, fe: Any, limit: int = MAX_CASES) -> tuple
     case of rank None where no point proves a rank.
     """
     M = _normal(M)
-    out = _Cases(limit)
-    try:
+
+    def run(out: list) -> None:
         if M.cols == 0:
             out.append(_Node(Eq(fe, 0), 0, (), M, relation=(fe,)))
         elif not _on_surface(M, (), (), (), fe, out):
             out.append(_Node(Eq(fe, 0), None, (), M))
-    except _TooManyCases:
-        raise ValueError(
-            f"rank_conditions: the case split of this system has more than {limit} cases; "
-            "give some symbols values (xreplace) or pass a larger max_cases"
-        ) from None
-    return tuple(out)
+
+    return _split(run, limit)
 
 
 def _rank_on_surface(M: ImmutableMatrix, fe: Any, swap: bool = True) -> int | None:
@@ -2246,12 +2250,7 @@ def _rank_on_surface(M: ImmutableMatrix, fe: Any, swap: bool = True) -> int | No
     where a minor found at a point of it is non-zero); None where no point proved it."""
     if M.cols == 0:
         return 0
-    rg = _ring_with(M, fe)
-    try:
-        f = _element(fe, rg.ring)
-    except Exception:  # pragma: no cover - fe has symbols the ring has not
-        return None
-    found = _rank_on(rg, f, swap=swap)
+    found = _proved_on(M, fe, swap)[1]
     return None if found is None else found[0]
 
 
@@ -2275,13 +2274,8 @@ def _null_on_surface(M: ImmutableMatrix, fe: Any) -> tuple | None:
     basis of the null space wherever ``fe = 0`` and the minor is non-zero.
     None where no point proved it.
     """
-    rg = _ring_with(M, fe)
+    rg, found = _proved_on(M, fe, swap=False)
     R = rg.ring
-    try:
-        f = _element(fe, R)
-    except Exception:  # pragma: no cover - fe has symbols the ring has not
-        return None
-    found = _rank_on(rg, f, swap=False)
     if found is None:
         return None
     rank, members, coords, minor, G = found
