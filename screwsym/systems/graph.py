@@ -109,7 +109,7 @@ from .screw_system import (
     MAX_CASES,
     ScrewSystem,
     _apply,
-    _basis_system,
+    _basis_with,
     _cases,
     _circle_normal,
     _coefficient,
@@ -126,6 +126,7 @@ from .screw_system import (
     _to_ring,
     _trig_entries,
     _vanishes,
+    _within,
     case_budget,
 )
 
@@ -752,7 +753,6 @@ class Mechanism(ScrewsymBasic):
         """
         net = _network(self)
         g = net.graph
-        F = net.A.cols
         orders, commons = [], []
         for loop in g.loops:
             T = ScrewSystem(*(Twist(t[:3], t[3:]) for e, _ in loop for t in net.twists[e]))
@@ -760,22 +760,7 @@ class Mechanism(ScrewsymBasic):
             commons.append(T.reciprocal())
         idle = _idle(net)
         assert idle is not None  # the generic null space is always found
-        n, J = len(g.links), len(g.edges)
-        return MechanismMobility(
-            mobility=F - net.rank,
-            freedoms=F,
-            loops=len(g.loops),
-            rank=net.rank,
-            orders=tuple(orders),
-            common=tuple(commons),
-            redundant=sum(orders) - net.rank,
-            idle=idle.cols,
-            idle_rates=ImmutableMatrix(idle),
-            rates=ImmutableMatrix(net.null),
-            classical=6 * (n - J - 1) + F,
-            links=n,
-            joints=J,
-        )
+        return _figures(net, tuple(orders), tuple(commons), net.null, idle)
 
     def mobility_cases(
         self, *, max_cases: int = MAX_CASES, budget: int = BUDGET, merge: bool = True
@@ -1008,13 +993,6 @@ class Mechanism(ScrewsymBasic):
 # ----------------------------------------------------------- case split
 
 
-def _compose(subs: dict, more: dict) -> dict:
-    """``subs`` then ``more`` (made in the already substituted system) as one substitution."""
-    composed = {k: cancel(_substitute(v, more)) for k, v in subs.items()}
-    composed.update(more)
-    return composed
-
-
 def _put(M: Matrix, subs: dict) -> Matrix:
     """``M`` with a case's substitution made (``sin(q)``, ``cos(q)`` reach ``sin(2 q)``)."""
     return Matrix(_apply(M, subs)) if subs else M
@@ -1085,11 +1063,11 @@ def _named_joints(mech: Mechanism) -> list[tuple[str, Joint]]:
 def _unmade(mech: Mechanism, subs: dict) -> Degenerate | None:
     """The first joint that ``subs`` unmakes (its ``ValueError`` when built with those values),
     named as the graph knows it, ``joints[k] (link_a, link_b): ...``; ``None`` when all stand."""
-    for k, (a, b, j) in enumerate(mech.joints):
+    for name, j in _named_joints(mech):
         try:
             _substitute(j, subs)
         except ValueError as error:
-            return Degenerate(f"joints[{k}] ({a!r}, {b!r}): {error}")
+            return Degenerate(f"{name}: {error}")
     return None
 
 
@@ -1120,10 +1098,8 @@ def _mobility_cases(mech: Mechanism,
             if node.rank is None:  # undecided
                 found.append((_Leaf(new, None, (), (), None), node))
                 continue
-            subs = cast("dict", leaf.subs)  # split is called on decided leaves only
-            composed = _compose(subs, dict(node.subs)) if node.subs else subs
-            # a substitution made on the surface states it (fe imposed after the minor's factor)
-            relation = node.relation if node.relation or node.subs else leaf.relation
+            # split is called on decided leaves only
+            composed, relation = _within(cast("dict", leaf.subs), leaf.relation, node)
             if _contradicts(new, composed):
                 continue
             unmade = _unmade(mech, composed) if node.subs else None
@@ -1206,7 +1182,6 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
     """
     fe = leaf.relation[0]
     net = _bare_network(mech)
-    g = net.graph
     N = cast(Matrix, leaf.rates)
     N = Matrix.hstack(*(Matrix(_clean(list(N.col(k)))) for k in range(N.cols))) if N.cols \
         else N
@@ -1220,16 +1195,22 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
     idle = _idle(net, N, nullspace)
     if idle is None:  # pragma: no cover - no point of the surface proved the idle rates
         return None
-    orders = tuple(node.rank for node in leaf.orders)
     # each basis by Cramer's rule on the minor that proved its loop's order (non-zero on
     # the case), written with the case's substitution (a later case's may set more symbols)
-    common = tuple(_substitute(_basis_system(node, Wrench), subs) if (subs := leaf.subs)
-                   else _basis_system(node, Wrench) for node in leaf.orders)
+    return _figures(net, tuple(node.rank for node in leaf.orders),
+                    tuple(_basis_with(node, Wrench, leaf.subs) for node in leaf.orders), N, idle)
+
+
+def _figures(net: _Network, orders: tuple, common: tuple, rates: Matrix,
+             idle: Matrix) -> MechanismMobility:
+    """The figures of :class:`MechanismMobility` from each loop's order and common
+    constraints, the joint rates allowed and the idle ones."""
+    g = net.graph
     F = net.A.cols
-    rank = F - N.cols
+    rank = F - rates.cols
     n, J = len(g.links), len(g.edges)
     return MechanismMobility(
-        mobility=N.cols,
+        mobility=rates.cols,
         freedoms=F,
         loops=len(g.loops),
         rank=rank,
@@ -1238,7 +1219,7 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
         redundant=sum(orders) - rank,
         idle=idle.cols,
         idle_rates=ImmutableMatrix(idle),
-        rates=ImmutableMatrix(N),
+        rates=ImmutableMatrix(rates),
         classical=6 * (n - J - 1) + F,
         links=n,
         joints=J,

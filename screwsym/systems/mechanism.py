@@ -86,6 +86,7 @@ from .screw_system import (
     ScrewSystem,
     _analysis,
     _basis_system,
+    _basis_with,
     _cases,
     _circle_simplify,
     _null_on_surface,
@@ -93,6 +94,7 @@ from .screw_system import (
     _rank_on_surface,
     _substitute,
     _surface_cases,
+    _within,
     _zero_on_surface,
     case_budget,
 )
@@ -436,7 +438,7 @@ def _motion_on_surface(twists: ScrewSystem, fe: Any) -> MotionType | None:
     if rotations:
         X = T
         C = (moves.T * X[:3, :]).applyfunc(cancel) if moves.cols else None
-        if C is not None and not all(_zero_on_surface(e, fe) for e in C):
+        if C is not None and not _zero_on_surface(list(C), fe):
             # the twists whose omega is orthogonal to every translation (see _helical_pitches)
             kept = _null_on_surface(ImmutableMatrix(C), fe)
             if kept is None:  # pragma: no cover - no point of the surface proved the rank
@@ -448,7 +450,7 @@ def _motion_on_surface(twists: ScrewSystem, fe: Any) -> MotionType | None:
         X = X.extract(list(range(6)), list(spin[1]))  # one twist per rotation, modulo moves
         if X.cols == 1:
             pitch = cancel(X[:3, 0].dot(X[3:, 0]) / X[:3, 0].dot(X[:3, 0]))
-            pitches = () if _zero_on_surface(pitch, fe) else (pitch,)
+            pitches = () if _zero_on_surface([pitch], fe) else (pitch,)
         elif X.cols:
             pitches = None
     return MotionType(
@@ -895,12 +897,7 @@ def _refine(leaf: _Leaf, system: ScrewSystem, limit: int) -> list[_Leaf]:
         if node.rank is None:  # undecided
             out.append(_Leaf(new_conds, None, (), ()))
             continue
-        composed = subs
-        if node.subs:
-            composed = {k: cancel(_substitute(v, dict(node.subs))) for k, v in subs.items()}
-            composed.update(dict(node.subs))
-        # a substitution made on the surface states it (fe imposed after the minor's factor)
-        relation = node.relation if node.relation or node.subs else leaf.relation
+        composed, relation = _within(subs, leaf.relation, node)
         out.append(_Leaf(new_conds, composed, relation, leaf.nodes + (node,)))
     return out
 
@@ -916,11 +913,8 @@ def _surface_constraints(leaf: _Leaf) -> ScrewSystem:
     """The union of the limbs' constraints on a case on a surface, each by Cramer's rule on
     the minor that proved its limb's rank there (non-zero on the case), with the case's
     substitution made (a later limb's case may set more symbols)."""
-    wrenches: list = []
-    for node in leaf.nodes:
-        basis = _basis_system(node, Wrench)
-        wrenches.extend(_substitute(basis, leaf.subs) if leaf.subs else basis)
-    return ScrewSystem(*wrenches, kind=Wrench)
+    return ScrewSystem(*(w for node in leaf.nodes for w in _basis_with(node, Wrench, leaf.subs)),
+                       kind=Wrench)
 
 
 def _mobility(mech: ParallelMechanism) -> Mobility:

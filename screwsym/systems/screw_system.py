@@ -1539,10 +1539,8 @@ def _meeting(f, h_expr: Any, subs: tuple, R) -> Any:
     whose basis may take minutes: see the section on surfaces), a Bezout bound
     over ``_MEETING``, or no such polynomial.
     """
-    if subs:
-        h_expr = cancel(_substitute(h_expr, subs))
     try:
-        h = _reduce(_element(h_expr, R), R)
+        h = _reduce(_element(_in_case(h_expr, subs), R), R)
     except Exception:  # h has symbols (or a form) the ring of f has not
         return None
     if not h or _dimension([f, h], R) > 2 or _total_degree(f) * _total_degree(h) > _MEETING:
@@ -1870,14 +1868,32 @@ def _node(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, out: li
         _impose(M, conds + tuple(Ne(g, 0) for g in earlier), subs, nonzero + earlier, [f], out)
 
 
+def _in_case(expr: Any, subs: tuple) -> Any:
+    """An equation written before a case's substitution ``subs``, in the case's symbols."""
+    return cancel(_substitute(expr, subs)) if subs else expr
+
+
+def _within(subs: dict, relation: tuple, node: _Node) -> tuple[dict, tuple]:
+    """The substitution and the relation of the case ``node`` found inside an earlier case
+    (``subs``, ``relation``): ``subs`` then the node's own (made in the already substituted
+    system) as one substitution; the node's relation if it has one, none if its
+    substitution states the earlier surface (``fe`` imposed after a minor's factor), else
+    the earlier one."""
+    if not node.subs:
+        return subs, node.relation or relation
+    more = dict(node.subs)
+    composed = {k: cancel(_substitute(v, more)) for k, v in subs.items()}
+    composed.update(more)
+    return composed, node.relation
+
+
 def _impose(M, conds, subs, nonzero, pending: list, out: list) -> None:
     """Impose the equations ``pending`` (each ``= 0``) by substitution, then analyse."""
     if not pending:
         _node(M, conds, subs, nonzero, out)
         return
     expr, rest = pending[0], pending[1:]
-    if subs:
-        expr = cancel(_substitute(expr, subs))
+    expr = _in_case(expr, subs)
     # the equation as a polynomial in the remaining symbols, through the same ring
     rg = _to_ring(ImmutableMatrix([expr, 0, 0, 0, 0, 0]))
     p = rg.cols[0][0]
@@ -1914,8 +1930,7 @@ def _solve(M, conds, subs, nonzero, f, fe, R, rest: list, out: list) -> None:
                     _impose(M, conds, subs, nonzero, [_poly_expr(meet, R), fe] + rest, out)
                 return
         if points is None:  # not decided here: listed with rank None, every equation stated
-            later = tuple(Eq(e, 0) for e in (cancel(_substitute(r, subs)) if subs else r
-                                              for r in rest) if e != 0)
+            later = tuple(Eq(e, 0) for e in (_in_case(r, subs) for r in rest) if e != 0)
             out.append(_Node(_condition(conds + (Eq(fe, 0),) + later), None, subs, M))
             return
         for pairs, condition in points:
@@ -2146,12 +2161,10 @@ def _rank_on(rg: _Ring, f, seeds: int = 4, swap: bool = True) -> tuple | None:
     """
     RM = rg.ring
     B = [_swap(c) for c in rg.cols] if swap else [tuple(c) for c in rg.cols]
-    if not B:
-        return 0, (), (), RM.one, _ideal([f], RM)
     G = _ideal([f], RM)
     if G == [RM.ring.one]:
         return None  # pragma: no cover - f has points (it came with real ones)
-    if all(not e.rem(G) for b in B for e in b if e):  # every member zero there: rank 0
+    if all(not e.rem(G) for b in B for e in b if e):  # every member (or none) zero there
         return 0, (), (), RM.one, G
     tried: set = set()
     for seed in range(seeds):
@@ -2254,13 +2267,15 @@ def _rank_on_surface(M: ImmutableMatrix, fe: Any, swap: bool = True) -> int | No
     return None if found is None else found[0]
 
 
-def _zero_on_surface(e: Any, fe: Any) -> bool:
-    """Whether the polynomial (or rational function) ``e`` vanishes wherever ``fe = 0``
-    (where it is defined): its numerator is in the ideal of ``fe`` and the circles."""
-    num = fraction(cancel(e))[0]
-    rg = _ring_with(ImmutableMatrix([[num]]), fe)
+def _zero_on_surface(entries: list, fe: Any) -> bool:
+    """Whether every polynomial (or rational function) of ``entries`` vanishes wherever
+    ``fe = 0`` (where it is defined): each numerator is in the ideal of ``fe`` and the
+    circles (one ring, one Groebner basis for all)."""
+    nums = [fraction(cancel(e))[0] for e in entries]
+    rg = _ring_with(ImmutableMatrix(len(nums), 1, nums), fe)
     R = rg.ring
-    return not rg.cols[0][0].rem(_ideal([_element(fe, R)], R))
+    G = _ideal([_element(fe, R)], R)
+    return all(not e.rem(G) for e in rg.cols[0])
 
 
 def _null_on_surface(M: ImmutableMatrix, fe: Any) -> tuple | None:
@@ -2301,6 +2316,13 @@ def _null_on_surface(M: ImmutableMatrix, fe: Any) -> tuple | None:
 def _reciprocal_of(M: ImmutableMatrix, kind: type[Screw]) -> ScrewSystem:
     """The generic reciprocal basis of the system ``M`` (``reciprocal``), computed once."""
     return _basis_system(_top(M), kind)
+
+
+def _basis_with(node: _Node, kind: type[Screw], subs: dict | None) -> ScrewSystem:
+    """The reciprocal basis of a case (``_basis_system``) with a later case's substitution
+    made: valid wherever that later case holds, inside the node's."""
+    basis = _basis_system(node, kind)
+    return _substitute(basis, subs) if subs else basis
 
 
 def _basis_system(node: _Node, kind: type[Screw]) -> ScrewSystem:
