@@ -79,7 +79,7 @@ def _symbolic_case(name: str, queue) -> None:
     if name == "rps_pose":
         mech = three_rps_pose(*symbols("p q z", real=True))
     elif name == "rps_heights":
-        from screwsym.systems.mechanism import Limb, ParallelMechanism
+        from screwsym.systems.parallel import Limb, ParallelMechanism
 
         hs = symbols("h1:4", real=True)
         mech = ParallelMechanism(*(Limb(*rps_leg(i, Rational(-1, 2), h).joints, actuated=1)

@@ -27,18 +27,15 @@ import numpy as np
 from bench_systems import best as _best  # the script beside this one
 from sympy import Matrix, Rational
 
-from screwsym.systems import graph as _graph
-from screwsym.systems import screw_system as _system
-from screwsym.systems.graph import Mechanism
+from screwsym.systems._rank_cases import clear_caches
 from screwsym.systems.joints import R
+from screwsym.systems.linkage import Mechanism
 
 Q = Rational
 
 
 def clear() -> None:
-    for f in (_system._analysis, _system._cases, _system._top, _system._to_ring_cached,
-              _graph._network):
-        f.cache_clear()
+    clear_caches()
 
 
 def best(fn, repeat: int) -> tuple[float, object]:

@@ -213,14 +213,13 @@ def mobility_rows() -> None:
     sys.path.insert(0, str(HERE))
     from bench_systems import many_rps  # the 3-RPS of bench_systems, the script beside this one
 
-    from screwsym.systems import screw_system as _system
+    from screwsym.systems._rank_cases import clear_caches
 
     print("\n| 3-RPS, symbolic parameters | mobility() (s) | mobility_cases() (s) | cases |")
     print("|---|---|---|---|")
     for n in (9, 12):
         mech, _ = many_rps(n)
-        for f in (_system._analysis, _system._cases, _system._top):
-            f.cache_clear()
+        clear_caches()
         t1, m = timed(mech.mobility)
         t2, cases = timed(mech.mobility_cases)
         print(f"| {n} | {t1:.2f} (mobility {m.mobility}) | {t2:.2f} | {len(cases)} |")

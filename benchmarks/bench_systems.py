@@ -39,16 +39,15 @@ from sympy import Rational, sqrt, symbols
 
 from screwsym import ScrewSystem, Twist, vector
 from screwsym.numeric.mobility import mobility_map
-from screwsym.systems import screw_system as _system
+from screwsym.systems._rank_cases import clear_caches
 from screwsym.systems.joints import P, R, S
-from screwsym.systems.mechanism import Limb, ParallelMechanism
+from screwsym.systems.parallel import Limb, ParallelMechanism
 
 E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
 
 
 def clear() -> None:
-    for f in (_system._analysis, _system._cases, _system._top, _system._reciprocal_of):
-        f.cache_clear()
+    clear_caches()
 
 
 def best(fn, repeat: int, clear=clear) -> tuple[float, object]:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from sympy import Matrix, Rational, cancel, cos, eye, sin, sqrt, sympify
 
 from screwsym.systems.joints import P, R, S
-from screwsym.systems.mechanism import Limb, ParallelMechanism
+from screwsym.systems.parallel import Limb, ParallelMechanism
 
 Z = [0, 0, 1]
 #: unit radial directions at 0, 120 and 240 degrees

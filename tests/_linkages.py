@@ -15,7 +15,6 @@ import numpy as np
 from sympy import Matrix, expand
 from sympy import Rational as Q
 
-from screwsym.systems.graph import Mechanism
 from screwsym.systems.joints import (
     Cylindrical,
     Helical,
@@ -26,6 +25,7 @@ from screwsym.systems.joints import (
     Spherical,
     Universal,
 )
+from screwsym.systems.linkage import Mechanism
 
 Z = [0, 0, 1]
 

@@ -435,7 +435,7 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
 
 
 # --------------------------------------------------------------------------
-# Screw systems and mechanisms (screwsym.systems.screw_system, screwsym.systems.mechanism,
+# Screw systems and mechanisms (screwsym.systems.screw_system, screwsym.systems.parallel,
 # screwsym.numeric.mobility)
 # --------------------------------------------------------------------------
 

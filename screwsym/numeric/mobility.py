@@ -1,12 +1,12 @@
 r"""The mobility analysis at many configurations at once, in floating point.
 
-:func:`mobility_map` turns a :class:`~screwsym.systems.mechanism.ParallelMechanism`
+:func:`mobility_map` turns a :class:`~screwsym.systems.parallel.ParallelMechanism`
 whose joints depend on symbols into a vectorised function of arrays of those
 symbols' values: the joint twists of every limb are generated once with
 :func:`screwsym.lambdify`, and at each configuration the ranks come from a
 rank-revealing decomposition.  Use it to map where a mechanism meets a
 constraint singularity over a workspace grid; use the exact
-:meth:`~screwsym.systems.mechanism.ParallelMechanism.mobility_cases` to find the
+:meth:`~screwsym.systems.parallel.ParallelMechanism.mobility_cases` to find the
 conditions themselves.
 
 Rank, numerically
@@ -66,7 +66,7 @@ from sympy.matrices import MatrixBase
 from ..codegen import lambdify
 from ..core.checks import check_positive_float
 from ..core.formulas import SWAP
-from ..systems.mechanism import ParallelMechanism
+from ..systems.parallel import ParallelMechanism
 from ._chunks import batched, is_dask
 
 # UNDEFINED (below) is public too, documented in mobility_map; not in __all__ yet, as the
@@ -117,7 +117,7 @@ def mobility_map(
 
     >>> import numpy as np
     >>> from sympy import symbols
-    >>> from screwsym.systems.mechanism import ParallelMechanism, Limb
+    >>> from screwsym.systems.parallel import ParallelMechanism, Limb
     >>> from screwsym.systems.joints import R
     >>> from screwsym.numeric.mobility import mobility_map
     >>> bx, by = symbols("b_x b_y", real=True)

@@ -1,7 +1,7 @@
 r"""Transmission indices and Jacobians at many configurations at once, in floating point.
 
 :func:`transmission_map` turns the exact indices of
-:meth:`~screwsym.systems.mechanism.ParallelMechanism.transmission` (Wang, Wu &
+:meth:`~screwsym.systems.parallel.ParallelMechanism.transmission` (Wang, Wu &
 Liu 2010) of a mechanism whose geometry depends on symbols into one
 vectorised function of those symbols' values, generated once with
 :func:`screwsym.lambdify`; :func:`jacobian_map` does the same for
@@ -23,7 +23,7 @@ import numpy as np
 from sympy import Symbol
 
 from ..codegen import lambdify
-from ..systems.mechanism import ParallelMechanism
+from ..systems.parallel import ParallelMechanism
 from ._chunks import batched, is_dask
 
 __all__ = ["TransmissionMap", "transmission_map", "jacobian_map"]
@@ -72,7 +72,7 @@ def transmission_map(mech: ParallelMechanism, symbols: Any, *,
 
     >>> import numpy as np
     >>> from sympy import symbols
-    >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+    >>> from screwsym.systems.parallel import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> x, y = symbols("x y", real=True)
     >>> z, p = [0, 0, 1], [x, y, 0]
@@ -155,7 +155,7 @@ def jacobian_map(mech: ParallelMechanism, symbols: Any, *,
 
     >>> import numpy as np
     >>> from sympy import symbols
-    >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+    >>> from screwsym.systems.parallel import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> x, y = symbols("x y", real=True)
     >>> z, p = [0, 0, 1], [x, y, 0]

@@ -1,10 +1,9 @@
 r"""Screw systems, kinematic pairs, and the mobility of parallel mechanisms and of any linkage.
 
-Built on :mod:`screwsym.core` alone (Huang, Li & Ding, Chapters 2 and 5).  A
+Built on :mod:`screwsym.core` and :mod:`screwsym.algebra` alone (Huang, Li & Ding, Chapters 2 and 5).  A
 sibling of :mod:`screwsym.motion`: neither imports the other.
 """
 
-from .graph import Mechanism, MechanismMobility, SecondOrder, lie_bracket
 from .joints import (
     Cylindrical,
     Helical,
@@ -15,16 +14,11 @@ from .joints import (
     Spherical,
     Universal,
 )
-from .mechanism import (
-    Degenerate,
-    Limb,
-    Mobility,
-    MotionType,
-    ParallelMechanism,
-    motion_of,
-    motion_type,
-)
+from .linkage import Mechanism, MechanismMobility
+from .motion_type import MotionType, motion_of, motion_type
+from .parallel import Degenerate, Limb, Mobility, ParallelMechanism
 from .screw_system import ScrewSystem
+from .second_order import SecondOrder, lie_bracket
 
 __all__ = [
     "ScrewSystem",

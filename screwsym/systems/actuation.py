@@ -100,7 +100,7 @@ from .joints import (
 )
 from .screw_system import ScrewSystem
 
-#: a Limb and a ParallelMechanism (screwsym.systems.mechanism imports this module)
+#: a Limb and a ParallelMechanism (screwsym.systems.parallel imports this module)
 _Limb = Any
 _Mechanism = Any
 
@@ -209,7 +209,7 @@ def _primitive(entries: list[Any]) -> list[Any]:
 def limb_actuation_wrench(limb: _Limb, k: int) -> Wrench:
     """The actuation wrench of joint ``k`` of ``limb`` (the module docstring gives the choice).
 
-    >>> from screwsym.systems.mechanism import Limb
+    >>> from screwsym.systems.parallel import Limb
     >>> from screwsym.systems.joints import R, P, S
     >>> leg = Limb(R([2, 0, 0], [0, 1, 0]), P([-1, 0, 2]), S([1, 0, 2]), actuated=1)
     >>> limb_actuation_wrench(leg, 1)       # the force along the leg, through the sphere
@@ -271,7 +271,7 @@ def actuation_wrenches(mech: _Mechanism) -> tuple[Wrench, ...]:
     """The actuation wrench of each actuated joint, limb by limb, in the order of the indices.
 
     >>> from sympy import Rational
-    >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+    >>> from screwsym.systems.parallel import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> z = [0, 0, 1]
     >>> e = [Rational(3, 2), Rational(5, 2), 0]      # the end point
@@ -295,7 +295,7 @@ def jacobian(mech: _Mechanism) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     actuators and the constraints together number six.
 
     >>> from sympy import Rational
-    >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+    >>> from screwsym.systems.parallel import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> z = [0, 0, 1]
     >>> e = [Rational(3, 2), Rational(5, 2), 0]      # the end point
@@ -398,7 +398,7 @@ def mechanism_singularities(mech: _Mechanism) -> Singularities:
     at ``(x, y)`` (a P-P leg keeps the end link from spinning):
 
     >>> from sympy import symbols
-    >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+    >>> from screwsym.systems.parallel import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> x, y = symbols("x y", real=True)
     >>> z, p = [0, 0, 1], [x, y, 0]
@@ -532,7 +532,7 @@ def transmission(mech: _Mechanism) -> Transmission:
     at 45 degrees to them and at 90 degrees to each other.
 
     >>> from sympy import Rational
-    >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+    >>> from screwsym.systems.parallel import Limb, ParallelMechanism
     >>> from screwsym.systems.joints import R, P
     >>> z = [0, 0, 1]
     >>> e = [Rational(3, 2), Rational(5, 2), 0]      # the end point
@@ -657,7 +657,7 @@ def generic_limb_rank(limb: _Limb, seeds: tuple[int, ...] = (1, 2)) -> int:
     ``freedom - generic_limb_rank`` idle motions that persist at every
     configuration (a S-S leg spinning about its axis) are the passive ones.
 
-    >>> from screwsym.systems.mechanism import Limb
+    >>> from screwsym.systems.parallel import Limb
     >>> from screwsym.systems.joints import R, S
     >>> z = [0, 0, 1]
     >>> stretched = Limb(R([0, 0, 0], z), R([1, 0, 0], z), R([2, 0, 0], z))

@@ -227,7 +227,7 @@ class Parallelogram(Joint):
     is the translation ``(0; n x (q1 - p1))``, and its displacement after the
     angle ``phi`` is the translation by ``(Rot(n, |n| phi) - I)(q1 - p1)``,
     whose second derivative at rest, ``n x (n x (q1 - p1))``, the second-order
-    analysis of :class:`~screwsym.systems.graph.Mechanism` uses.  The pair is
+    analysis of :class:`~screwsym.systems.linkage.Mechanism` uses.  The pair is
     the loop of :func:`Parallelogram.links` closed on itself (the tests show
     the same twist system both ways).
 
@@ -270,7 +270,7 @@ class Parallelogram(Joint):
 
     def links(self, a: Any = "a", b: Any = "b", rods: tuple[Any, Any] = ("rod1", "rod2")) -> list:
         """The same loop as ``(link_a, link_b, joint)`` triples of four revolutes, for
-        :class:`~screwsym.systems.graph.Mechanism`: ``a`` holds the input bar, ``b`` the output.
+        :class:`~screwsym.systems.linkage.Mechanism`: ``a`` holds the input bar, ``b`` the output.
 
         >>> from screwsym.systems.joints import Parallelogram
         >>> [(x, y) for x, y, _ in Parallelogram([0, 0, 0], [1, 0, 0], [0, 0, 2]).links()]

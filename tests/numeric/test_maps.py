@@ -14,7 +14,7 @@ from sympy import Rational, symbols
 
 from screwsym.numeric.mobility import mobility_map
 from screwsym.systems.joints import R, U
-from screwsym.systems.mechanism import Limb, ParallelMechanism
+from screwsym.systems.parallel import Limb, ParallelMechanism
 
 x, y, h = symbols("x y h", real=True)
 K = symbols("k", positive=True)

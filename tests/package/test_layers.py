@@ -119,14 +119,15 @@ def test_no_import_cycles():
 #: The floors (subpackages) and what each may import ("A -> B": A may import B).  ``top`` is
 #: the package's own modules (``__init__``, ``cli``, ``__main__``, ``_version``): the public face.
 LAYERS: dict[str, set[str]] = {
-    "core": set(),
-    "motion": {"core"},
-    "systems": {"core"},
+    "algebra": set(),  # the exact algebra: decisions over Q, number fields and the circle
+    "core": {"algebra"},
+    "motion": {"core", "algebra"},
+    "systems": {"core", "algebra"},
     "codegen": set(),
-    "numeric": {"codegen", "core", "systems", "motion"},  # motion: a Chain's dynamics as generated functions (numeric.dynamics, issue 21)
+    "numeric": {"codegen", "core", "systems", "motion", "algebra"},  # motion: a Chain's dynamics as generated functions (numeric.dynamics, issue 21)
     "plot": {"core", "numeric"},
     "book": {"top"},
-    "top": {"core", "motion", "systems", "codegen", "numeric", "plot", "book"},
+    "top": {"algebra", "core", "motion", "systems", "codegen", "numeric", "plot", "book"},
 }
 
 
@@ -219,7 +220,8 @@ def test_the_floors_keep_their_rules():
 def test_the_rules_are_the_documented_ones():
     # core imports nothing above it; codegen imports no screwsym object; motion and systems are
     # siblings; book and the command line go through the public face only
-    assert LAYERS["core"] == set() and LAYERS["codegen"] == set()
+    assert LAYERS["algebra"] == set() and LAYERS["codegen"] == set()
+    assert LAYERS["core"] == {"algebra"}
     assert "systems" not in LAYERS["motion"] and "motion" not in LAYERS["systems"]
     assert LAYERS["book"] == {"top"}
 
@@ -230,6 +232,8 @@ def test_the_rules_are_the_documented_ones():
         (("screwsym.core.screw", "screwsym.motion.transform", ["Transform"]), True),  # up a floor
         (("screwsym.codegen._plan", "screwsym.core.screw", ["Screw"]), True),  # codegen -> object
         (("screwsym.motion.chain", "screwsym.systems", ["ScrewSystem"]), True),  # sibling
+        (("screwsym.algebra.rings", "screwsym.core.screw", ["Screw"]), True),  # algebra is the floor
+        (("screwsym.systems.screw_system", "screwsym.algebra.rings", ["to_ring"]), False),
         (("screwsym.numeric.screws", "screwsym.codegen", ["_build"]), True),  # private name
         (("screwsym.numeric.screws", "screwsym.codegen._build", ["x"]), True),  # private module
         (("screwsym.cli", "screwsym.book._entry", ["as_text"]), True),  # private, from the top

@@ -20,7 +20,7 @@ from screwsym.systems.actuation import (
     transmission_index,
 )
 from screwsym.systems.joints import P, R, S, U
-from screwsym.systems.mechanism import Limb, ParallelMechanism
+from screwsym.systems.parallel import Limb, ParallelMechanism
 from tests._actuated import five_bar
 from tests._mechanisms import rps_leg
 

@@ -19,7 +19,7 @@ from sympy import And, Eq, Matrix, Ne, Or, Rational, sqrt, symbols, true
 
 from screwsym import ScrewSystem, Twist, Wrench
 from screwsym.systems.joints import P, R, S, U
-from screwsym.systems.mechanism import Degenerate, Limb, ParallelMechanism
+from screwsym.systems.parallel import Degenerate, Limb, ParallelMechanism
 
 
 def sub(a, b):
@@ -247,7 +247,7 @@ def test_pure_translations_agree_with_the_intersection():
     # definition: the intersection of its twist system with the three translations
     from _mechanisms import three_rps
 
-    from screwsym.systems.screw_system import _pure_translations
+    from screwsym.systems.motion_type import pure_translations
 
     r = symbols("r", real=True)
     rho = (r, Rational(-1, 2), Rational(-1, 2))
@@ -255,7 +255,7 @@ def test_pure_translations_agree_with_the_intersection():
     for mech in (three_rps(rho), three_rps()):
         T = mech.twists
         m = mech.mobility()
-        ours = _pure_translations(T.matrix, m.rotations)
+        ours = pure_translations(T.matrix, m.rotations)
         pure = T & ScrewSystem(*(Twist.translation(e) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])))
         theirs = pure.basis().matrix[3:, :]
         A, B = Matrix(ours.xreplace(at)), Matrix(theirs.xreplace(at))

@@ -32,9 +32,10 @@ from _mechanisms import O, four_bar, three_rps
 from sympy import Matrix, Rational, expand, symbols, true
 
 from screwsym import ScrewSystem, Twist
-from screwsym.systems.graph import Mechanism, lie_bracket
 from screwsym.systems.joints import P, Parallelogram, R, S, U
-from screwsym.systems.mechanism import Degenerate, Limb, ParallelMechanism
+from screwsym.systems.linkage import Mechanism
+from screwsym.systems.parallel import Degenerate, Limb, ParallelMechanism
+from screwsym.systems.second_order import lie_bracket
 
 
 def same_span(a: ScrewSystem, b: ScrewSystem) -> bool:

@@ -18,9 +18,9 @@ from _linkages import assert_case_at, four_r, planar
 from sympy import Eq, Matrix, Ne, Rational, cos, pi, sin, sqrt, symbols, tan, true
 
 from screwsym import Twist
-from screwsym.systems.graph import Mechanism
 from screwsym.systems.joints import R
-from screwsym.systems.mechanism import Limb, ParallelMechanism
+from screwsym.systems.linkage import Mechanism
+from screwsym.systems.parallel import Limb, ParallelMechanism
 
 Z = [0, 0, 1]
 q = symbols("q", real=True)

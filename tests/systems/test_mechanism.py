@@ -17,7 +17,8 @@ from sympy import Matrix, Rational, cancel, expand, sqrt, symbols, true
 from screwsym import ScrewSystem, reciprocal_product
 from screwsym.numeric.mobility import mobility_map
 from screwsym.systems.joints import C, H, P, R, S, U
-from screwsym.systems.mechanism import Limb, Mobility, ParallelMechanism, motion_type
+from screwsym.systems.motion_type import motion_type
+from screwsym.systems.parallel import Limb, Mobility, ParallelMechanism
 
 
 def sub(a, b):
@@ -424,7 +425,7 @@ def test_an_unconstrained_platform_has_twists():
     # platform's twist system (its reciprocal) holds twists
     from screwsym import Twist, Wrench
     from screwsym.systems.joints import Prismatic, S, U
-    from screwsym.systems.mechanism import Limb, ParallelMechanism
+    from screwsym.systems.parallel import Limb, ParallelMechanism
 
     legs = [Limb(U([k, 0, 0], [1, 0, 0], [0, 1, 0]), Prismatic([0, 0, 1]), S([k, 0, 1]))
             for k in range(6)]

@@ -12,9 +12,10 @@ from _linkages import ISOGRAM, bennett, cross, sub
 from sympy import Rational, symbols
 
 from screwsym import ScrewSystem, Twist
-from screwsym.systems.graph import Mechanism
 from screwsym.systems.joints import Cylindrical, Helical, Prismatic, Revolute
-from screwsym.systems.mechanism import Limb, ParallelMechanism, motion_of, motion_type
+from screwsym.systems.linkage import Mechanism
+from screwsym.systems.motion_type import motion_of, motion_type
+from screwsym.systems.parallel import Limb, ParallelMechanism
 
 Z = [0, 0, 1]
 

@@ -9,7 +9,7 @@ import pytest
 from sympy import Eq, Matrix, Ne, Rational, Symbol, cos, expand, sqrt, symbols, tan, true
 
 from screwsym import Screw, ScrewSystem, Twist, Wrench, reciprocal_product, vector
-from screwsym.systems.screw_system import _cases
+from screwsym.systems._rank_cases import rank_cases
 
 Z = [0, 0, 1]
 
@@ -244,7 +244,7 @@ def test_too_many_cases_raise():
     T = ScrewSystem(*(Twist.rotation(Z, point=p) for p in pts))
     with pytest.raises(ValueError, match="more than 1 cases"):
         T.rank_conditions(max_cases=1)
-    _cases.cache_clear()
+    rank_cases.cache_clear()
 
 
 # ---------------------------------------------------------------- objects
@@ -412,7 +412,7 @@ def _five_random_screws(tag: str):
 def test_the_case_split_takes_a_work_budget_and_names_it():
     # issue 20: rank_conditions() of five or six random screws in three symbols ran for
     # minutes with no limit; a budget (units of polynomial arithmetic) ends it with an error
-    from screwsym.systems.screw_system import BUDGET
+    from screwsym.algebra.budget import BUDGET
 
     assert BUDGET == 20_000_000
     with pytest.raises(ValueError, match=r"rank_conditions: the case split needs more work "

@@ -30,7 +30,7 @@ from sympy import (
 from screwsym import Chain, ScrewSystem, Twist
 from screwsym.motion.chain import ur5
 from screwsym.systems.joints import R
-from screwsym.systems.mechanism import Limb, ParallelMechanism
+from screwsym.systems.parallel import Limb, ParallelMechanism
 
 Z = [0, 0, 1]
 
@@ -160,13 +160,13 @@ def test_ur5_singularities_are_the_textbook_ones():
     # elbow singularity sin(theta3) = 0, the wrist singularity sin(theta5) = 0 (axes 4 and 6
     # parallel), and the shoulder singularity where the wrist centre meets the axis of
     # joint 1.  theta1 and theta6 do not enter (the space Jacobian turns rigidly with q1).
-    from screwsym.systems.screw_system import _here, _normal
+    from screwsym.systems._rank_cases import _here, trig_normal_matrix
 
     q = symbols("q1:7", real=True)
     J = ur5().jacobian([0, *q[1:5], 0])
     T = ScrewSystem(*(Twist.from_matrix(J[:, i]) for i in range(6)))
     assert T.rank == 6
-    node, factors = _here(_normal(T.matrix), (), (), ())  # the generic case, without the split
+    node, factors = _here(trig_normal_matrix(T.matrix), (), (), ())  # the generic case, without the split
     assert sin(q[2]) in factors and sin(q[4]) in factors and len(factors) == 3
     (shoulder,) = [f for f in factors if f not in (sin(q[2]), sin(q[4]))]
     assert node.condition == Ne(sin(q[2]), 0) & Ne(sin(q[4]), 0) & Ne(shoulder, 0)
@@ -202,9 +202,9 @@ def test_a_crank_four_bar_folds_at_zero_and_pi():
 def test_a_substitution_that_makes_an_assumed_factor_vanish_on_the_circle_contradicts_the_case():
     # x = 1 - sin(q)**2 makes the factor x - cos(q)**2, assumed non-zero by the case, zero on
     # the whole circle (not as an expression): the case has no point
-    from screwsym.systems.screw_system import _substitute_nonzero
+    from screwsym.systems._rank_cases import substitute_nonzero
 
     q, x = symbols("q x", real=True)
-    assert _substitute_nonzero((x - cos(q) ** 2,), ((x, 1 - sin(q) ** 2),)) is None
-    kept = _substitute_nonzero((x - cos(q),), ((x, 1 - sin(q) ** 2),))
+    assert substitute_nonzero((x - cos(q) ** 2,), ((x, 1 - sin(q) ** 2),)) is None
+    kept = substitute_nonzero((x - cos(q),), ((x, 1 - sin(q) ** 2),))
     assert kept is not None and len(kept) == 1

@@ -53,63 +53,42 @@ from __future__ import annotations
 
 import operator
 import sys
-from typing import TYPE_CHECKING, Any, NamedTuple, Protocol, SupportsIndex, TypeVar, cast
+from typing import TYPE_CHECKING, Any, NamedTuple, SupportsIndex, cast
 
 from sympy import (
     And,
     Basic,
-    Eq,
     ImmutableMatrix,
-    Ne,
-    Not,
-    Or,
     Tuple,
-    cancel,
-    cos,
-    count_ops,
     false,
-    sin,
     true,
 )
-from sympy.logic.boolalg import simplify_logic
 
+from ..algebra.budget import BUDGET, MAX_CASES
+from ..algebra.circle import trig_substitute
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from . import actuation as _actuation
+from ._cases import Answered, Leaf, check_cases, merge_cases, refine, unmade_on_surface
+from ._rank_cases import case_budget, rank_on_surface
 from .actuation import check_actuated, generic_limb_rank
 from .joints import Joint, check_joints
-from .screw_system import (
-    BUDGET,
-    MAX_CASES,
-    ScrewSystem,
-    _analysis,
-    _basis_system,
-    _basis_with,
-    _cases,
-    _circle_simplify,
-    _null_on_surface,
-    _pure_translations,
-    _rank_on_surface,
-    _substitute,
-    _surface_cases,
-    _within,
-    _zero_on_surface,
-    case_budget,
-)
+from .motion_type import MotionType, motion_of, motion_on_surface
+from .screw_system import ScrewSystem, basis_system, basis_with
 
 if TYPE_CHECKING:
     from typing_extensions import Self
 
-__all__ = ["Limb", "ParallelMechanism", "Mobility", "Degenerate", "MotionType", "motion_type",
-           "motion_of"]
+
+__all__ = ["Limb", "ParallelMechanism", "Mobility", "Degenerate"]
 
 
 class Limb(ScrewsymBasic):
     """A serial chain of joints from the base to the platform.
 
-    >>> from screwsym.systems.mechanism import Limb
+    >>> from screwsym.systems.parallel import Limb
     >>> from screwsym.systems.joints import R, P, S
     >>> leg = Limb(R([1, 0, 0], [0, 1, 0]), P([0, 0, 1]), S([1, 0, 1]))   # R-P-S
     >>> leg.freedom, leg.twists.rank
@@ -160,7 +139,7 @@ class Limb(ScrewsymBasic):
     def actuated(self) -> tuple[int, ...]:
         """The indices of the actuated joints (into :attr:`joints`); ``()`` if none.
 
-        >>> from screwsym.systems.mechanism import Limb
+        >>> from screwsym.systems.parallel import Limb
         >>> from screwsym.systems.joints import R, P, S
         >>> leg = Limb(R([1, 0, 0], [0, 1, 0]), P([0, 0, 1]), S([1, 0, 1]), actuated=1)
         >>> leg.actuated, leg.func(*leg.args) == leg
@@ -241,7 +220,7 @@ class Mobility(NamedTuple):
     def __repr__(self) -> str:
         """A short summary; every field stays an attribute (``m.twists``, ``m.links``, ...).
 
-        >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+        >>> from screwsym.systems.parallel import Limb, ParallelMechanism
         >>> from screwsym.systems.joints import R
         >>> z = [0, 0, 1]
         >>> ParallelMechanism(Limb(R([0, 0, 0], z), R([1, 2, 0], z)),
@@ -299,7 +278,7 @@ class Degenerate(NamedTuple):
     substitution states (a surface ``f = 0``), where the joint cannot be
     rebuilt, that its twists lose rank there.
 
-    >>> from screwsym.systems.mechanism import Degenerate
+    >>> from screwsym.systems.parallel import Degenerate
     >>> Degenerate("limbs[0]: direction: a joint axis needs a non-zero direction").answer()
     ('degenerate joint', 'limbs[0]: direction: a joint axis needs a non-zero direction')
     """
@@ -318,205 +297,6 @@ def _same(field: Any, value: Any) -> bool:
     return bool(field == value)
 
 
-def motion_type(rotations: int, translations: int, helical: int = 0) -> str:
-    """``"3T1R"``, ``"1T2R"``, ``"3T"``, ``"1R"``, ``"1H"``; ``"0"`` for a structure.
-
-    Translations first, then rotations, then helical freedoms, as the
-    literature writes them ("3T1R" for the Schoenflies motion).  ``helical``
-    counts those of the ``rotations`` (independent angular velocities) that are
-    helical: they cannot be made rotations (pitch 0) by adding translations of
-    the system (see :func:`motion_of`).
-
-    >>> motion_type(2, 1), motion_type(1, 3), motion_type(0, 3), motion_type(0, 0)
-    ('1T2R', '3T1R', '3T', '0')
-    >>> motion_type(1, 0, helical=1), motion_type(2, 0, helical=1)
-    ('1H', '1R1H')
-    """
-    for value, name in ((rotations, "rotations"), (translations, "translations"),
-                        (helical, "helical")):
-        if isinstance(value, bool) or not isinstance(value, int) or value < 0:
-            raise ValueError(f"{name}: expected a non-negative integer, got {value!r}")
-    if helical > rotations:
-        raise ValueError(f"helical: expected at most rotations = {rotations}, got {helical}")
-    pure = rotations - helical
-    text = "".join(f"{n}{x}" for n, x in ((translations, "T"), (pure, "R"), (helical, "H")) if n)
-    return text or "0"
-
-
-class MotionType(NamedTuple):
-    """What a twist system moves (:func:`motion_of`): counts, directions, helical pitches."""
-
-    motion: str | None  #: the label of :func:`motion_type`, e.g. "3T1R", "1H"; None: undecided
-    rotations: int  #: independent angular velocities (helical freedoms included)
-    translations: int  #: independent pure translations (twists with omega = 0)
-    helical_pitches: tuple | None  #: the pitch of each helical freedom; None: undecided
-    rotation_directions: ImmutableMatrix  #: 3 x rotations: independent angular velocities
-    translation_directions: ImmutableMatrix  #: 3 x translations: the pure translations
-
-
-def motion_of(twists: ScrewSystem) -> MotionType:
-    r"""The motion type of a twist system: translations, rotations and helical freedoms.
-
-    Explanation
-    ===========
-
-    ``rotations`` is the rank of the angular velocities ``omega`` of the
-    system's twists and ``translations`` the dimension of its pure
-    translations ``P`` (its twists with ``omega = 0``).  A rotational freedom
-    is *helical* when no translation of ``P`` turns it into a rotation
-    (pitch 0).  On the twists of the system whose ``omega`` is orthogonal to
-    every translation of ``P`` (the others become rotations by adding one),
-    the pitch form ``q(x) = omega . v`` is well defined modulo ``P``;
-    measured against ``omega . omega``, its eigenvalues are the principal
-    pitches of that part of the system (Hunt 1978, Ch. 12; Huang, Li & Ding
-    2013, §1.6).  If the form takes both signs, its zero-pitch twists
-    (rotations) span that part and there is no helical freedom; if it is
-    semidefinite of rank ``h``, ``h`` freedoms are helical, with the
-    non-zero principal pitches as ``helical_pitches``.  Generic in the
-    symbols, like the ranks.  With symbols and two or more such dimensions,
-    the sign of the form may depend on the symbols' values (it is not a
-    generic property: it can take either sign on open sets): where SymPy's
-    assumptions cannot decide the sign of a coefficient of its characteristic
-    polynomial, ``motion`` and ``helical_pitches`` are None ("cannot
-    decide"); the counts and directions are still given.  Substitute values
-    (or give the symbols assumptions) to decide.
-
-    Examples
-    ========
-
-    >>> from screwsym import ScrewSystem, Twist
-    >>> helix = Twist.screw_motion([0, 0, 1], point=[1, 0, 0], pitch=3)
-    >>> motion_of(ScrewSystem(helix)).motion, motion_of(ScrewSystem(helix)).helical_pitches
-    ('1H', (3,))
-    >>> moves = [Twist.translation(e) for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1])]
-    >>> motion_of(ScrewSystem(helix, *moves)).motion        # the helix splits: Schoenflies
-    '3T1R'
-    >>> motion_of(ScrewSystem(helix, moves[0])).motion      # a translation across the axis
-    '1T1H'
-    """
-    zeros = ImmutableMatrix.zeros(3, 0)
-    if not len(twists):
-        return MotionType(motion_type(0, 0), 0, 0, (), zeros, zeros)
-    omega = twists.matrix[:3, :]
-    spin = _analysis(ImmutableMatrix.vstack(omega, ImmutableMatrix.zeros(3, omega.cols)))
-    rotations = spin.rank
-    translations = twists.rank - rotations
-    # the pure translations the platform has: its twists with omega = 0 (generic, polynomial)
-    moves = _pure_translations(twists.matrix, rotations) if translations else zeros
-    pitches = _helical_pitches(twists, moves) if rotations else ()
-    return MotionType(
-        motion=None if pitches is None else motion_type(rotations, translations, len(pitches)),
-        rotations=rotations,
-        translations=translations,
-        helical_pitches=pitches,
-        rotation_directions=ImmutableMatrix(omega.extract([0, 1, 2], list(spin.pivots))),
-        translation_directions=ImmutableMatrix(moves),
-    )
-
-
-def _motion_on_surface(twists: ScrewSystem, fe: Any) -> MotionType | None:
-    """:func:`motion_of` at the generic point of the surface ``fe = 0``, for independent twists.
-
-    The ranks and null spaces of :func:`motion_of` proved modulo ``fe``
-    (``_null_on_surface``).  The helical test is made for one rotation left once
-    the translations are taken off (its pitch zero modulo ``fe`` or not); with
-    two or more, ``motion`` and ``helical_pitches`` are None (the sign of the
-    pitch form is not decided on a surface).  None where no point of the
-    surface proved a rank.
-    """
-    empty = ImmutableMatrix.zeros(3, 0)
-    if not len(twists):
-        return MotionType(motion_type(0, 0), 0, 0, (), empty, empty)
-    T = twists.matrix
-    omega = ImmutableMatrix(T[:3, :])
-    found = _null_on_surface(omega, fe)
-    if found is None:  # pragma: no cover - no point of the surface proved the rank
-        return None
-    rotations, members, null = found
-    moves = ImmutableMatrix(T[3:, :]) * null if null.cols else empty
-    pitches: tuple | None = ()
-    if rotations:
-        X = T
-        C = (moves.T * X[:3, :]).applyfunc(cancel) if moves.cols else None
-        if C is not None and not _zero_on_surface(list(C), fe):
-            # the twists whose omega is orthogonal to every translation (see _helical_pitches)
-            kept = _null_on_surface(ImmutableMatrix(C), fe)
-            if kept is None:  # pragma: no cover - no point of the surface proved the rank
-                return None
-            X = (X * kept[2]).applyfunc(cancel)
-        spin = _null_on_surface(ImmutableMatrix(X[:3, :]), fe)
-        if spin is None:  # pragma: no cover - no point of the surface proved the rank
-            return None
-        X = X.extract(list(range(6)), list(spin[1]))  # one twist per rotation, modulo moves
-        if X.cols == 1:
-            pitch = cancel(X[:3, 0].dot(X[3:, 0]) / X[:3, 0].dot(X[:3, 0]))
-            pitches = () if _zero_on_surface([pitch], fe) else (pitch,)
-        elif X.cols:
-            pitches = None
-    return MotionType(
-        motion=None if pitches is None else motion_type(rotations, T.cols - rotations,
-                                                        len(pitches)),
-        rotations=rotations,
-        translations=T.cols - rotations,
-        helical_pitches=pitches,
-        rotation_directions=ImmutableMatrix(omega.extract([0, 1, 2], list(members))),
-        translation_directions=ImmutableMatrix(moves),
-    )
-
-
-def _helical_pitches(twists: ScrewSystem, moves: ImmutableMatrix) -> tuple | None:
-    """The pitches of the helical freedoms of ``twists`` (translations ``moves``): see motion_of.
-
-    None where the sign of the pitch form cannot be decided.
-    """
-    from sympy import Dummy, Poly, roots
-    X = twists.matrix
-    C = (moves.T * X[:3, :]).applyfunc(cancel) if moves.cols else None
-    if C is not None and any(e != 0 for e in C):
-        # the twists whose omega is orthogonal to every translation (reciprocal to the
-        # couples along them: a twist (w; v) and a couple (0; d) have product w . d): the
-        # combinations X a of the system's twists with C a = 0, generic in the symbols as the
-        # ranks are (a small null space, not the reciprocal of a reciprocal system)
-        basis = C.nullspace(simplify=cancel)
-        if not basis:
-            return ()
-        X = ImmutableMatrix.hstack(*(X * v for v in basis)).applyfunc(cancel)
-    spin = _analysis(ImmutableMatrix.vstack(X[:3, :], ImmutableMatrix.zeros(3, X.cols)))
-    X = X.extract(list(range(6)), list(spin.pivots))  # one twist per rotation, modulo moves
-    k = X.cols
-    if k == 0:
-        return ()
-    W, V = X[:3, :], X[3:, :]
-    M = W.T * V
-    Q = ImmutableMatrix(k, k, lambda i, j: cancel((M[i, j] + M[j, i]) / 2))
-    G = ImmutableMatrix(k, k, lambda i, j: cancel(W.col(i).dot(W.col(j))))
-    h = _analysis(ImmutableMatrix.vstack(Q, ImmutableMatrix.zeros(6 - k, k))).rank
-    if h == 0:
-        return ()
-    if k == 1:
-        return (cancel(Q[0, 0] / G[0, 0]),)
-    lam = Dummy("lambda")
-    p = Poly(cancel((Q - lam * G).det(method="berkowitz")), lam)
-    p = Poly(p.as_expr() / lam ** (k - h), lam)  # the zero pitches are rotations
-    c = [cancel(x) for x in p.all_coeffs()]  # real-rooted: Q, G symmetric, G > 0
-    # p is real-rooted, so Descartes' rule of signs counts its positive roots exactly (zero
-    # coefficients skipped): the pitches are all of one sign (a semidefinite form) iff the
-    # coefficients of p(lam) or of p(-lam) do not change sign
-    # coefficients of undecided sign cannot undo a change between two of known sign
-    signs = [0 if x.is_zero else 1 if x.is_positive else -1 if x.is_negative else None
-             for x in c]
-    changes = [len({x for x in seq if x}) > 1 for seq in (
-        signs, [None if x is None else (-1) ** i * x for i, x in enumerate(signs)])]
-    if all(changes):  # indefinite: spanned by rotations
-        return ()
-    if None in signs:
-        return None  # the form's sign cannot be decided: see the docstring
-    found = roots(p, lam)
-    if sum(found.values()) < h and not p.free_symbols - {lam}:  # pragma: no cover - quintics
-        return tuple(p.all_roots())
-    return tuple(r for r, n in found.items() for _ in range(n))
-
-
 class ParallelMechanism(ScrewsymBasic):
     """A moving platform carried by limbs, each a serial chain from the base.
 
@@ -527,7 +307,7 @@ class ParallelMechanism(ScrewsymBasic):
     the base circle, every leg in the plane normal to its R axis.
 
     >>> from sympy import sqrt, Rational
-    >>> from screwsym.systems.mechanism import ParallelMechanism, Limb
+    >>> from screwsym.systems.parallel import ParallelMechanism, Limb
     >>> from screwsym.systems.joints import R, P, S
     >>> def leg(b, u, top):
     ...     d = [t - s for t, s in zip(top, b)]
@@ -582,7 +362,7 @@ class ParallelMechanism(ScrewsymBasic):
 
         Instantaneous: the first-order motions at the configuration given, which
         a finite motion need not have (a shaky linkage); for the second order,
-        write the mechanism as a graph (:meth:`screwsym.systems.graph.Mechanism.from_parallel`)
+        write the mechanism as a graph (:meth:`screwsym.systems.linkage.Mechanism.from_parallel`)
         and call its ``second_order()``.  See the module docstring for how ``common`` (lambda), ``redundant``
         (nu) and ``passive`` (zeta) come from the screw systems.
         """
@@ -665,7 +445,7 @@ class ParallelMechanism(ScrewsymBasic):
         ========
 
         >>> from sympy import symbols
-        >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+        >>> from screwsym.systems.parallel import Limb, ParallelMechanism
         >>> from screwsym.systems.joints import R
         >>> b = symbols("b", real=True)
         >>> z = [0, 0, 1]
@@ -699,46 +479,46 @@ class ParallelMechanism(ScrewsymBasic):
             cases = self._mobility_cases(max_cases)
         if not merge:
             return cases
-        # both kinds of result have an answer(): merged as _Answered, given back as they were
-        answered = cast("list[tuple[Any, _Answered | None]]", cases)
-        return cast("list[tuple[Any, Mobility | Degenerate | None]]", _merge_cases(answered))
+        # both kinds of result have an answer(): merged as Answered, given back as they were
+        answered = cast("list[tuple[Any, Answered | None]]", cases)
+        return cast("list[tuple[Any, Mobility | Degenerate | None]]", merge_cases(answered))
 
     def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | Degenerate | None]]:
-        leaves: list[_Leaf] = [_Leaf((), {}, (), ())]
+        leaves: list[Leaf] = [Leaf((), {}, (), ())]
         out: list[tuple[Any, Mobility | Degenerate | None]] = []
         degenerate: list[tuple[Any, Mobility | Degenerate | None]] = []  # listed last
         for i in range(len(self.args)):
-            grown: list[_Leaf] = []
+            grown: list[Leaf] = []
             for leaf in leaves:
                 if leaf.subs is None:
                     grown.append(leaf)
                     continue
                 try:
-                    limb = _substitute(self.args[i], leaf.subs) if leaf.subs else self.args[i]
+                    limb = trig_substitute(self.args[i], leaf.subs) if leaf.subs else self.args[i]
                 except ValueError as error:  # the case's values unmake a joint of this limb
                     degenerate.append((And(*leaf.conds), Degenerate(f"limbs[{i}]: {error}")))
                     continue
-                for case in _refine(leaf, limb.twists, max_cases):
+                for case in refine(leaf, limb.twists, max_cases):
                     unmade = _surface_unmade(self, leaf, case)
                     if unmade is not None:  # a joint unmade on the case's surface
                         degenerate.append((And(*case.conds), Degenerate(unmade)))
                     else:
                         grown.append(case)
             leaves = grown
-            _check_cases(len(leaves), max_cases)
+            check_cases(len(leaves), max_cases)
         for leaf in leaves:
             if leaf.subs is None:
                 out.append((And(*leaf.conds) if leaf.conds else true, None))
                 continue
             try:
-                mech = _substitute(self, leaf.subs) if leaf.subs else self
+                mech = trig_substitute(self, leaf.subs) if leaf.subs else self
             except ValueError as error:  # a later limb's case unmakes a joint of an earlier one
                 degenerate.append((And(*leaf.conds),
                                    Degenerate(_which_limb(self, leaf.subs, error))))
                 continue
             # on a surface, each limb's constraints are those its own case proved there
             W = _surface_constraints(leaf) if leaf.relation else mech.constraints
-            for case in _refine(leaf, W, max_cases):
+            for case in refine(leaf, W, max_cases):
                 condition = And(*case.conds) if case.conds else true
                 if condition is false:  # contradicts the limb's case: no point
                     continue
@@ -750,34 +530,15 @@ class ParallelMechanism(ScrewsymBasic):
                     degenerate.append((condition, Degenerate(unmade)))
                     continue
                 try:
-                    here = _substitute(self, case.subs) if case.subs else self
+                    here = trig_substitute(self, case.subs) if case.subs else self
                 except ValueError as error:  # the constraints' case unmakes a joint
                     degenerate.append((condition,
                                        Degenerate(_which_limb(self, case.subs, error))))
                     continue
                 out.append((condition, _surface_mobility(here, case) if case.relation
                             else _mobility(here)))
-                _check_cases(len(out), max_cases)
+                check_cases(len(out), max_cases)
         return out + degenerate
-
-
-def _unmade_on_surface(joints: Any, subs: dict[Any, Any], fe: Any) -> str | None:
-    """Why the first of ``joints`` (``(name, joint)`` pairs) is unmade on a case on ``fe = 0``.
-
-    A case that no substitution states cannot rebuild the joints there; a
-    joint is unmade where its own twists lose rank (a zero axis, a universal
-    joint's axes made parallel, a parallelogram folded flat: what its
-    constructor refuses), here at the generic point of the surface, proved
-    modulo ``fe``.  None when every joint keeps its freedoms there.
-    """
-    for name, joint in joints:
-        here = _substitute(joint, subs) if subs else joint
-        T = ImmutableMatrix.hstack(*(t.matrix for t in here._twists()))
-        rank = _rank_on_surface(T, fe)
-        if rank is not None and rank < joint.freedom:
-            return (f"{name}: its {joint.freedom} twist(s) have rank {rank} where {fe} = 0 "
-                    "(a zero axis, or axes made parallel)")
-    return None
 
 
 def _limb_joints(mech: ParallelMechanism) -> list[tuple[str, Joint]]:
@@ -789,131 +550,24 @@ def _which_limb(mech: ParallelMechanism, subs: dict[Any, Any], error: ValueError
     """``"limbs[i]: <the joint's error>"`` for the first limb that ``subs`` unmakes."""
     for i, limb in enumerate(mech.args):
         try:
-            _substitute(limb, subs)
+            trig_substitute(limb, subs)
         except ValueError as found:
             return f"limbs[{i}]: {found}"
     return str(error)  # pragma: no cover - the error came from one of the limbs
 
 
-def _union(a: Any, b: Any) -> Any:
-    """``a | b`` in the fewest terms: SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq``
-    (the atoms are the rank conditions' equations).  Beyond 6 atoms the plain ``Or``: the
-    minimisation grows exponentially with them (13 of 43 s of a 3-RPS with 12 symbols at 8)."""
-    expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
-    if len(expr.atoms(Eq)) > 6:
-        return Or(a, b)
-    # points of the circle read best as a disjunction of points (and _circle_simplify joins them)
-    expr = simplify_logic(expr, form="dnf" if expr.has(sin, cos) else None, deep=False)
-    return _circle_simplify(expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
-                                         lambda x: Ne(*x.args[0].args)))
-
-
-class _Answered(Protocol):
-    def answer(self) -> tuple[Any, ...]: ...
-
-
-_A = TypeVar("_A", bound=_Answered)
-
-
-def _merge_cases(cases: list[tuple[Any, _A | None]]) -> list[tuple[Any, _A | None]]:
-    """Cases with the same answer as one, in the place of the first (undecided ones apart).
-
-    Any result with an ``answer()`` (a :class:`Mobility`, a graph mechanism's
-    ``MechanismMobility``) is compared by it.
-    """
-    merged: list[tuple[Any, _A | None]] = []
-    where: dict[tuple[Any, ...], int] = {}
-    joined: set[int] = set()
-    for condition, m in cases:
-        if m is None:
-            merged.append((condition, None))
-            continue
-        key = m.answer()
-        if key in where:
-            i = where[key]
-            merged[i] = (_union(merged[i][0], condition), merged[i][1])
-            joined.add(i)
-        else:
-            where[key] = len(merged)
-            merged.append((condition, m))
-    # the cases hold one at each point, so a merged case is where none of the others holds:
-    # written so where that is an open condition (inequalities alone) and shorter:
-    # Ne(sin(a), 0) | Ne(sin(b), 0) for a union of five conjunctions that say the same on
-    # the circles (a case of equations keeps them: its roots, its points)
-    for i in joined:
-        others = [c for j, (c, _) in enumerate(merged) if j != i]
-        if not others:
-            merged[i] = (true, merged[i][1])
-            continue
-        alt = _complement(others)
-        if alt is not None and not alt.atoms(Eq) and count_ops(alt) < count_ops(merged[i][0]):
-            merged[i] = (alt, merged[i][1])
-    return merged
-
-
-def _complement(conditions: list) -> Any:
-    """Where none of ``conditions`` holds, in few terms (None beyond 6 atoms: see ``_union``)."""
-    expr = And(*(Not(c) for c in conditions)).replace(lambda x: isinstance(x, Ne),
-                                                      lambda x: Not(Eq(*x.args)))
-    if len(expr.atoms(Eq)) > 6:
-        return None
-    expr = simplify_logic(expr, deep=False)
-    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
-                        lambda x: Ne(*x.args[0].args))
-
-
-def _check_cases(count: int, limit: int) -> None:
-    if count > limit:
-        raise ValueError(
-            f"mobility_cases: more than {limit} cases; give some symbols values (xreplace) "
-            "or pass a larger max_cases"
-        )
-
-
-class _Leaf(NamedTuple):
-    """A case of the split: its conditions, its substitution (None: undecided), its relation
-    (the equation of a case that no substitution states, the later splits made modulo it),
-    and the nodes of screw_system's split that proved each rank so far (limbs, constraints)."""
-
-    conds: tuple
-    subs: dict | None
-    relation: tuple
-    nodes: tuple
-
-
-def _refine(leaf: _Leaf, system: ScrewSystem, limit: int) -> list[_Leaf]:
-    """The cases of ``system`` (already substituted) within ``leaf``: composed with it.
-
-    On a leaf with a relation ``fe``, the system's cases on the surface ``fe = 0``
-    (:func:`~screwsym.systems.screw_system._surface_cases`).  A case whose rank is
-    undecided keeps ``None`` as its substitution.
-    """
-    out: list[_Leaf] = []
-    subs = cast("dict[Any, Any]", leaf.subs)  # called on decided leaves only
-    M = system.matrix
-    nodes = _surface_cases(M, leaf.relation[0], limit) if leaf.relation else _cases(M, limit)
-    for node in nodes:
-        new_conds = leaf.conds if node.condition is true else leaf.conds + (node.condition,)
-        if node.rank is None:  # undecided
-            out.append(_Leaf(new_conds, None, (), ()))
-            continue
-        composed, relation = _within(subs, leaf.relation, node)
-        out.append(_Leaf(new_conds, composed, relation, leaf.nodes + (node,)))
-    return out
-
-
-def _surface_unmade(mech: ParallelMechanism, leaf: _Leaf, case: _Leaf) -> str | None:
+def _surface_unmade(mech: ParallelMechanism, leaf: Leaf, case: Leaf) -> str | None:
     """Why ``case`` unmakes a joint of ``mech`` where it brings a new surface; else None."""
     if not case.relation or case.relation == leaf.relation or case.subs is None:
         return None
-    return _unmade_on_surface(_limb_joints(mech), case.subs, case.relation[0])
+    return unmade_on_surface(_limb_joints(mech), case.subs, case.relation[0])
 
 
-def _surface_constraints(leaf: _Leaf) -> ScrewSystem:
+def _surface_constraints(leaf: Leaf) -> ScrewSystem:
     """The union of the limbs' constraints on a case on a surface, each by Cramer's rule on
     the minor that proved its limb's rank there (non-zero on the case), with the case's
     substitution made (a later limb's case may set more symbols)."""
-    return ScrewSystem(*(w for node in leaf.nodes for w in _basis_with(node, Wrench, leaf.subs)),
+    return ScrewSystem(*(w for node in leaf.nodes for w in basis_with(node, Wrench, leaf.subs)),
                        kind=Wrench)
 
 
@@ -926,18 +580,18 @@ def _mobility(mech: ParallelMechanism) -> Mobility:
                     motion_of(twists))
 
 
-def _surface_mobility(mech: ParallelMechanism, leaf: _Leaf) -> Mobility | None:
+def _surface_mobility(mech: ParallelMechanism, leaf: Leaf) -> Mobility | None:
     """The figures of a case on a surface ``fe = 0`` (``leaf.relation``): each limb's rank and
     the constraints' rank as the split proved them at every point of the case, the platform's
     twists by Cramer's rule on the constraints' minor there; the rank of all the limbs' twists
     (``common``) and the motion type those of the surface's generic point
-    (:func:`_motion_on_surface`).  None where no point of the surface proved them."""
+    (:func:`motion_on_surface`).  None where no point of the surface proved them."""
     fe = leaf.relation[0]
     *limb_nodes, w_node = leaf.nodes
     all_twists = ScrewSystem(*(t for limb in mech.args for t in limb.twists), kind=Twist)
-    all_rank = _rank_on_surface(all_twists.matrix, fe)
-    twists = _basis_system(w_node, Twist)
-    kinds = _motion_on_surface(twists, fe)
+    all_rank = rank_on_surface(all_twists.matrix, fe)
+    twists = basis_system(w_node, Twist)
+    kinds = motion_on_surface(twists, fe)
     if all_rank is None or kinds is None:  # pragma: no cover - no point proved a rank
         return None
     return _figures(mech, [node.rank for node in limb_nodes], all_rank, w_node.rank, twists,
@@ -982,4 +636,3 @@ def _figures(mech: ParallelMechanism, limb_ranks: list, all_rank: int, union: in
         helical_pitches=kinds.helical_pitches,
         internal=internal,
     )
-

@@ -53,435 +53,62 @@ Huang, Li & Ding, *Theory of Parallel Mechanisms*, Springer 2013, Chapter 5.
 
 from __future__ import annotations
 
-from collections import deque
-from dataclasses import dataclass
-from functools import lru_cache, reduce
+from functools import reduce
 from typing import TYPE_CHECKING, Any, NamedTuple, cast
 
 from sympy import (
-    QQ,
-    Add,
     And,
-    Basic,
-    Dummy,
     ImmutableMatrix,
     Integer,
     Matrix,
-    Mul,
     Ne,
-    Symbol,
     Tuple,
     cancel,
-    cos,
     expand,
     false,
     fraction,
-    igcd,
-    ilcm,
     lcm,
-    radsimp,
-    sin,
-    sqrt,
     true,
     zeros,
 )
-from sympy.core.symbol import Str
-from sympy.polys.matrices import DomainMatrix
-from sympy.polys.polyutils import parallel_dict_from_expr
 
+from ..algebra.budget import BUDGET, MAX_CASES
+from ..algebra.circle import trig_substitute
+from ..algebra.linalg import clean_vector, det_rows, nullspace_basis
+from ..algebra.rings import (
+    to_expr,
+    to_ring,
+    vanishes,
+)
+from ..algebra.surface import null_on_surface
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag
-from ..core.decide import is_zero
 from ..core.twist import Twist
 from ..core.wrench import Wrench
+from ._cases import check_cases, merge_cases, unmade_on_surface
+from ._rank_cases import apply_subs, case_budget, rank_cases, surface_cases, swapped, within
 from .joints import Joint, Parallelogram, Spherical, Universal
-from .mechanism import (
-    Degenerate,
-    ParallelMechanism,
-    _check_cases,
-    _merge_cases,
-    _unmade_on_surface,
-    motion_of,
-)
-from .screw_system import (
-    _TRIG_BACK,
-    BUDGET,
-    MAX_CASES,
-    ScrewSystem,
-    _apply,
-    _basis_with,
-    _cases,
-    _circle_normal,
-    _coefficient,
-    _det,
-    _field,
-    _null_on_surface,
-    _on_circle,
-    _poly_expr,
-    _primitive,
-    _rational_parts,
-    _substitute,
-    _surface_cases,
-    _swap,
-    _to_ring,
-    _trig_entries,
-    _vanishes,
-    _within,
-    case_budget,
+from .motion_type import motion_of
+from .parallel import Degenerate, ParallelMechanism
+from .screw_system import ScrewSystem, basis_with
+from .second_order import SecondOrder, _skew, ad_matrix, loop_terms, second_order_of
+from .topology import (
+    Network,
+    bare_network,
+    check_link,
+    link_label,
+    network,
+    path_matrix,
+    spanning_tree,
 )
 
 if TYPE_CHECKING:
     from typing_extensions import Self
 
-__all__ = ["Mechanism", "MechanismMobility", "SecondOrder", "lie_bracket"]
+
+__all__ = ["Mechanism", "MechanismMobility"]
 
 
-# ------------------------------------------------------------------ screws
-
-
-def _skew(v: Any) -> Matrix:
-    x, y, z = v
-    return Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
-
-
-def _ad(s: Any) -> Matrix:
-    """The 6 x 6 matrix of ``X -> [s, X]`` for a twist ``s = (w; v)`` in ray order."""
-    w, v = _skew(s[:3]), _skew(s[3:])
-    return Matrix.vstack(Matrix.hstack(w, zeros(3)), Matrix.hstack(v, w))
-
-
-def _bracket(a: Any, b: Any) -> list:
-    """``[a, b] = (wa x wb; wa x vb - wb x va)`` of two 6-vectors (ray order)."""
-    wa, va, wb, vb = Matrix(a[:3]), Matrix(a[3:]), Matrix(b[:3]), Matrix(b[3:])
-    return list(wa.cross(wb)) + list(wa.cross(vb) - wb.cross(va))
-
-
-def lie_bracket(a: Twist, b: Twist) -> Twist:
-    r"""The Lie bracket of two twists in the book's ray order: ``(wa x wb; wa x vb - wb x va)``.
-
-    Explanation
-    ===========
-
-    For twists ``a = (wa; va)`` and ``b = (wb; vb)`` (``v`` the velocity of
-    the body point at the origin) this is ``ad_a b``, the derivative of ``b``
-    carried by the motion ``exp6(a t)``: ``d/dt Ad_{exp6(a t)} b`` at ``t = 0``
-    (Murray, Li & Sastry 1994, §2.4, written here in the order ``(w; v)``).  It
-    is what the second-order loop-closure condition of :meth:`Mechanism.second_order`
-    uses; the tests check it against a finite motion.
-
-    Examples
-    ========
-
-    Two rotations about parallel axes do not commute: their bracket is a
-    translation at right angles to both axes, in their plane.
-
-    >>> from screwsym import Twist
-    >>> from screwsym.systems.graph import lie_bracket
-    >>> lie_bracket(Twist.rotation([0, 0, 1], point=[0, 0, 0]),
-    ...             Twist.rotation([0, 0, 1], point=[1, 0, 0]))
-    Twist([0, 0, 0], [1, 0, 0])
-    """
-    for value, name in ((a, "a"), (b, "b")):
-        if not isinstance(value, Twist):
-            raise TypeError(f"{name}: expected a Twist, got {type(value).__name__}")
-    c = _bracket(list(a.matrix), list(b.matrix))
-    return Twist(c[:3], c[3:])
-
-
-# ------------------------------------------------------ exact linear algebra
-
-
-#: the half-angle symbol ``t = tan(q/2)`` of each angle ``q`` (:func:`_half_angle`); and its angle
-_HALF: dict = {}
-_HALF_BACK: dict = {}
-
-
-def _half_angle(q: Any) -> Dummy:
-    t = _HALF.get(q)
-    if t is None:
-        t = Dummy(f"t_{q}", real=True)
-        _HALF[q] = t
-        _HALF_BACK[t] = q
-    return t
-
-
-def _from_half_angle(row: list) -> list:
-    """A vector over the rational functions of ``t = tan(q/2)`` (and the other symbols) as
-    polynomials in ``sin(q)``, ``cos(q)``: the same vector up to a factor non-zero generically.
-
-    Cleared of denominators and of the common factor, a polynomial vector of degree ``D``
-    in ``t`` divided by ``(1 + t**2)**n``, ``n = ceil(D/2)``, is one of degree ``n`` in
-    ``sin(q)`` and ``cos(q)``: with ``t = sin(q)/(1 + cos(q))`` and ``1 + t**2 =
-    2/(1 + cos(q))``, ``t**k/(1 + t**2)**n = sin(q)**(k % 2) (1 - cos(q))**(k // 2)
-    (1 + cos(q))**(n - k + k // 2) / 2**n`` (``sin(q)**2 = (1 - cos(q)) (1 + cos(q))``),
-    a polynomial for every ``k <= 2 n``.
-    """
-    nz = [e for e in row if e]
-    ring = nz[0].numer.ring
-    den = ring.one
-    for e in nz:
-        den = den.lcm(e.denom)
-    polys = [e.numer * den.exquo(e.denom) if e else ring.zero for e in row]
-    g = ring.zero
-    for p in polys:
-        if p:
-            g = p if not g else g.gcd(p)
-    polys = [p.exquo(g) if p else p for p in polys]
-    angles = {i: _HALF_BACK[x] for i, x in enumerate(ring.symbols) if x in _HALF_BACK}
-    half = {i: (max(p.degree(i) for p in polys if p) + 1) // 2 for i in angles}
-    K0 = ring.domain
-    out = []
-    for p in polys:
-        terms = []
-        for monom, c in p.terms():
-            factors = [K0.to_sympy(c)]
-            for i, k in enumerate(monom):
-                if i in angles:
-                    q, n = angles[i], half[i]
-                    factors.append(sin(q) ** (k % 2) * (1 - cos(q)) ** (k // 2)
-                                   * (1 + cos(q)) ** (n - k + k // 2))
-                elif k:
-                    factors.append(ring.symbols[i] ** k)
-            terms.append(Mul(*factors))
-        out.append(Add(*terms))
-    return out
-
-
-def _trig(entries: Any) -> bool:
-    return any(e.has(sin, cos) for e in entries)
-
-
-def _dm(M: Matrix) -> DomainMatrix:
-    """``M`` over its field: QQ, an algebraic field, or rational functions over one.
-
-    The entries go through polynomial dictionaries and the cached algebraic
-    coefficients of :mod:`screwsym.systems.screw_system` (``K.from_sympy`` on an
-    algebraic field computes a minimal polynomial per entry: seconds).
-
-    ``sin(q)`` and ``cos(q)`` of a symbol (sums and multiples expanded) live on
-    the unit circle, whose rational functions are those of ``t = tan(q/2)``
-    (:func:`~screwsym.systems.screw_system._on_circle`, a bijection of the two
-    fields): they are written in ``t``, so that rank and null space are exact,
-    the generic ones on the circle (a field of fractions in ``sin(q)``,
-    ``cos(q)`` as free symbols would not know ``sin(q)**2 + cos(q)**2 = 1``).
-    :func:`_nullspace` writes its basis back in ``sin(q)`` and ``cos(q)``.
-    """
-    entries = list(M)
-    if all(e.is_Rational for e in entries):  # the common case, at once
-        rows = [[QQ(int(e.p), int(e.q)) for e in entries[i * M.cols:(i + 1) * M.cols]]
-                for i in range(M.rows)]
-        return DomainMatrix(rows, (M.rows, M.cols), QQ)
-    trig = _trig(entries)
-    if trig:
-        entries = _trig_entries(entries)  # sin(q), cos(q) as the ring's symbols, then in t
-        half = {}
-        for x in set().union(*(e.free_symbols for e in entries)):
-            back = _TRIG_BACK.get(x)
-            if back is not None:
-                point = _on_circle(_half_angle(back.args[0]))
-                half[x] = point[0] if back.func is sin else point[1]
-        entries = [e.xreplace(half) for e in entries]
-    syms, numbers, parts = _rational_parts(entries, "joints: expected geometry")
-    K0 = _field(tuple(sorted(set(numbers), key=str)))
-    gens = tuple(syms) if syms else (Dummy("c"),)
-    R = K0[gens]
-    K = K0.frac_field(*syms) if syms else K0
-    dicts, _ = parallel_dict_from_expr(parts, gens=gens) if parts else ([], None)
-    polys = [R.ring.from_dict({m: _coefficient(K0, c) for m, c in d.items()}) for d in dicts]
-    values = []
-    for k in range(len(entries)):
-        num, den = polys[2 * k], polys[2 * k + 1]
-        if syms:
-            values.append(K.convert_from(num, R) / K.convert_from(den, R))
-        else:
-            values.append(num.LC / den.LC if num else K0.zero)
-    rows = [values[i * M.cols:(i + 1) * M.cols] for i in range(M.rows)]
-    return DomainMatrix(rows, (M.rows, M.cols), K)
-
-
-def _clean(v: list) -> list:
-    """A vector scaled to lowest terms: no denominators, no common factor, first entry positive.
-
-    With ``sin``/``cos`` of symbols, in the ring of :mod:`~screwsym.systems.screw_system`:
-    polynomial, reduced by ``sin(q)**2 + cos(q)**2 = 1`` (so an entry zero on the circle is 0).
-    """
-    if _trig(v):
-        rg = _to_ring(ImmutableMatrix(len(v), 1, v))
-        return [_poly_expr(e, rg.ring) for e in _primitive(list(rg.cols[0]), rg.ring)]
-    v = [cancel(e) for e in v]
-    nz = [e for e in v if e != 0]
-    if not nz:
-        return v
-    if all(e.is_Rational for e in nz):
-        den = reduce(ilcm, [int(e.q) for e in nz])
-        ints = [e * den for e in v]
-        g = reduce(igcd, [abs(int(e)) for e in ints if e != 0])
-        v = [e / g for e in ints]
-    else:
-        den = reduce(lcm, [fraction(e)[1] for e in nz], Integer(1))
-        v = [cancel(e * den) for e in v]
-    first = next(e for e in v if e != 0)
-    if first.is_number and first.is_negative or (not first.is_number
-                                                  and first.could_extract_minus_sign()):
-        v = [-e for e in v]
-    return v
-
-
-def _nullspace(M: Matrix) -> Matrix:
-    """A basis of the (generic) null space of ``M``, as the columns of a matrix."""
-    if M.rows == 0:
-        return Matrix.eye(M.cols)
-    if M.cols == 0:
-        return zeros(0, 0)
-    null = _dm(M).nullspace()
-    if _trig(M) and null.domain.is_FractionField:  # from t = tan(q/2) to sin(q), cos(q)
-        cols = [_clean(_from_half_angle(row)) for row in null.to_list()]
-    else:
-        null = null.to_Matrix()
-        cols = [_clean(list(null.row(i))) for i in range(null.rows)]
-    return Matrix.hstack(*(Matrix(c) for c in cols)) if cols else zeros(M.cols, 0)
-
-
-def _rank(M: Matrix) -> int:
-    if M.rows == 0 or M.cols == 0:
-        return 0
-    return int(_dm(M).rank())
-
-
-# --------------------------------------------------------------- the graph
-
-
-def _check_link(value: Any, name: str) -> Basic:
-    if isinstance(value, str):
-        return Str(value)
-    if isinstance(value, bool) or value is None:
-        raise TypeError(f"{name}: expected a link name (a string or a SymPy symbol), got {value!r}")
-    if isinstance(value, int):
-        return Integer(value)
-    if isinstance(value, (Symbol, Str, Integer)):
-        return value
-    raise TypeError(
-        f"{name}: expected a link name (a string or a SymPy symbol), got {type(value).__name__}"
-    )
-
-
-def _label(link: Basic) -> Any:
-    """The name as the user wrote it: a ``str`` for a string, an ``int`` for an integer."""
-    if isinstance(link, Str):
-        return link.name
-    if isinstance(link, Integer):
-        return int(link)
-    return link
-
-
-@dataclass(frozen=True)
-class _Graph:
-    links: tuple  # link objects, base first, then in order of discovery
-    index: dict  # link -> its number
-    edges: tuple  # (a, b, joint): link numbers and the joint
-    offsets: tuple  # the number of joint e's first freedom
-    paths: tuple  # per link: ((edge, sign), ...) along the tree from the base
-    loops: tuple  # per chord: ((edge, sign), ...) round the loop, from the chord's link_a
-    degree: tuple  # the number of joints at each link
-
-
-def _spanning(mech: Mechanism) -> _Graph:
-    triples, base = mech.args
-    links: list = [base]
-    index = {base: 0}
-    edges = []
-    for a, b, j in triples:
-        for x in (a, b):
-            if x not in index:
-                index[x] = len(links)
-                links.append(x)
-        edges.append((index[a], index[b], j))
-    incident: list[list[int]] = [[] for _ in links]
-    for e, (a, b, _) in enumerate(edges):
-        incident[a].append(e)
-        incident[b].append(e)
-    paths: list = [None] * len(links)
-    paths[0] = ()
-    tree = set()
-    queue = deque([0])
-    while queue:
-        x = queue.popleft()
-        for e in incident[x]:
-            a, b, _ = edges[e]
-            y, sign = (b, 1) if a == x else (a, -1)
-            if paths[y] is None:
-                paths[y] = paths[x] + ((e, sign),)
-                tree.add(e)
-                queue.append(y)
-    missing = [_label(links[i]) for i, p in enumerate(paths) if p is None]
-    if missing:
-        raise ValueError(
-            f"joints: the links {', '.join(repr(m) for m in missing)} are not connected to the "
-            f"base {_label(base)!r} (the mechanism must be one connected graph)"
-        )
-    loops = []
-    for e, (a, b, _) in enumerate(edges):
-        if e in tree:
-            continue
-        pa, pb = paths[a], paths[b]
-        c = 0
-        while c < min(len(pa), len(pb)) and pa[c] == pb[c]:
-            c += 1
-        up = tuple((f, -s) for f, s in reversed(pb[c:]))
-        loops.append(((e, 1),) + up + pa[c:])
-    offsets, total = [], 0
-    for _, _, j in edges:
-        offsets.append(total)
-        total += j.freedom
-    return _Graph(tuple(links), index, tuple(edges), tuple(offsets), tuple(paths),
-                  tuple(loops), tuple(len(i) for i in incident))
-
-
-@dataclass(frozen=True)
-class _Network:
-    graph: _Graph
-    twists: tuple  # per joint: its twists as lists of 6 entries
-    accel: tuple  # per joint: its accelerations (lists of 6) or None
-    A: Matrix  # 6L x F
-    rank: int
-    null: Matrix  # F x M
-
-
-@lru_cache(maxsize=64)
-def _network(mech: Mechanism) -> _Network:
-    net = _bare_network(mech)
-    null = _nullspace(net.A) if net.graph.loops else Matrix.eye(net.A.cols)
-    return _Network(net.graph, net.twists, net.accel, net.A, net.A.cols - null.cols, null)
-
-
-def _bare_network(mech: Mechanism) -> _Network:
-    """The network without its (generic) null space: ``rank`` and ``null`` left empty."""
-    g = _spanning(mech)
-    twists = tuple(tuple(list(t.matrix) for t in j._twists()) for _, _, j in g.edges)
-    accel = tuple(tuple(None if y is None else list(y.matrix) for y in j._accelerations())
-                  for _, _, j in g.edges)
-    F = sum(j.freedom for _, _, j in g.edges)
-    A = zeros(6 * len(g.loops), F)
-    for i, loop in enumerate(g.loops):
-        for e, s in loop:
-            for k, t in enumerate(twists[e]):
-                for r in range(6):
-                    A[6 * i + r, g.offsets[e] + k] += s * t[r]
-    return _Network(g, twists, accel, A, 0, zeros(F, 0))
-
-
-def _path_matrix(net: _Network, link: int) -> Matrix:
-    """The 6 x F matrix taking joint rates to the twist of ``link`` relative to the base."""
-    g = net.graph
-    J = zeros(6, net.A.cols)
-    for e, s in g.paths[link]:
-        for k, t in enumerate(net.twists[e]):
-            for r in range(6):
-                J[r, g.offsets[e] + k] += s * t[r]
-    return J
-
-
-# ------------------------------------------------------------------ results
 
 
 class MechanismMobility(NamedTuple):
@@ -507,18 +134,6 @@ class MechanismMobility(NamedTuple):
                 self.redundant, self.idle, self.classical)
 
 
-class SecondOrder(NamedTuple):
-    """The result of :meth:`Mechanism.second_order`."""
-
-    instantaneous: int  #: M, the dimension of the first-order motions
-    mobility: int | None  #: the dimension of the second-order cone (None: undecided)
-    branches: int | None  #: how many components the cone is the union of (None: undecided)
-    several_branches: bool | None  #: more than one (motion modes meeting here)
-    cone: tuple[ImmutableMatrix, ...] | None  #: each linear component, F x k joint rates
-    forms: tuple[ImmutableMatrix, ...]  #: the quadratic forms on the rates' coordinates
-
-
-# -------------------------------------------------------------- mechanism
 
 
 class Mechanism(ScrewsymBasic):
@@ -554,7 +169,7 @@ class Mechanism(ScrewsymBasic):
     freedom, the classical count -2, three common constraints (the loop is
     planar: two moments and the force along z).
 
-    >>> from screwsym.systems.graph import Mechanism
+    >>> from screwsym.systems.linkage import Mechanism
     >>> from screwsym.systems.joints import R
     >>> z = [0, 0, 1]
     >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
@@ -596,7 +211,7 @@ class Mechanism(ScrewsymBasic):
     See Also
     ========
 
-    screwsym.systems.mechanism.ParallelMechanism
+    screwsym.systems.parallel.ParallelMechanism
 
     References
     ==========
@@ -616,8 +231,8 @@ class Mechanism(ScrewsymBasic):
         for i, item in enumerate(joints):
             if isinstance(item, (str, bytes)) or not hasattr(item, "__len__") or len(item) != 3:
                 raise TypeError(f"joints[{i}]: expected a triple (link_a, link_b, joint), got {item!r}")
-            a = _check_link(item[0], f"joints[{i}][0]")
-            b = _check_link(item[1], f"joints[{i}][1]")
+            a = check_link(item[0], f"joints[{i}][0]")
+            b = check_link(item[1], f"joints[{i}][1]")
             j = item[2]
             if not isinstance(j, Joint):
                 raise TypeError(
@@ -627,28 +242,28 @@ class Mechanism(ScrewsymBasic):
                 )
             if a == b:
                 raise ValueError(f"joints[{i}]: a joint joins two different links, got "
-                                 f"{_label(a)!r} twice")
+                                 f"{link_label(a)!r} twice")
             triples.append(Tuple(a, b, j))
         if not triples:
             raise ValueError("joints: expected at least one (link_a, link_b, joint), got none")
         if base is None:
             raise TypeError("base: expected the name of the fixed link, got None")
-        base = _check_link(base, "base")
+        base = check_link(base, "base")
         if not any(base in t.args[:2] for t in triples):
-            raise ValueError(f"base: {_label(base)!r} is not a link of any joint")
+            raise ValueError(f"base: {link_label(base)!r} is not a link of any joint")
         obj = ScrewsymBasic.__new__(cls, Tuple(*triples), base)
-        _spanning(obj)  # refuses a disconnected graph now
+        spanning_tree(obj)  # refuses a disconnected graph now
         return obj
 
     @classmethod
     def from_parallel(cls, pm: ParallelMechanism) -> Mechanism:
-        """The mechanism of a :class:`~screwsym.systems.mechanism.ParallelMechanism`, as a graph.
+        """The mechanism of a :class:`~screwsym.systems.parallel.ParallelMechanism`, as a graph.
 
         The links are ``"base"``, ``"platform"`` and, for limb ``i`` (from 1),
         ``"limb<i>.<k>"``, the ``k``-th link from the base.
 
-        >>> from screwsym.systems.graph import Mechanism
-        >>> from screwsym.systems.mechanism import Limb, ParallelMechanism
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.parallel import Limb, ParallelMechanism
         >>> from screwsym.systems.joints import R
         >>> z = [0, 0, 1]
         >>> pm = ParallelMechanism(Limb(R([0, 0, 0], z), R([1, 2, 0], z)),
@@ -665,17 +280,17 @@ class Mechanism(ScrewsymBasic):
     @property
     def base(self) -> Any:
         """The fixed link's name."""
-        return _label(self.args[1])
+        return link_label(self.args[1])
 
     @property
     def links(self) -> tuple[Any, ...]:
         """The links' names, the base first."""
-        return tuple(_label(x) for x in _spanning(self).links)
+        return tuple(link_label(x) for x in spanning_tree(self).links)
 
     @property
     def joints(self) -> tuple[tuple[Any, Any, Joint], ...]:
         """The triples ``(link_a, link_b, joint)`` as given."""
-        return tuple((_label(a), _label(b), j) for a, b, j in self.args[0].args)
+        return tuple((link_label(a), link_label(b), j) for a, b, j in self.args[0].args)
 
     @property
     def freedom(self) -> int:
@@ -689,14 +304,14 @@ class Mechanism(ScrewsymBasic):
         ``+1`` where the loop passes the joint from its ``link_a`` to its
         ``link_b``.  Each loop starts with the joint that closes it (the chord).
 
-        >>> from screwsym.systems.graph import Mechanism
+        >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.joints import R
         >>> z = [0, 0, 1]
         >>> Mechanism([("g", "a", R([0, 0, 0], z)), ("a", "b", R([1, 0, 0], z)),
         ...            ("b", "g", R([1, 1, 0], z))], base="g").loops
         (((1, 1), (2, 1), (0, 1)),)
         """
-        return _spanning(self).loops
+        return spanning_tree(self).loops
 
     def network_matrix(self) -> ImmutableMatrix:
         """The 6L x F matrix of the loops' circulation equations (the network matrix).
@@ -704,7 +319,7 @@ class Mechanism(ScrewsymBasic):
         Row block ``i`` is loop ``i`` (:attr:`loops`); column ``k`` is the ``k``-th
         joint freedom, the joints in the order given, each joint's axes in order.
         """
-        return ImmutableMatrix(_network(self).A)
+        return ImmutableMatrix(network(self).A)
 
     # -------------------------------------------------------- first order
     def mobility(self) -> MechanismMobility:
@@ -744,14 +359,14 @@ class Mechanism(ScrewsymBasic):
         An S-P-S leg closed on the base spins about its line: its one
         freedom is idle.
 
-        >>> from screwsym.systems.graph import Mechanism
+        >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.joints import P, S
         >>> m = Mechanism([("base", "lower", S([0, 0, 0])), ("lower", "upper", P([0, 0, 1])),
         ...                ("upper", "base", S([0, 0, 2]))], base="base").mobility()
         >>> m.mobility, m.idle, m.orders
         (1, 1, (6,))
         """
-        net = _network(self)
+        net = network(self)
         g = net.graph
         orders, commons = [], []
         for loop in g.loops:
@@ -805,10 +420,10 @@ class Mechanism(ScrewsymBasic):
         (two such surfaces in three or more symbols meeting).  A case whose
         values unmake a joint (a zero
         axis, a universal joint's axes made parallel) comes with a
-        :class:`~screwsym.systems.mechanism.Degenerate` naming the joint,
+        :class:`~screwsym.systems.parallel.Degenerate` naming the joint,
         ``joints[k] (link_a, link_b): <its error>``; these are listed last,
         as :meth:`ParallelMechanism.mobility_cases
-        <screwsym.systems.mechanism.ParallelMechanism.mobility_cases>` lists them.
+        <screwsym.systems.parallel.ParallelMechanism.mobility_cases>` lists them.
         Cases whose conditions contradict each other are left out.  At most
         ``max_cases`` cases (a ``ValueError`` beyond), and at most ``budget``
         units of polynomial arithmetic for the whole split (as
@@ -833,7 +448,7 @@ class Mechanism(ScrewsymBasic):
         order 2).
 
         >>> from sympy import symbols
-        >>> from screwsym.systems.graph import Mechanism
+        >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.joints import R
         >>> b = symbols("b", real=True)
         >>> z = [0, 0, 1]
@@ -864,7 +479,7 @@ class Mechanism(ScrewsymBasic):
         merge = check_flag(merge, "merge")
         with case_budget(budget, "mobility_cases"):
             out = _mobility_cases(self, max_cases)
-        merged = _merge_cases(cast("list[tuple[Any, Any]]", out)) if merge else out
+        merged = merge_cases(cast("list[tuple[Any, Any]]", out)) if merge else out
         return cast("list[tuple[Any, MechanismMobility | Degenerate | None]]", merged)
 
     def twists(self, link: Any, relative_to: Any = None) -> ScrewSystem:
@@ -876,7 +491,7 @@ class Mechanism(ScrewsymBasic):
         :class:`~screwsym.systems.screw_system.ScrewSystem` of their
         differences (a basis, generic in the symbols).
 
-        >>> from screwsym.systems.graph import Mechanism
+        >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.joints import Parallelogram
         >>> pa = Parallelogram([0, 0, 0], [1, 0, 0], [0, 0, 2])
         >>> Mechanism(pa.links("a", "b"), base="a").twists("b")   # a translation
@@ -884,12 +499,12 @@ class Mechanism(ScrewsymBasic):
         >>> pa.twists                                              # the compound pair: the same
         ScrewSystem(Twist([0, 0, 0], [-4, 0, 0]))
         """
-        g = _spanning(self)
+        g = spanning_tree(self)
         target = self._link_number(link, "link")
         ref = 0 if relative_to is None else self._link_number(relative_to, "relative_to")
-        net = _network(self)
-        J = (_path_matrix(net, target) - _path_matrix(net, ref)) * net.null
-        cols = [_clean(list(J.col(k))) for k in range(J.cols)]
+        net = network(self)
+        J = (path_matrix(net, target) - path_matrix(net, ref)) * net.null
+        cols = [clean_vector(list(J.col(k))) for k in range(J.cols)]
         members = [Twist(c[:3], c[3:]) for c in cols if any(e != 0 for e in c)]
         del g
         if not members:
@@ -899,7 +514,7 @@ class Mechanism(ScrewsymBasic):
     def motion(self, link: Any, relative_to: Any = None) -> str | None:
         """The motion type of ``link`` relative to ``relative_to``: ``"3T"``, ``"1R"``, ``"1H"``, ...
 
-        The label of :func:`~screwsym.systems.mechanism.motion_of` for
+        The label of :func:`~screwsym.systems.motion_type.motion_of` for
         :meth:`twists`: translations, rotations, helical freedoms (translations
         first, "3T1R"), generic in the symbols; :meth:`helical_pitches` gives
         the pitch of each helical freedom.  None where the helical freedoms depend
@@ -913,10 +528,10 @@ class Mechanism(ScrewsymBasic):
         return motion_of(self.twists(link, relative_to)).helical_pitches
 
     def _link_number(self, link: Any, name: str) -> int:
-        key = _check_link(link, name)
-        g = _spanning(self)
+        key = check_link(link, name)
+        g = spanning_tree(self)
         if key not in g.index:
-            raise ValueError(f"{name}: {_label(key)!r} is not a link of this mechanism")
+            raise ValueError(f"{name}: {link_label(key)!r} is not a link of this mechanism")
         return int(g.index[key])
 
     # ------------------------------------------------------ second order
@@ -928,12 +543,12 @@ class Mechanism(ScrewsymBasic):
         :meth:`network_matrix`: a motion ``q(t)`` of the closed loops with
         ``q'(0) = rates`` has ``network_matrix() * q''(0) + quadratic_terms(rates) = 0``.
         """
-        net = _network(self)
+        net = network(self)
         q = Matrix(rates)
         if q.shape != (net.A.cols, 1):
             raise ValueError(f"rates: expected {net.A.cols} joint rates, got shape {q.shape}")
         out = zeros(net.A.rows, 1)
-        for i, (pairs, squares) in enumerate(_loop_terms(net)):
+        for i, (pairs, squares) in enumerate(loop_terms(net)):
             block = zeros(6, 1)
             for a, b, c in pairs:
                 block += Matrix(c) * q[a] * q[b]
@@ -979,7 +594,7 @@ class Mechanism(ScrewsymBasic):
         order (a shaky 4R; Müller 2016, §6).
 
         >>> from sympy import Rational as Q
-        >>> from screwsym.systems.graph import Mechanism
+        >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.joints import R
         >>> ring = [(1, 0), (0, 1), (-1, 0), (Q(3, 5), Q(-4, 5))]
         >>> axes = [R([c, s, 0], [-s, c, 1]) for c, s in ring]
@@ -987,22 +602,21 @@ class Mechanism(ScrewsymBasic):
         >>> shaky.mobility().mobility, shaky.second_order().mobility
         (1, 0)
         """
-        return _second_order(self)
+        return second_order_of(self)
 
 
-# ----------------------------------------------------------- case split
 
 
 def _put(M: Matrix, subs: dict) -> Matrix:
     """``M`` with a case's substitution made (``sin(q)``, ``cos(q)`` reach ``sin(2 q)``)."""
-    return Matrix(_apply(M, subs)) if subs else M
+    return Matrix(apply_subs(M, subs)) if subs else M
 
 
 def _contradicts(conds: tuple, subs: dict) -> bool:
     """Whether the substitution of a case makes one of its own ``Ne`` conditions false."""
     for c in conds:
         for atom in c.atoms(Ne):
-            if _vanishes(_substitute(atom.lhs - atom.rhs, subs)):
+            if vanishes(trig_substitute(atom.lhs - atom.rhs, subs)):
                 return True
     return False
 
@@ -1025,19 +639,19 @@ def _relations(node: Any) -> Matrix:
         return zeros(k, 0)
     if not members:
         return Matrix.eye(k)
-    rg = _to_ring(node.matrix)
+    rg = to_ring(node.matrix)
     R = rg.ring
-    B = [_swap(c) for c in rg.cols]
+    B = [swapped(c) for c in rg.cols]
     cols = list(node.cols)
-    m = _det([[B[p][c] for c in cols] for p in members], R)
-    scale = [_poly_expr(d, R) for d in rg.scales]
+    m = det_rows([[B[p][c] for c in cols] for p in members], R)
+    scale = [to_expr(d, R) for d in rg.scales]
     out = []
     for j in free:
         x = [Integer(0)] * k
-        x[j] = _poly_expr(m, R) * scale[j]
+        x[j] = to_expr(m, R) * scale[j]
         for pp, p in enumerate(members):
             rows = [[B[j if q == pp else members[q]][c] for c in cols] for q in range(len(members))]
-            x[p] = -_poly_expr(_det(rows, R), R) * scale[p]
+            x[p] = -to_expr(det_rows(rows, R), R) * scale[p]
         out.append(Matrix(x).applyfunc(expand))
     return Matrix.hstack(*out)
 
@@ -1065,7 +679,7 @@ def _unmade(mech: Mechanism, subs: dict) -> Degenerate | None:
     named as the graph knows it, ``joints[k] (link_a, link_b): ...``; ``None`` when all stand."""
     for name, j in _named_joints(mech):
         try:
-            _substitute(j, subs)
+            trig_substitute(j, subs)
         except ValueError as error:
             return Degenerate(f"{name}: {error}")
     return None
@@ -1073,7 +687,7 @@ def _unmade(mech: Mechanism, subs: dict) -> Degenerate | None:
 
 def _mobility_cases(mech: Mechanism,
                     limit: int) -> list[tuple[Any, MechanismMobility | Degenerate | None]]:
-    net = _network(mech)
+    net = network(mech)
     g = net.graph
     A = net.A
     F = A.cols
@@ -1081,7 +695,7 @@ def _mobility_cases(mech: Mechanism,
         return [(true, mech.mobility())]
     # a leaf: its conditions; its substitution (None: undecided); its relation, the equation
     # of a case that no substitution states, () if none (the later splits are made on that
-    # surface, modulo it: _surface_cases); the nodes that proved each loop's order; and the
+    # surface, modulo it: surface_cases); the nodes that proved each loop's order; and the
     # rates closing the loops so far
     leaves: list[_Leaf] = [_Leaf((), {}, (), (), None)]
     used = [sorted({g.offsets[e] + k for e, _ in loop for k in range(g.edges[e][2].freedom)})
@@ -1092,19 +706,19 @@ def _mobility_cases(mech: Mechanism,
     def split(leaf: _Leaf, M: Matrix) -> list[tuple[_Leaf, Any]]:
         found: list[tuple[_Leaf, Any]] = []
         M = ImmutableMatrix(M)
-        nodes = _surface_cases(M, leaf.relation[0], limit) if leaf.relation else _cases(M, limit)
+        nodes = surface_cases(M, leaf.relation[0], limit) if leaf.relation else rank_cases(M, limit)
         for node in nodes:
             new = leaf.conds if node.condition is true else leaf.conds + (node.condition,)
             if node.rank is None:  # undecided
                 found.append((_Leaf(new, None, (), (), None), node))
                 continue
             # split is called on decided leaves only
-            composed, relation = _within(cast("dict", leaf.subs), leaf.relation, node)
+            composed, relation = within(cast("dict", leaf.subs), leaf.relation, node)
             if _contradicts(new, composed):
                 continue
             unmade = _unmade(mech, composed) if node.subs else None
             if unmade is None and relation and relation != leaf.relation:  # a new surface
-                why = _unmade_on_surface(_named_joints(mech), composed, relation[0])
+                why = unmade_on_surface(_named_joints(mech), composed, relation[0])
                 unmade = None if why is None else Degenerate(why)
             if unmade is not None:  # the case's values unmake a joint: nothing to analyse there
                 degenerate.append((And(*new), unmade))
@@ -1123,7 +737,7 @@ def _mobility_cases(mech: Mechanism,
             grown.extend(new._replace(orders=new.orders + (node,)) if new.subs is not None
                          else new for new, node in split(leaf, block))
         leaves = grown
-        _check_cases(len(leaves), limit)
+        check_cases(len(leaves), limit)
     leaves = [leaf._replace(rates=None if leaf.subs is None else Matrix.eye(F)) for leaf in leaves]
     for i in range(len(g.loops)):  # the network matrix, loop by loop
         grown = []
@@ -1141,7 +755,7 @@ def _mobility_cases(mech: Mechanism,
                 rates = (_put(N, more) * _relations(node)).applyfunc(cancel)
                 grown.append(new._replace(rates=rates))
         leaves = grown
-        _check_cases(len(leaves), limit)
+        check_cases(len(leaves), limit)
     out: list[tuple[Any, MechanismMobility | Degenerate | None]] = []
     for leaf in leaves:
         condition = And(*leaf.conds) if leaf.conds else true
@@ -1150,7 +764,7 @@ def _mobility_cases(mech: Mechanism,
         if leaf.subs is None or leaf.rates is None:
             out.append((condition, None))
             continue
-        here = _substitute(mech, leaf.subs) if leaf.subs else mech
+        here = trig_substitute(mech, leaf.subs) if leaf.subs else mech
         if leaf.relation:  # on a surface: the figures of the split, proved there
             out.append((condition, _on_surface_mobility(here, leaf)))
             continue
@@ -1181,13 +795,13 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
     no point of the surface proved that null space.
     """
     fe = leaf.relation[0]
-    net = _bare_network(mech)
+    net = bare_network(mech)
     N = cast(Matrix, leaf.rates)
-    N = Matrix.hstack(*(Matrix(_clean(list(N.col(k)))) for k in range(N.cols))) if N.cols \
+    N = Matrix.hstack(*(Matrix(clean_vector(list(N.col(k)))) for k in range(N.cols))) if N.cols \
         else N
 
     def nullspace(C: Matrix) -> Matrix | None:
-        found = _null_on_surface(ImmutableMatrix(C), fe)
+        found = null_on_surface(ImmutableMatrix(C), fe)
         if found is None:
             return None
         return Matrix(found[2])
@@ -1198,10 +812,10 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
     # each basis by Cramer's rule on the minor that proved its loop's order (non-zero on
     # the case), written with the case's substitution (a later case's may set more symbols)
     return _figures(net, tuple(node.rank for node in leaf.orders),
-                    tuple(_basis_with(node, Wrench, leaf.subs) for node in leaf.orders), N, idle)
+                    tuple(basis_with(node, Wrench, leaf.subs) for node in leaf.orders), N, idle)
 
 
-def _figures(net: _Network, orders: tuple, common: tuple, rates: Matrix,
+def _figures(net: Network, orders: tuple, common: tuple, rates: Matrix,
              idle: Matrix) -> MechanismMobility:
     """The figures of :class:`MechanismMobility` from each loop's order and common
     constraints, the joint rates allowed and the idle ones."""
@@ -1226,9 +840,9 @@ def _figures(net: _Network, orders: tuple, common: tuple, rates: Matrix,
     )
 
 
-def _idle(net: _Network, N: Matrix | None = None, nullspace: Any = None) -> Matrix | None:
+def _idle(net: Network, N: Matrix | None = None, nullspace: Any = None) -> Matrix | None:
     """A basis of the idle rates among the rates ``N`` (the network's null space by default),
-    the null space taken by ``nullspace`` (generic: ``_nullspace``); None where it says None."""
+    the null space taken by ``nullspace`` (generic: ``nullspace_basis``); None where it says None."""
     g = net.graph
     N = net.null if N is None else N
     if N.cols == 0:
@@ -1240,7 +854,7 @@ def _idle(net: _Network, N: Matrix | None = None, nullspace: Any = None) -> Matr
             if g.degree[link] == 2:
                 carried[link].extend(_elements(j, net.twists[e], side))
     for link in range(1, len(g.links)):
-        P = _path_matrix(net, link) * N
+        P = path_matrix(net, link) * N
         if g.degree[link] != 2:
             rows.append(P)
         else:
@@ -1248,17 +862,17 @@ def _idle(net: _Network, N: Matrix | None = None, nullspace: Any = None) -> Matr
     if not rows:
         return Matrix(N)
     C = Matrix.vstack(*rows)
-    K = (nullspace or _nullspace)(C)
+    K = (nullspace or nullspace_basis)(C)
     if K is None:
         return None
     if K.cols == 0:
         return zeros(N.rows, 0)
-    cols = [_clean(list((N * K).col(k))) for k in range(K.cols)]
+    cols = [clean_vector(list((N * K).col(k))) for k in range(K.cols)]
     return Matrix.hstack(*(Matrix(c) for c in cols))
 
 
 def _line_op(t: Any) -> Matrix:
-    return _ad(list(t))
+    return ad_matrix(list(t))
 
 
 def _point_op(p: Any) -> Matrix:
@@ -1286,194 +900,6 @@ def _elements(j: Joint, twists: tuple, side: int) -> list[Matrix]:
     return ops
 
 
-def _loop_terms(net: _Network) -> list:
-    """Per loop: the pairs ``(a, b, [X_a, X_b])`` in loop order and the squares ``(a, Y_a)``."""
-    g = net.graph
-    out = []
-    for loop in g.loops:
-        seq = []  # (freedom number, signed twist)
-        squares = []
-        for e, s in loop:
-            idx = list(range(len(net.twists[e])))
-            if s < 0:
-                idx.reverse()
-            for k in idx:
-                seq.append((g.offsets[e] + k, [s * x for x in net.twists[e][k]]))
-                y = net.accel[e][k]
-                if y is not None:
-                    squares.append((g.offsets[e] + k, [s * x for x in y]))
-        pairs = []
-        for u in range(len(seq)):
-            for v in range(u + 1, len(seq)):
-                c = _bracket(seq[u][1], seq[v][1])
-                if any(x != 0 for x in c):
-                    pairs.append((seq[u][0], seq[v][0], c))
-        out.append((pairs, squares))
-    return out
-
-
-def _forms(mech: Mechanism) -> list[Matrix]:
-    net = _network(mech)
-    N = net.null
-    M = N.cols
-    if M == 0 or not net.graph.loops:
-        return []
-    W = _nullspace(Matrix(net.A.T))
-    terms = _loop_terms(net)
-    F = net.A.cols
-    forms = []
-    for k in range(W.cols):
-        w = W.col(k)
-        G = zeros(F, F)
-        for i, (pairs, squares) in enumerate(terms):
-            wi = w[6 * i:6 * i + 6]
-            if all(x == 0 for x in wi):
-                continue
-            for a, b, c in pairs:
-                val = sum(x * y for x, y in zip(wi, c, strict=True))
-                G[a, b] += val / 2
-                G[b, a] += val / 2
-            for a, y in squares:
-                G[a, a] += sum(x * z for x, z in zip(wi, y, strict=True))
-        Q = (N.T * G * N).applyfunc(lambda e: radsimp(expand(e)))
-        if _trig(Q):  # reduced on the circle: a form zero there is the zero matrix
-            Q = Q.applyfunc(_circle_normal)
-        forms.append(Q)
-    return forms
-
-
-class _Undecided(Exception):
-    pass
-
-
-def _zero(e: Any) -> bool:
-    z = is_zero(radsimp(expand(e)))
-    if z is None:
-        raise _Undecided
-    return z
-
-
-def _squares(Q: Matrix) -> list[tuple[Any, Matrix]]:
-    """Lagrange's reduction: ``x^T Q x = sum d (l . x)**2`` with independent rows ``l``."""
-    Q = Matrix(Q)
-    n = Q.rows
-    out: list[tuple[Any, Matrix]] = []
-    while True:
-        nz = [(i, j) for i in range(n) for j in range(n) if not _zero(Q[i, j])]
-        if not nz:
-            return out
-        diag = [i for i, j in nz if i == j]
-        if diag:
-            i = diag[0]
-            a = Q[i, i]
-            u = Q.row(i)
-            out.append((a, (u / a).applyfunc(radsimp)))
-            Q = (Q - u.T * u / a).applyfunc(lambda e: radsimp(expand(e)))
-        else:
-            i, j = nz[0]
-            c = Q[i, j]
-            u, v = Q.row(i), Q.row(j)
-            out.append((1 / (2 * c), u + v))
-            out.append((-1 / (2 * c), u - v))
-            Q = (Q - (u.T * v + v.T * u) / c).applyfunc(lambda e: radsimp(expand(e)))
-
-
-def _sign(d: Any) -> int:
-    d = radsimp(d)
-    if d.is_positive:
-        return 1
-    if d.is_negative:
-        return -1
-    raise _Undecided
-
-
-def _restrict(Q: Matrix, K: Matrix) -> Matrix:
-    return (K.T * Q * K).applyfunc(lambda e: radsimp(expand(e)))
-
-
-def _cone(V: Matrix, forms: list[Matrix]) -> list[tuple[str, Matrix]]:
-    """The components of ``{x in span V: every form vanishes}``: ('space', basis) or ('quadric', basis)."""
-    forms = [f for f in forms if not all(_zero(e) for e in f)]
-    if not forms or V.cols == 0:
-        return [("space", V)]
-    analysed = []
-    for f in forms:
-        sq = _squares(f)
-        signs = [_sign(d) for d, _ in sq]
-        analysed.append((f, sq, signs))
-    # a semidefinite form first: its zero set is its kernel
-    for f, sq, signs in analysed:
-        if all(s > 0 for s in signs) or all(s < 0 for s in signs):
-            K = _nullspace(Matrix.vstack(*(l for _, l in sq)))
-            return _cone(V * K, [_restrict(h, K) for h in forms if h is not f])
-    for f, sq, signs in analysed:
-        if len(sq) == 2:  # indefinite of rank 2: two hyperplanes
-            (d1, l1), (d2, l2) = sq if signs[0] > 0 else sq[::-1]
-            c = radsimp(sqrt(radsimp(-d2 / d1)))
-            out = []
-            for normal in (l1 - c * l2, l1 + c * l2):
-                K = _nullspace(normal.applyfunc(radsimp))
-                out.extend(_cone(V * K, [_restrict(h, K) for h in forms if h is not f]))
-            return out
-    first = forms[0]
-    if all(_proportional(first, h) for h in forms[1:]):
-        return [("quadric", V)]
-    raise _Undecided
-
-
-def _proportional(a: Matrix, b: Matrix) -> bool:
-    M = Matrix.hstack(Matrix(list(a)), Matrix(list(b)))
-    return _rank(M.applyfunc(radsimp)) <= 1
-
-
-def _contained(a: Matrix, b: Matrix) -> bool:
-    """Whether span ``a`` lies in span ``b``."""
-    if a.cols == 0:
-        return True
-    if b.cols == 0:
-        return False
-    return _rank(Matrix.hstack(b, a)) == _rank(b)
-
-
-def _second_order(mech: Mechanism) -> SecondOrder:
-    net = _network(mech)
-    N = net.null
-    M = N.cols
-    forms = _forms(mech)
-    frozen = tuple(ImmutableMatrix(f) for f in forms)
-    if any(f.free_symbols for f in forms):
-        if all(expand(e) == 0 or _vanishes(e) for f in forms for e in f):
-            return SecondOrder(M, M, 1, False, (ImmutableMatrix(N),), frozen)
-        return SecondOrder(M, None, None, None, None, frozen)
-    try:
-        parts = _cone(Matrix.eye(M), forms)
-    except _Undecided:
-        return SecondOrder(M, None, None, None, None, frozen)
-    dims = [(kind, V, V.cols - (1 if kind == "quadric" else 0)) for kind, V in parts]
-    # the maximal components: drop a linear space inside another (the first of equal ones
-    # kept), and the point {0} wherever anything else is there (a quadric cone holds it too)
-    maximal = []
-    for i, (kind, V, d) in enumerate(dims):
-        if kind == "space" and any(
-            j != i and k2 == "space" and _contained(V, W) and (not _contained(W, V) or j < i)
-            for j, (k2, W, _) in enumerate(dims)
-        ):
-            continue
-        if kind == "space" and V.cols == 0 and any(
-            k2 == "quadric" or W.cols > 0 for k2, W, _ in dims
-        ):
-            continue
-        maximal.append((kind, V, d))
-    mobility = max(d for _, _, d in maximal)
-    cone = tuple(ImmutableMatrix(N * V) for kind, V, _ in maximal if kind == "space")
-    if any(kind == "quadric" for kind, _, _ in maximal):
-        cone_out: tuple[ImmutableMatrix, ...] | None = None
-    else:
-        cone_out = cone
-    return SecondOrder(M, mobility, len(maximal), len(maximal) > 1, cone_out, frozen)
-
-
-# ------------------------------------------------------------ from_parallel
 
 
 def _from_parallel(pm: ParallelMechanism) -> Mechanism:
@@ -1485,5 +911,3 @@ def _from_parallel(pm: ParallelMechanism) -> Mechanism:
         for k, j in enumerate(limb.joints):
             triples.append((chain[k], chain[k + 1], j))
     return Mechanism(triples, base="base")
-
-

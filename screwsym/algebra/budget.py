@@ -1,0 +1,123 @@
+r"""The work budget of an exact procedure, and the limit on the cases of a split.
+
+Exact decisions (a determinant of polynomials, a factorisation, a Groebner basis) can
+take longer than any user waits.  Every procedure of this floor *charges* its work,
+in units of polynomial arithmetic (:func:`charge`), to the budget of the call under way
+(:func:`case_budget`, a context manager), and the call stops with a ``ValueError``
+naming the method the user called once the budget is spent: an answer within its
+budget, or a clear refusal, never a call without a bound.  Outside a budget nothing is
+counted.  The units are calibrated so that one is about a microsecond: ``k! t_1 ... t_k``
+for a k x k determinant whose rows have at most ``t_i`` terms, ``t**2`` to factor a
+polynomial of ``t`` terms.
+
+SymPy has no such budget (its ``polys`` run to the end), hence this module.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+
+__all__ = [
+    "TooManyCases",
+    "OverBudget",
+    "charge",
+    "budget_name",
+    "case_budget",
+    "CaseList",
+    "MAX_CASES",
+    "BUDGET",
+]
+
+
+#: the default limit on the number of cases of ``rank_conditions``
+MAX_CASES = 200
+
+
+#: the default work budget of one case split (``rank_conditions``, ``reciprocal_cases``,
+#: ``substitutions``, ``ParallelMechanism.mobility_cases``): units of polynomial arithmetic,
+#: ``k! t_1 ... t_k`` for a k x k determinant whose rows have at most ``t_i`` terms, ``t**2``
+#: to factor a polynomial of ``t`` terms (about a microsecond each, measured; see ``charge``)
+BUDGET = 20_000_000
+
+
+class TooManyCases(Exception):
+    """A split found more cases than its limit (:class:`CaseList`)."""
+
+
+class OverBudget(Exception):
+    """The work of a split passed its budget (:func:`charge`)."""
+
+
+#: the work left to the case split under way in this thread (a one-item list), or None
+_LEFT: ContextVar[list[int] | None] = ContextVar("screwsym_case_budget", default=None)
+#: the name of the method the user called, whose budget holds (for the errors), or None
+_NAME: ContextVar[str | None] = ContextVar("screwsym_case_budget_name", default=None)
+
+
+def charge(units: int) -> None:
+    """Spend ``units`` of the budget of the case split under way (none: nothing is counted).
+
+    >>> with case_budget(10, "rank_conditions"):
+    ...     charge(11)
+    Traceback (most recent call last):
+    ...
+    ValueError: rank_conditions: the case split needs more work than budget=10 units of polynomial arithmetic; give some symbols values (xreplace) or pass a larger budget
+    >>> charge(11)  # outside a budget nothing is counted
+    """
+    left = _LEFT.get()
+    if left is not None:
+        left[0] -= units
+        if left[0] < 0:
+            raise OverBudget
+
+
+def budget_name(default: str) -> str:
+    """The name of the method whose budget holds (:func:`case_budget`), else ``default``: the
+    method a user called, for the errors of the procedures it runs.
+
+    >>> with case_budget(10, "mobility_cases"):
+    ...     budget_name("rank_conditions")
+    'mobility_cases'
+    >>> budget_name("rank_conditions")
+    'rank_conditions'
+    """
+    return _NAME.get() or default
+
+
+@contextmanager
+def case_budget(budget: int, name: str) -> Iterator[None]:
+    """Bound the work of the case splits run inside (the outermost budget holds).
+
+    ``budget`` is a positive ``int`` (the caller checks it); ``name`` is the method the
+    user called.  Past the budget, ``ValueError`` naming ``name`` and ``budget``.
+    """
+    if _LEFT.get() is not None:  # an outer call's budget bounds this one too
+        yield
+        return
+    token = _LEFT.set([budget])
+    name_token = _NAME.set(name)
+    try:
+        yield
+    except OverBudget:
+        raise ValueError(
+            f"{name}: the case split needs more work than budget={budget} units of "
+            "polynomial arithmetic; give some symbols values (xreplace) or pass a larger budget"
+        ) from None
+    finally:
+        _LEFT.reset(token)
+        _NAME.reset(name_token)
+
+
+class CaseList(list):
+    """The list of cases found so far, refusing to grow past ``limit``."""
+
+    def __init__(self, limit: int):
+        super().__init__()
+        self.limit = limit
+
+    def append(self, node) -> None:
+        if len(self) >= self.limit:
+            raise TooManyCases
+        super().append(node)

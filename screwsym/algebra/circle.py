@@ -1,0 +1,311 @@
+r"""``sin(q)`` and ``cos(q)`` as two ring symbols on the unit circle.
+
+Why s = sin(q), c = cos(q) with s**2 + c**2 = 1, and not t = tan(q/2): the half-angle
+substitution misses q = pi (t infinite) and writes every condition in t, a symbol the
+user never wrote; with s and c the factors of the minors are polynomials in the user's
+own sin(q) and cos(q), and every point of the circle is in the ring's reach.  The ring
+Q[s, c] / (s**2 + c**2 - 1) is an integral domain (the circle's polynomial is
+irreducible), and the polynomial of degree at most 1 in c is the unique normal form of
+a class (c**2 -> 1 - s**2: ``reduce_circle``), so zero is decided exactly by reducing.  The
+rational points (2t/(1+t**2), (1-t**2)/(1+t**2)) are dense on the circle, so a minor
+non-zero at one of them is a non-zero element, and a rank found there is the generic
+rank.  Factoring a reduced minor in Q[s, c, ...] covers its zeros on the circle (each
+zero is a zero of a factor).  A condition on sin(q) and cos(q) alone is decided at its
+points, found exactly through t (the real roots of the numerator of f(2t/(1+t**2),
+(1-t**2)/(1+t**2))) together with q = pi, which t cannot reach (``circle_points``).
+A symbol ``q`` that also appears outside sin and cos is never solved for (a condition
+``q sin(q) = 1`` is not a substitution): such a case is left undecided (None).
+"""
+
+from __future__ import annotations
+
+import random
+from functools import lru_cache
+from typing import Any
+
+from sympy import (
+    QQ,
+    Add,
+    And,
+    Dummy,
+    Eq,
+    Mul,
+    Or,
+    cancel,
+    cos,
+    expand_trig,
+    radsimp,
+    sin,
+    sqrt,
+)
+
+__all__ = [
+    "trig_symbol",
+    "trig_normal",
+    "trig_entries",
+    "angles_of",
+    "reduce_circle",
+    "on_circle",
+    "sample_point",
+    "circle_simplify",
+    "trig_substitute",
+    "circle_relations",
+    "half_angle_symbol",
+    "from_half_angle",
+    "has_trig",
+    "TRIG_BACK",
+]
+
+
+#: the ring symbol of ``sin(q)`` or ``cos(q)``, by ``(sin or cos, q)``; and back
+_TRIG_SYMBOL: dict[tuple[Any, Any], Dummy] = {}
+
+
+TRIG_BACK: dict[Dummy, Any] = {}
+
+
+def trig_symbol(f: Any, q: Any) -> Dummy:
+    d = _TRIG_SYMBOL.get((f, q))
+    if d is None:
+        d = Dummy(f"{f.__name__}_{q}", real=True)
+        _TRIG_SYMBOL[(f, q)] = d
+        TRIG_BACK[d] = f(q)
+    return d
+
+
+def trig_normal(e: Any) -> Any:
+    """``e`` with sin and cos of sums and integer multiples of symbols expanded (``expand_trig``)."""
+    if not e.has(sin, cos) or all(a.args[0].is_Symbol for a in e.atoms(sin, cos)):
+        return e
+    return expand_trig(e)
+
+
+def trig_entries(entries: list) -> list:
+    """``entries`` with ``sin(q)``, ``cos(q)`` (``q`` a symbol) replaced by their ring symbols."""
+    out = []
+    for e in entries:
+        e = trig_normal(e)
+        atoms = e.atoms(sin, cos)
+        if atoms:
+            e = e.xreplace({a: trig_symbol(a.func, a.args[0]) for a in atoms
+                            if a.args[0].is_Symbol})
+        out.append(e)
+    return out
+
+
+@lru_cache(maxsize=256)
+def angles_of(R) -> tuple:
+    """``(q, index of cos(q) or None, index of sin(q) or None)`` for each angle in the ring."""
+    found: dict[Any, list] = {}
+    for i, x in enumerate(R.symbols):
+        back = TRIG_BACK.get(x)
+        if back is not None:
+            found.setdefault(back.args[0], [None, None])[0 if back.func is cos else 1] = i
+    return tuple((q, ci, si) for q, (ci, si) in found.items())
+
+
+def reduce_circle(p, R):
+    """``p`` reduced modulo ``sin(q)**2 + cos(q)**2 - 1`` for each angle: degree <= 1 in cos(q)."""
+    pairs = angles_of(R)
+    if not pairs or not p:
+        return p
+    ring = p.ring
+    for _, ci, si in pairs:
+        if ci is None or si is None:
+            continue
+        one_minus_s2 = ring.one - ring.gens[si] ** 2
+        while True:
+            high = {m: v for m, v in p.items() if m[ci] >= 2}
+            if not high:
+                break
+            lowered = ring.from_dict({m[:ci] + (m[ci] - 2,) + m[ci + 1:]: v
+                                      for m, v in high.items()})
+            p = p - ring.from_dict(high) + lowered * one_minus_s2
+    return p
+
+
+def on_circle(t: Any) -> tuple:
+    """The point ``(sin q, cos q)`` of the unit circle at ``t = tan(q/2)``: every point but ``q = pi``.
+
+    ``(2 t / (1 + t**2), (1 - t**2) / (1 + t**2))``, for a number or a symbol ``t``:
+    the rational parametrisation, a bijection of the function field of the circle with
+    the rational functions of ``t`` (so a rank over those is the generic rank on the circle).
+
+    >>> from sympy import Rational
+    >>> from screwsym.algebra.circle import on_circle
+    >>> on_circle(Rational(1, 2))
+    (4/5, 3/5)
+    """
+    return 2 * t / (1 + t**2), (1 - t**2) / (1 + t**2)
+
+
+def sample_point(R, rnd: random.Random) -> list:
+    """A random rational point of the ring's symbols, ``(sin q, cos q)`` on the unit circle."""
+    K = R.domain
+    point = [K.convert(rnd.randint(-97, 97)) for _ in R.gens]
+    for _, ci, si in angles_of(R):
+        t = QQ(rnd.randint(-97, 97), rnd.randint(1, 97))
+        s, c = on_circle(t)
+        if si is not None:
+            point[si] = K.convert(s)
+        if ci is not None:
+            point[ci] = K.convert(c)
+    return point
+
+
+def circle_simplify(expr: Any) -> Any:
+    """``expr`` with ``Eq(sin(q), s) & (Eq(cos(q), c) | Eq(cos(q), -c))`` written ``Eq(sin(q), s)``.
+
+    On the unit circle ``sin(q) = s`` holds at exactly the two points
+    ``cos(q) = +-sqrt(1 - s**2)`` (one where ``s = +-1``); likewise with sin and
+    cos exchanged.  For merged cases: the points of one factor given as one
+    condition.
+
+    >>> from sympy import Eq, cos, sin, symbols
+    >>> from screwsym.algebra.circle import circle_simplify
+    >>> q = symbols("q", real=True)
+    >>> circle_simplify(Eq(sin(q), 0) & (Eq(cos(q), 1) | Eq(cos(q), -1)))
+    Eq(sin(q), 0)
+    >>> circle_simplify((Eq(sin(q), 0) & Eq(cos(q), 1)) | (Eq(sin(q), 0) & Eq(cos(q), -1)))
+    Eq(sin(q), 0)
+    >>> circle_simplify((Eq(sin(q), 1) & Eq(cos(q), 0)) | (Eq(sin(q), 0) & Eq(cos(q), -1)))
+    (Eq(sin(q), 0) & Eq(cos(q), -1)) | (Eq(sin(q), 1) & Eq(cos(q), 0))
+    """
+    def one(node: Any) -> Any:
+        if not isinstance(node, And):
+            return node
+        args = list(node.args)
+        for i, a in enumerate(args):
+            if not (isinstance(a, Eq) and isinstance(a.lhs, (sin, cos))):
+                continue
+            other = cos if isinstance(a.lhs, sin) else sin
+            q, value = a.lhs.args[0], a.rhs
+            need = {radsimp(cancel(r)) for r in (sqrt(1 - value**2), -sqrt(1 - value**2))}
+            for j, b in enumerate(args):
+                if j == i or not isinstance(b, Or):
+                    continue
+                if all(isinstance(e, Eq) and e.lhs == other(q) for e in b.args) and \
+                        {radsimp(cancel(e.rhs)) for e in b.args} == need:
+                    return And(*(x for k, x in enumerate(args) if k != j))
+        return node
+
+    def pairs(node: Any) -> Any:
+        if not isinstance(node, Or):
+            return node
+        args = [set(a.args) if isinstance(a, And) else {a} for a in node.args]
+        for i in range(len(args)):
+            for j in range(i + 1, len(args)):
+                da, db = args[i] - args[j], args[j] - args[i]
+                if len(da) != 1 or len(db) != 1:
+                    continue
+                (x,), (y,) = da, db
+                common = args[i] & args[j]
+                if not (isinstance(x, Eq) and isinstance(y, Eq) and x.lhs == y.lhs
+                        and isinstance(x.lhs, (sin, cos))):
+                    continue
+                other = cos if isinstance(x.lhs, sin) else sin
+                line = [a for a in common if isinstance(a, Eq) and a.lhs == other(x.lhs.args[0])]
+                if not line:
+                    continue
+                value = line[0].rhs
+                need = {radsimp(cancel(r)) for r in (sqrt(1 - value**2), -sqrt(1 - value**2))}
+                if {radsimp(cancel(x.rhs)), radsimp(cancel(y.rhs))} == need:
+                    rest = [And(*a) for k, a in enumerate(args) if k not in (i, j)]
+                    return pairs(Or(And(*common), *rest))
+        return node
+
+    if not expr.has(sin, cos):
+        return expr
+    return expr.replace(lambda x: isinstance(x, And), one).replace(
+        lambda x: isinstance(x, Or), pairs)
+
+
+def trig_substitute(obj: Any, subs: Any) -> Any:
+    """``obj.xreplace(subs)``, where keys ``sin(q)`` and ``cos(q)`` reach ``sin(2 q)``, ``cos(q + r)``.
+
+    The substitutions of a case split may set ``sin(q)`` and ``cos(q)`` of an
+    angle ``q`` (a point of the circle); sin and cos of sums and integer
+    multiples of ``q`` are expanded (``expand_trig``) before they are replaced.
+
+    >>> from sympy import symbols, sin, cos
+    >>> from screwsym.algebra.circle import trig_substitute
+    >>> q, r = symbols("q r", real=True)
+    >>> trig_substitute(sin(q + r) + cos(q), {sin(q): 0, cos(q): -1})
+    -sin(r) - 1
+    """
+    d = dict(subs)
+    angles = {k.args[0] for k in d if isinstance(k, (sin, cos))}
+    if angles and hasattr(obj, "atoms"):
+        for a in obj.atoms(sin, cos):
+            if a not in d and not a.args[0].is_Symbol and a.args[0].free_symbols & angles:
+                d[a] = expand_trig(a).xreplace(d)
+    return obj.xreplace(d) if d else obj
+
+
+def circle_relations(R) -> list:
+    """``sin(q)**2 + cos(q)**2 - 1`` for each angle with both in the ring."""
+    g = R.ring.gens
+    return [g[si] ** 2 + g[ci] ** 2 - 1 for _, ci, si in angles_of(R)
+            if ci is not None and si is not None]
+
+
+#: the half-angle symbol ``t = tan(q/2)`` of each angle ``q`` (:func:`half_angle_symbol`); and its angle
+_HALF: dict = {}
+
+
+_HALF_BACK: dict = {}
+
+
+def half_angle_symbol(q: Any) -> Dummy:
+    t = _HALF.get(q)
+    if t is None:
+        t = Dummy(f"t_{q}", real=True)
+        _HALF[q] = t
+        _HALF_BACK[t] = q
+    return t
+
+
+def from_half_angle(row: list) -> list:
+    """A vector over the rational functions of ``t = tan(q/2)`` (and the other symbols) as
+    polynomials in ``sin(q)``, ``cos(q)``: the same vector up to a factor non-zero generically.
+
+    Cleared of denominators and of the common factor, a polynomial vector of degree ``D``
+    in ``t`` divided by ``(1 + t**2)**n``, ``n = ceil(D/2)``, is one of degree ``n`` in
+    ``sin(q)`` and ``cos(q)``: with ``t = sin(q)/(1 + cos(q))`` and ``1 + t**2 =
+    2/(1 + cos(q))``, ``t**k/(1 + t**2)**n = sin(q)**(k % 2) (1 - cos(q))**(k // 2)
+    (1 + cos(q))**(n - k + k // 2) / 2**n`` (``sin(q)**2 = (1 - cos(q)) (1 + cos(q))``),
+    a polynomial for every ``k <= 2 n``.
+    """
+    nz = [e for e in row if e]
+    ring = nz[0].numer.ring
+    den = ring.one
+    for e in nz:
+        den = den.lcm(e.denom)
+    polys = [e.numer * den.exquo(e.denom) if e else ring.zero for e in row]
+    g = ring.zero
+    for p in polys:
+        if p:
+            g = p if not g else g.gcd(p)
+    polys = [p.exquo(g) if p else p for p in polys]
+    angles = {i: _HALF_BACK[x] for i, x in enumerate(ring.symbols) if x in _HALF_BACK}
+    half = {i: (max(p.degree(i) for p in polys if p) + 1) // 2 for i in angles}
+    K0 = ring.domain
+    out = []
+    for p in polys:
+        terms = []
+        for monom, c in p.terms():
+            factors = [K0.to_sympy(c)]
+            for i, k in enumerate(monom):
+                if i in angles:
+                    q, n = angles[i], half[i]
+                    factors.append(sin(q) ** (k % 2) * (1 - cos(q)) ** (k // 2)
+                                   * (1 + cos(q)) ** (n - k + k // 2))
+                elif k:
+                    factors.append(ring.symbols[i] ** k)
+            terms.append(Mul(*factors))
+        out.append(Add(*terms))
+    return out
+
+
+def has_trig(entries: Any) -> bool:
+    return any(e.has(sin, cos) for e in entries)

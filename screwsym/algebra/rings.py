@@ -1,0 +1,221 @@
+r"""Expressions as columns of a sparse polynomial ring, and back.
+
+A matrix of rational functions of symbols (and of ``sin(q)``, ``cos(q)``, see
+:mod:`~screwsym.algebra.circle`), with rational or algebraic coefficients such as
+``sqrt(3)``, becomes its columns over ``K[x_1, ..., x_n]`` (:func:`to_ring`), each
+column cleared of its denominators (a non-zero multiple spans the same screw), ``K``
+the smallest field of the coefficients (:func:`number_field`, SymPy's
+``QQ.algebraic_field``).  The arithmetic there is exact and fraction-free, so zero is
+decided by reducing, never by ``simplify``; :func:`to_expr` brings an element back in
+the user's symbols.
+
+Where it does not simply call SymPy: the coefficients go through
+:func:`field_element`, which converts only the irrational factors with ``K.from_sympy``
+(cached), because ``from_sympy`` computes a minimal polynomial each time and fails on
+huge rational factors (SymPy 1.14: ``zoo is not in any domain``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
+
+from sympy import (
+    QQ,
+    Add,
+    CRootOf,
+    Dummy,
+    ImmutableMatrix,
+    Symbol,
+    cancel,
+    cos,
+    sin,
+)
+from sympy.polys.polyutils import parallel_dict_from_expr
+
+from .circle import TRIG_BACK, angles_of, reduce_circle, trig_entries
+from .numberfield import field_lcm
+
+# Exact linear algebra over a polynomial ring
+
+
+__all__ = [
+    "PolyColumns",
+    "number_field",
+    "field_element",
+    "to_ring",
+    "vanishes",
+    "circle_normal",
+    "rational_parts",
+    "to_expr",
+    "ring_element",
+    "ring_with",
+]
+
+
+@dataclass(frozen=True)
+class PolyColumns:
+    """A system as polynomial columns: ``cols`` (n rows of 6 ring elements) and its ring.
+
+    ``scales``: per column, the polynomial it was multiplied by to clear its denominators
+    (``cols[j] = scales[j] * column j`` as functions, on the unit circle of each angle).
+    """
+
+    ring: Any
+    gens: tuple
+    cols: tuple  # one tuple of 6 ring elements per screw (of M.rows elements in general)
+    scales: tuple = ()
+
+
+@lru_cache(maxsize=64)
+def number_field(numbers: tuple):
+    """``QQ``, or the algebraic number field ``QQ<numbers>``."""
+    return QQ.algebraic_field(*numbers) if numbers else QQ
+
+
+def field_element(K, c):
+    """A SymPy number as an element of ``K``: its rational parts times cached algebraic ones.
+
+    Only the irrational factors (``sqrt(3)``) go through ``K.from_sympy``,
+    which computes a minimal polynomial each time and fails on huge rational
+    factors (SymPy 1.14: ``zoo is not in any domain``).
+    """
+    total = K.zero
+    for term in Add.make_args(c):
+        q, rest = term.as_coeff_Mul()
+        total += K.convert(QQ.from_sympy(q)) * (K.one if rest == 1 else _algebraic(K, rest))
+    return total
+
+
+@lru_cache(maxsize=1024)
+def _algebraic(K, c):
+    return K.from_sympy(c)
+
+
+def to_ring(M: ImmutableMatrix) -> PolyColumns:
+    """The columns of ``M`` as polynomials, each column cleared of its denominators.
+
+    A column multiplied by a non-zero polynomial spans the same screw wherever
+    that polynomial is non-zero, and where it vanishes the column itself is
+    undefined.  ``sin(q)`` and ``cos(q)`` of a symbol ``q`` become two ring
+    symbols on the unit circle (see :func:`trig_entries`); raises
+    ``ValueError`` for other entries that are not rational functions of
+    symbols (``tan(t)``, ``sqrt(x)``).
+    """
+    return _to_ring_cached(ImmutableMatrix(M))
+
+
+def vanishes(e: Any) -> bool:
+    """Whether ``e`` is identically zero: a rational function of symbols and of ``sin(q)``,
+    ``cos(q)``, decided in the ring (``sin(q)**2 + cos(q)**2 = 1`` for each angle).
+
+    >>> from sympy import cos, sin, symbols
+    >>> from screwsym.algebra.rings import vanishes
+    >>> q = symbols("q", real=True)
+    >>> vanishes((1 + cos(q)) * (1 - cos(q)) - sin(q)**2), vanishes(sin(q) - 1)
+    (True, False)
+    """
+    if not e.has(sin, cos, CRootOf):
+        return cancel(e) == 0
+    # in the ring: over the algebraic field of the CRootOf (cancel would take it for a symbol)
+    return not to_ring(ImmutableMatrix([e])).cols[0][0]
+
+
+def circle_normal(e: Any) -> Any:
+    """``e`` with its numerator and denominator reduced by ``sin(q)**2 + cos(q)**2 = 1``
+    (each of degree at most 1 in ``cos(q)``: the normal form on the circle).
+
+    >>> from sympy import cos, sin, symbols
+    >>> from screwsym.algebra.rings import circle_normal
+    >>> q = symbols("q", real=True)
+    >>> circle_normal(sin(q)**3 + sin(q)*cos(q)**2)
+    sin(q)
+    """
+    if not e.has(sin, cos):
+        return e
+    rg = to_ring(ImmutableMatrix([e]))
+    return to_expr(rg.cols[0][0], rg.ring) / to_expr(rg.scales[0], rg.ring)
+
+
+def rational_parts(entries: list, what: str) -> tuple[list, list, list]:
+    """The symbols, the algebraic numbers and the numerators and denominators of ``entries``.
+
+    ``sin(q)`` and ``cos(q)`` of symbols are first replaced by their ring symbols
+    (:func:`trig_entries`).  Raises ``ValueError`` naming ``what`` (``"screws: expected
+    entries"``, ...) for an entry that is not a rational function of symbols and of sin
+    and cos of symbols with rational or algebraic coefficients.
+    """
+    entries = trig_entries(entries)
+    syms = sorted(set().union(*(e.free_symbols for e in entries)) if entries else set(), key=str)
+    numbers: list = []
+    parts = [part for e in entries for part in e.as_numer_denom()]
+    if parts:
+        _, found = parallel_dict_from_expr(parts)
+        for g in found["gens"] if isinstance(found, dict) else found:
+            if isinstance(g, Symbol):
+                continue
+            # a CRootOf of a rational polynomial is algebraic (SymPy 1.13 leaves it None)
+            if g.is_number and (g.is_algebraic or isinstance(g, CRootOf)):
+                numbers.append(g)
+                continue
+            raise ValueError(
+                f"{what} that are rational functions of symbols and polynomial in sin and "
+                f"cos of symbols with rational or algebraic coefficients, got {g} in an entry"
+            )
+    return syms, numbers, parts
+
+
+@lru_cache(maxsize=512)
+def _to_ring_cached(M: ImmutableMatrix) -> PolyColumns:
+    entries = list(M)
+    syms, numbers, parts = rational_parts(entries, "screws: expected entries")
+    K = number_field(tuple(sorted(numbers, key=str)))
+    gens = tuple(syms) if syms else (Dummy("c"),)
+    R = K[gens]
+    ring = R.ring
+    if entries:
+        dicts, _ = parallel_dict_from_expr(parts, gens=gens)
+        polys = [ring.from_dict({m: field_element(K, c) for m, c in d.items()}) for d in dicts]
+    else:
+        polys = []
+    cols, scales = [], []
+    for j in range(M.cols):
+        # M is row-major: entry (i, j) is number i * cols + j, its numerator and denominator
+        nums = [polys[2 * (i * M.cols + j)] for i in range(M.rows)]
+        dens = [polys[2 * (i * M.cols + j) + 1] for i in range(M.rows)]
+        if all(d.is_ground for d in dens):
+            cols.append(tuple(n if d == 1 else n * K.quo(K.one, d.LC)
+                              for n, d in zip(nums, dens, strict=True)))
+            scales.append(R.one)
+            continue
+        den = R.one
+        for d in dens:
+            den = field_lcm(den, d, R) if K.is_Algebraic else R.lcm(den, d)
+        cols.append(tuple(n * R.exquo(den, d) for n, d in zip(nums, dens, strict=True)))
+        scales.append(den)
+    if angles_of(R):
+        cols = [tuple(reduce_circle(e, R) for e in col) for col in cols]
+        scales = [reduce_circle(d, R) for d in scales]
+    return PolyColumns(R, tuple(syms), tuple(cols), tuple(scales))
+
+
+def to_expr(p, R) -> Any:
+    """A ring element as a SymPy expression in the user's symbols (``sin(q)``, not its ring symbol)."""
+    e = R.to_sympy(p)
+    return e.xreplace(TRIG_BACK) if angles_of(R) else e
+
+
+def ring_element(e: Any, R) -> Any:
+    """The polynomial ``e`` (in the user's symbols, ``sin(q)`` allowed) as an element of ``R``."""
+    e = trig_entries([e])[0]
+    (d,), _ = parallel_dict_from_expr([e], gens=R.symbols)
+    K = R.domain
+    return R.ring.from_dict({m: field_element(K, c) for m, c in d.items()})
+
+
+def ring_with(M: ImmutableMatrix, fe: Any) -> PolyColumns:
+    """``M``'s columns in a ring that has ``fe``'s symbols too (a case of an earlier system)."""
+    extra = ImmutableMatrix(M.rows, 1, [fe] + [0] * (M.rows - 1))
+    rg = to_ring(ImmutableMatrix.hstack(M, extra))
+    return PolyColumns(rg.ring, rg.gens, rg.cols[:-1], rg.scales[:-1])
