@@ -53,19 +53,16 @@ screwsym.codegen.lambdify
 
 from __future__ import annotations
 
-import hashlib
 import sys
 import threading
 import types
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 import numpy as np
-import sympy
 from sympy import Eq, Ne, Piecewise, nan
 
-from ..codegen import lambdify, load_index, resolve_backend, save_index
+from ..codegen import code_digest, lambdify, load_index, resolve_backend, save_index
 from ..core import screw as _core
 from ..core.line import LineVector
 from ..core.screw import Screw
@@ -228,24 +225,6 @@ def _definitions() -> dict[str, tuple[list, object, list[str]]]:
 
 _BUILT: dict[tuple[str, str], Callable] = {}
 _LOCK = threading.Lock()
-_DIGEST: list[str] = []
-
-
-def _source_digest() -> str:
-    """A digest of screwsym's own source and SymPy's version: the tag of a numba index.
-
-    A new process finds its compiled functions by this tag without building
-    the symbolic expressions again; any change to a formula changes it.  Every
-    ``.py`` file of the package counts, in every subpackage, by its path
-    relative to the package (so moving a definition changes the tag too).
-    """
-    if not _DIGEST:
-        root = Path(__file__).resolve().parents[1]
-        h = hashlib.sha256(sympy.__version__.encode())
-        for path in sorted(root.rglob("*.py")):
-            h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
-        _DIGEST.append(h.hexdigest()[:24])
-    return _DIGEST[0]
 
 
 #: the functions of degree 0 in each part of the screw: ``f(a S; b S0) = (b/a) f(S; S0)``
@@ -313,7 +292,7 @@ def _function(name: str, backend: str | None = None) -> Callable:
     if fn is None:
         with _LOCK:
             fn = _BUILT.get(key)
-            tag = f"{name}-{_source_digest()}"
+            tag = f"{name}-{code_digest()}"
             if fn is None and backend in ("numba", "numpy"):
                 fn = load_index(tag, _DOCS[name], backend)
             if fn is None:

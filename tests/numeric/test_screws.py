@@ -229,14 +229,14 @@ def test_a_new_process_loads_the_compiled_functions_without_rebuilding_them(tmp_
 _PROBE = textwrap.dedent("""
     import json, sys
     import numpy as np
-    from screwsym import numeric
+    from screwsym import codegen, numeric
     built, definition = [], numeric.screws._definition
     def spy(name):
         built.append(name)
         return definition(name)
     numeric.screws._definition = spy
     h = float(numeric.pitch(np.array([1.0, 1, 0, 1, 0, 0]))) if sys.argv[1] == "pitch" else None
-    print(json.dumps({"file": numeric.screws.__file__, "tag": numeric.screws._source_digest(),
+    print(json.dumps({"file": numeric.screws.__file__, "tag": codegen.code_digest(),
                       "built": built, "pitch": h}))
 """)
 
