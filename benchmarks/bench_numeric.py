@@ -113,7 +113,7 @@ def symengine_functions():
         return {}
     import symengine as se
 
-    defs = numeric.screws._definitions()
+    defs = {name: d.build() for name, d in numeric.screws.DEFINITIONS.items()}
     s = screwsym.Screw(screwsym.vector("S"), screwsym.vector("S0"))
     defs["pitch"] = ([s], screwsym.pitch(s), ["s"])
     out = {}

@@ -118,7 +118,7 @@ from typing import Any
 from . import _build
 from ._build import BLOCK, cache_dir, clear_cache, load_index, save_index
 from ._emit import c_source as _c_source_from_plan
-from ._plan import build_plan
+from ._plan import build_plan, code_digest
 from ._runtime import describe_trailing
 
 __all__ = [
@@ -132,6 +132,7 @@ __all__ = [
     "resolve_backend",
     "load_index",
     "save_index",
+    "code_digest",
 ]
 
 #: the back ends :func:`lambdify` knows

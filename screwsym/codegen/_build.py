@@ -85,9 +85,10 @@ def cache_dir() -> Path | None:
     is not followed) owned by this user, that others cannot write and this
     process can.  Its subfolders (``numba/``, ``c/``) are held to the same
     rules.  Files are named by a content hash of the generated code (which
-    includes a digest of screwsym's code generator) and by the SHA-256 of
-    their own content, which is checked before a file is loaded; they are
-    written atomically, and at most :data:`DISK_FILES` of each kind are kept.
+    includes :func:`screwsym.codegen.code_digest`, a digest of screwsym's
+    source) and by the SHA-256 of their own content, which is checked before
+    a file is loaded; they are written atomically, and at most
+    :data:`DISK_FILES` of each kind are kept.
     """
     root = os.environ.get("SCREWSYM_CACHE_DIR")
     if not root:

@@ -379,12 +379,25 @@ _DIGEST: list[str] = []
 
 
 def code_digest() -> str:
-    """A digest of this package's source: generated code from another version never matches."""
+    """A digest of screwsym's source and SymPy's version: generated code from another version never matches.
+
+    It enters the key of every generated function (so the names of the
+    modules and libraries in the disk cache) and tags the index from which
+    :mod:`screwsym.numeric` reads its functions back in a new process without
+    building their symbolic expressions again.  It covers SymPy's version and
+    every ``.py`` file of screwsym, in every subpackage, each by its path
+    relative to the package: the code generator and the formulas it is given
+    alike (an edited formula of the core, or a module moved, changes it).
+    This is the union of what the generated code and the numeric functions'
+    index depend on, so that neither cache can serve code from other source.
+    Computed once per process (a few milliseconds).
+    """
     if not _DIGEST:
+        root = Path(__file__).resolve().parents[1]
         h = hashlib.sha256(sympy.__version__.encode())
-        for path in sorted(Path(__file__).resolve().parent.glob("*.py")):
-            h.update(path.name.encode() + b"\0" + path.read_bytes())
-        _DIGEST.append(h.hexdigest()[:16])
+        for path in sorted(root.rglob("*.py")):
+            h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+        _DIGEST.append(h.hexdigest()[:24])
     return _DIGEST[0]
 
 

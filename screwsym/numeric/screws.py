@@ -5,9 +5,13 @@ Explanation
 
 Each function here is *generated* by :func:`screwsym.lambdify` from the
 symbolic operation of the core applied to generic symbols, for instance
-``pitch(Screw(vector('S'), vector('S0')))``, when this module is imported.
+``pitch(Screw(vector('S'), vector('S0')))``, on first use.
 The numeric and the symbolic results therefore cannot drift apart: change
-the formula in :mod:`screwsym.core.screw` and the numbers follow.
+the formula in :mod:`screwsym.core.screw` and the numbers follow.  Each is
+defined once in this module, by a function decorated with
+:func:`numeric_definition` that returns the generic arguments and the core's
+operation on them, and whose docstring is the generated function's;
+:data:`NAMES` lists them in the order they are defined.
 
 Array convention: a screw is an array of shape ``(..., 6)`` in the book's
 order ``(S; S0)`` (a twist ``(omega; v_O)``, a wrench ``(f; C_O)``), a point
@@ -53,19 +57,18 @@ screwsym.codegen.lambdify
 
 from __future__ import annotations
 
-import hashlib
+import re
 import sys
 import threading
 import types
-from collections.abc import Callable
-from pathlib import Path
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import sympy
 from sympy import Eq, Ne, Piecewise, nan
 
-from ..codegen import lambdify, load_index, resolve_backend, save_index
+from ..codegen import code_digest, lambdify, load_index, resolve_backend, save_index
 from ..core import screw as _core
 from ..core.line import LineVector
 from ..core.screw import Screw
@@ -73,22 +76,105 @@ from ..core.twist import Twist
 from ..core.vectors import vector
 from ..core.wrench import Wrench
 
-#: the names of the generated functions, in a fixed order
-NAMES: tuple[str, ...] = (
-    "pitch",
-    "foot",
-    "reciprocal_product",
-    "shift_origin",
-    "line_through",
-    "velocity_at",
-    "moment_about",
-)
+#: what a definition returns: its generic arguments by parameter name, in order, and the
+#: core's operation applied to them
+_Made = tuple[dict[str, Any], Any]
 
-# the generated functions are module attributes made on first use (__getattr__ below)
-__all__ = [*NAMES, "functions_for", "NAMES"]
 
-_DOCS = {
-    "pitch": r"""The pitch ``h = S . S0 / S . S`` (1.34) of screws ``(..., 6)``; returns ``(...)``.
+@dataclass(frozen=True)
+class Definition:
+    """One generated function of this module: its name, its docstring and how to make it.
+
+    ``make()`` returns ``(params, expr)``: the generic symbolic arguments
+    (a screw of symbols, a vector of symbols) by the generated function's
+    parameter names, in order, and the core's operation applied to them.
+    """
+
+    name: str
+    doc: str
+    make: Callable[[], _Made]
+
+    def build(self) -> tuple[list, Any, list[str]]:
+        """``(args, expr, parameter names)``, as :func:`screwsym.codegen.lambdify` takes them."""
+        params, expr = self.make()
+        return list(params.values()), expr, list(params)
+
+
+class Definitions(Mapping[str, Definition]):
+    """The registry of the generated functions: name -> :class:`Definition`, in the order defined.
+
+    :meth:`register` is the decorator of one definition; this module's
+    registry is :data:`DEFINITIONS` (its decorator :func:`numeric_definition`),
+    closed once the module's definitions are in, so that :data:`NAMES` lists
+    all of them.
+
+    >>> from sympy import Symbol
+    >>> registry = Definitions()
+    >>> @registry.register
+    ... def _half():
+    ...     "Half of ``x``."
+    ...     x = Symbol("x", real=True)
+    ...     return {"x": x}, x / 2
+    >>> list(registry), registry["half"].build()
+    (['half'], ([x], x/2, ['x']))
+    >>> @registry.register
+    ... def _half():
+    ...     "Half again."
+    Traceback (most recent call last):
+    ...
+    ValueError: _half: a function 'half' is defined already
+    """
+
+    def __init__(self) -> None:
+        self._by_name: dict[str, Definition] = {}
+        self._closed = False
+
+    def register(self, make: Callable[[], _Made]) -> Definition:
+        """Register ``make`` as the function named as ``make`` without its leading underscore.
+
+        ``def _pitch(): ...`` defines ``pitch``: the underscore leaves the
+        module attribute ``pitch`` to the generated function, made on first
+        use.  The docstring of ``make`` is the generated function's.  A name
+        defined twice, a name not of that form, a missing docstring or a
+        closed registry raise ``ValueError``.
+        """
+        where = getattr(make, "__name__", repr(make))
+        if self._closed:
+            raise ValueError(f"{where}: the registry is closed (the module's definitions are in)")
+        if not re.fullmatch(r"_[A-Za-z]\w*", where):
+            raise ValueError(f"{where}: expected the name '_' + the generated function's name")
+        name = where[1:]
+        if name in self._by_name:
+            raise ValueError(f"{where}: a function {name!r} is defined already")
+        doc = getattr(make, "__doc__", None)
+        if not isinstance(doc, str) or not doc.strip():
+            raise ValueError(f"{where}: expected a docstring (the generated function's)")
+        definition = Definition(name, doc, make)
+        self._by_name[name] = definition
+        return definition
+
+    def close(self) -> None:
+        """Refuse further definitions."""
+        self._closed = True
+
+    def __getitem__(self, name: str) -> Definition:
+        return self._by_name[name]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._by_name)
+
+    def __len__(self) -> int:
+        return len(self._by_name)
+
+
+#: the generated functions' definitions, in the order of :data:`NAMES`
+DEFINITIONS = Definitions()
+numeric_definition = DEFINITIONS.register
+
+
+@numeric_definition
+def _pitch() -> _Made:
+    r"""The pitch ``h = S . S0 / S . S`` (1.34) of screws ``(..., 6)``; returns ``(...)``.
 
     Generated from :func:`screwsym.pitch`.  A couple ``(0; C)`` gives
     ``inf`` (symbolically ``oo``), the zero screw ``nan`` (symbolically an
@@ -101,8 +187,22 @@ _DOCS = {
     >>> from screwsym.numeric import pitch
     >>> pitch(np.array([[1.0, 0, 0, 1, 0, 0], [0, 0, 0, 0, 0, 1], [0, 0, 0, 0, 0, 0]]))
     array([ 1., inf, nan])
-    """,
-    "foot": r"""The axis point nearest the origin, ``P = S x S0 / S . S`` (1.16): ``(..., 6)`` -> ``(..., 3)``.
+    """
+    s = Screw(vector("S"), vector("S0"))
+    SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
+    # Only the general branch is the book's formula; the special cases say
+    # what the symbolic pitch gives for a couple (oo) and that the zero screw
+    # has none (nan here, an error there).
+    return {"s": s}, Piecewise(
+        (_core.pitch(Screw.couple(s.S0)), Eq(SS, 0) & Ne(S0S0, 0)),
+        (nan, Eq(SS, 0)),
+        (_core.pitch(s), True),
+    )
+
+
+@numeric_definition
+def _foot() -> _Made:
+    r"""The axis point nearest the origin, ``P = S x S0 / S . S`` (1.16): ``(..., 6)`` -> ``(..., 3)``.
 
     Generated from :func:`screwsym.foot`.  A couple has no axis in finite
     space: its foot point is ``nan`` (symbolically an error).
@@ -114,8 +214,14 @@ _DOCS = {
     >>> from screwsym.numeric import foot
     >>> foot(np.array([1.0, 1, 0, 1, 0, 0]))               # Example 1.4
     array([ 0. ,  0. , -0.5])
-    """,
-    "reciprocal_product": r"""The reciprocal product ``S1 . S2^0 + S2 . S1^0`` (1.45) of two screw arrays.
+    """
+    s = Screw(vector("S"), vector("S0"))
+    return {"s": s}, _core.foot(s)
+
+
+@numeric_definition
+def _reciprocal_product() -> _Made:
+    r"""The reciprocal product ``S1 . S2^0 + S2 . S1^0`` (1.45) of two screw arrays.
 
     Generated from :func:`screwsym.reciprocal_product`; ``(..., 6)`` and
     ``(..., 6)`` (batch shapes broadcast) -> ``(...)``.
@@ -127,8 +233,14 @@ _DOCS = {
     >>> from screwsym.numeric import reciprocal_product
     >>> reciprocal_product(np.array([1.0, 0, 0, 0, 0, 0]), np.array([0.0, 1, 0, 0, 0, 1]))
     np.float64(0.0)
-    """,
-    "shift_origin": r"""The screw with its dual part taken about ``A``: ``(S; S0 - A x S)`` (1.32).
+    """
+    s1, s2 = Screw(vector("S"), vector("S0")), Screw(vector("T"), vector("T0"))
+    return {"s1": s1, "s2": s2}, _core.reciprocal_product(s1, s2)
+
+
+@numeric_definition
+def _shift_origin() -> _Made:
+    r"""The screw with its dual part taken about ``A``: ``(S; S0 - A x S)`` (1.32).
 
     Generated from :func:`screwsym.shift_origin`; screws ``(..., 6)`` and
     points ``(..., 3)`` -> ``(..., 6)``.
@@ -140,8 +252,14 @@ _DOCS = {
     >>> from screwsym.numeric import shift_origin
     >>> shift_origin(np.array([1.0, 0, 0, 2, 0, -1]), np.array([0.0, 1, 0]))
     array([1., 0., 0., 2., 0., 0.])
-    """,
-    "line_through": r"""The line through ``A`` and ``B``, ``(B - A; A x (B - A))`` (1.1, 1.9).
+    """
+    s, A = Screw(vector("S"), vector("S0")), vector("A")
+    return {"s": s, "A": A}, _core.shift_origin(s, A)
+
+
+@numeric_definition
+def _line_through() -> _Made:
+    r"""The line through ``A`` and ``B``, ``(B - A; A x (B - A))`` (1.1, 1.9).
 
     Generated from :meth:`screwsym.LineVector.through`; points ``(..., 3)``
     -> line vectors ``(..., 6)``.  ``A = B`` gives the zero screw (the
@@ -154,8 +272,14 @@ _DOCS = {
     >>> from screwsym.numeric import line_through
     >>> line_through(np.array([1.0, 0, 0]), np.array([1.0, 1, 0]))
     array([0., 1., 0., 0., 0., 1.])
-    """,
-    "velocity_at": r"""The velocity ``v_P = v_O + omega x P`` of the body point at ``point``.
+    """
+    A, B = vector("A"), vector("B")
+    return {"A": A, "B": B}, LineVector.through(A, B)
+
+
+@numeric_definition
+def _velocity_at() -> _Made:
+    r"""The velocity ``v_P = v_O + omega x P`` of the body point at ``point``.
 
     Generated from :meth:`screwsym.Twist.velocity_at`; twists ``(omega;
     v_O)`` ``(..., 6)`` and points ``(..., 3)`` -> ``(..., 3)``.
@@ -167,8 +291,14 @@ _DOCS = {
     >>> from screwsym.numeric import velocity_at
     >>> velocity_at(np.array([0.0, 0, 1, 0, 0, 0]), np.array([1.0, 0, 0]))
     array([0., 1., 0.])
-    """,
-    "moment_about": r"""The moment ``C_A = C_O - A x f`` of a wrench about ``point`` (1.32).
+    """
+    t, P = Twist(vector("omega"), vector("v")), vector("P")
+    return {"twist": t, "point": P}, t.velocity_at(P)
+
+
+@numeric_definition
+def _moment_about() -> _Made:
+    r"""The moment ``C_A = C_O - A x f`` of a wrench about ``point`` (1.32).
 
     Generated from :meth:`screwsym.Wrench.moment_about`; wrenches ``(f;
     C_O)`` ``(..., 6)`` and points ``(..., 3)`` -> ``(..., 3)``.
@@ -180,72 +310,21 @@ _DOCS = {
     >>> from screwsym.numeric import moment_about
     >>> moment_about(np.array([0.0, 0, -10, 0, 10, 0]), np.array([1.0, 0, 0]))
     array([0., 0., 0.])
-    """,
-}
-
-if tuple(_DOCS) != NAMES:  # pragma: no cover - a module kept in step with itself
-    raise ImportError("screwsym.numeric: the docstrings do not match NAMES")
+    """
+    w, P = Wrench(vector("f"), vector("C")), vector("P")
+    return {"wrench": w, "point": P}, w.moment_about(P)
 
 
-def _definition(name: str) -> tuple[list, object, list[str]]:
-    """The function ``name`` as ``(args, expr, parameter names)``, from the core's operations."""
-    s = Screw(vector("S"), vector("S0"))
-    if name == "pitch":
-        SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
-        # Only the general branch is the book's formula; the special cases say
-        # what the symbolic pitch gives for a couple (oo) and that the zero screw
-        # has none (nan here, an error there).
-        pitch_expr = Piecewise(
-            (_core.pitch(Screw.couple(s.S0)), Eq(SS, 0) & Ne(S0S0, 0)),
-            (nan, Eq(SS, 0)),
-            (_core.pitch(s), True),
-        )
-        return [s], pitch_expr, ["s"]
-    if name == "foot":
-        return [s], _core.foot(s), ["s"]
-    if name == "reciprocal_product":
-        s2 = Screw(vector("T"), vector("T0"))
-        return [s, s2], _core.reciprocal_product(s, s2), ["s1", "s2"]
-    if name == "shift_origin":
-        A = vector("A")
-        return [s, A], _core.shift_origin(s, A), ["s", "A"]
-    if name == "line_through":
-        A, B = vector("A"), vector("B")
-        return [A, B], LineVector.through(A, B), ["A", "B"]
-    if name == "velocity_at":
-        t, P = Twist(vector("omega"), vector("v")), vector("P")
-        return [t, P], t.velocity_at(P), ["twist", "point"]
-    if name == "moment_about":
-        w, P = Wrench(vector("f"), vector("C")), vector("P")
-        return [w, P], w.moment_about(P), ["wrench", "point"]
-    raise ValueError(f"name: expected one of {', '.join(NAMES)}, got {name!r}")
+DEFINITIONS.close()
 
+#: the names of the generated functions, in a fixed order: that of their definitions above
+NAMES: tuple[str, ...] = tuple(DEFINITIONS)
 
-def _definitions() -> dict[str, tuple[list, object, list[str]]]:
-    """Each function as ``(args, expr, parameter names)``, from the core's operations."""
-    return {name: _definition(name) for name in NAMES}
-
+# the generated functions are module attributes made on first use (__getattr__ below)
+__all__ = [*NAMES, "functions_for", "NAMES"]
 
 _BUILT: dict[tuple[str, str], Callable] = {}
 _LOCK = threading.Lock()
-_DIGEST: list[str] = []
-
-
-def _source_digest() -> str:
-    """A digest of screwsym's own source and SymPy's version: the tag of a numba index.
-
-    A new process finds its compiled functions by this tag without building
-    the symbolic expressions again; any change to a formula changes it.  Every
-    ``.py`` file of the package counts, in every subpackage, by its path
-    relative to the package (so moving a definition changes the tag too).
-    """
-    if not _DIGEST:
-        root = Path(__file__).resolve().parents[1]
-        h = hashlib.sha256(sympy.__version__.encode())
-        for path in sorted(root.rglob("*.py")):
-            h.update(path.relative_to(root).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
-        _DIGEST.append(h.hexdigest()[:24])
-    return _DIGEST[0]
 
 
 #: the functions of degree 0 in each part of the screw: ``f(a S; b S0) = (b/a) f(S; S0)``
@@ -313,12 +392,13 @@ def _function(name: str, backend: str | None = None) -> Callable:
     if fn is None:
         with _LOCK:
             fn = _BUILT.get(key)
-            tag = f"{name}-{_source_digest()}"
+            definition = DEFINITIONS[name]
+            tag = f"{name}-{code_digest()}"
             if fn is None and backend in ("numba", "numpy"):
-                fn = load_index(tag, _DOCS[name], backend)
+                fn = load_index(tag, definition.doc, backend)
             if fn is None:
-                args, expr, names = _definition(name)
-                fn = lambdify(args, expr, backend, name=name, names=names, doc=_DOCS[name])
+                args, expr, names = definition.build()
+                fn = lambdify(args, expr, backend, name=name, names=names, doc=definition.doc)
                 if backend in ("numba", "numpy"):
                     save_index(tag, fn)
             if name in SCALE_FREE:
@@ -359,4 +439,4 @@ def __dir__() -> list[str]:
 
 # The generated functions live in their own namespaces, so doctest would not
 # find their examples among this module's members; list them here.
-__test__ = {f"{name}": _DOCS[name] for name in NAMES}
+__test__ = {name: DEFINITIONS[name].doc for name in NAMES}

@@ -24,6 +24,7 @@ from sympy import Rational, sqrt, symbols
 
 import screwsym
 from screwsym import LineVector, Screw, Twist, Wrench, codegen, numeric
+from screwsym.numeric.screws import DEFINITIONS, Definitions, numeric_definition
 
 
 def rationals(rng: random.Random, n: int) -> list[Rational]:
@@ -180,6 +181,63 @@ def test_bad_input_names_the_argument():
         numeric.pitch(Screw([x, 0, 0], [0, 0, 0]))
 
 
+def test_one_definition_per_function_in_the_order_of_names():
+    # issue 31 item 6: NAMES, the docstrings and the definitions are one registry
+    assert tuple(DEFINITIONS) == numeric.NAMES == numeric.screws.NAMES == (
+        "pitch", "foot", "reciprocal_product", "shift_origin", "line_through", "velocity_at",
+        "moment_about")
+    assert numeric.screws.__all__ == [*numeric.NAMES, "functions_for", "NAMES"]
+    for backend in ("numpy", None):
+        functions = numeric.functions_for(backend)
+        for name, definition in DEFINITIONS.items():
+            fn = getattr(functions, name)
+            assert definition.name == name and definition.make.__name__ == f"_{name}"
+            assert fn.__doc__ == definition.doc == definition.make.__doc__
+            assert numeric.screws.__test__[name] == definition.doc  # its doctests run
+            _, _, names = definition.build()
+            assert list(inspect.signature(fn).parameters) == [*names, "out"]
+    assert numeric.moment_about.__doc__ == DEFINITIONS["moment_about"].doc
+
+
+def test_the_registry_refuses_a_name_twice_and_other_wrong_definitions():
+    registry = Definitions()
+    x = symbols("x", real=True)
+
+    @registry.register
+    def _half():
+        "Half of ``x``."
+        return {"x": x}, x / 2
+
+    def _half_again():
+        "Half of ``x``, again."
+        return {"x": x}, x / 2
+
+    _half_again.__name__ = "_half"
+    with pytest.raises(ValueError, match="_half: a function 'half' is defined already"):
+        registry.register(_half_again)
+    assert list(registry) == ["half"] and registry["half"].doc == "Half of ``x``."
+    assert registry["half"].build() == ([x], x / 2, ["x"])
+
+    def half():
+        "No underscore: the module attribute would hide the generated function."
+
+    def _undocumented():
+        return {"x": x}, x
+
+    with pytest.raises(ValueError, match="half: expected the name '_' "):
+        registry.register(half)
+    with pytest.raises(ValueError, match="_undocumented: expected a docstring"):
+        registry.register(_undocumented)
+    registry.close()
+    with pytest.raises(ValueError, match="the registry is closed"):
+        registry.register(_half_again)
+    assert list(registry) == ["half"]
+    # the module's registry is closed: NAMES cannot fall behind it
+    with pytest.raises(ValueError, match="the registry is closed"):
+        numeric_definition(_half_again)
+    assert tuple(DEFINITIONS) == numeric.NAMES
+
+
 def test_symbolic_and_numeric_share_the_formula():
     # the module builds its functions from the core at import: check one of
     # them against a hand derivation to be sure the wiring is (S; S0) order
@@ -196,9 +254,9 @@ def test_a_new_process_loads_the_compiled_functions_without_rebuilding_them(tmp_
         import numpy as np
         from screwsym import numeric
         if sys.argv[1] == "second":
-            def boom(name):
-                raise AssertionError("rebuilt " + name)
-            numeric.screws._definition = boom
+            def boom(definition):
+                raise AssertionError("rebuilt " + definition.name)
+            numeric.screws.Definition.build = boom
         print(numeric.pitch(np.array([1.0, 1, 0, 1, 0, 0])), numeric.foot(np.ones((2, 6)))[1, 1],
               "numba" in sys.modules)  # a first call pays no numba import (issue 23 item 4)
     """)
@@ -230,13 +288,15 @@ _PROBE = textwrap.dedent("""
     import json, sys
     import numpy as np
     from screwsym import numeric
-    built, definition = [], numeric.screws._definition
-    def spy(name):
-        built.append(name)
-        return definition(name)
-    numeric.screws._definition = spy
+    from screwsym import codegen
+    from screwsym.numeric.screws import Definition
+    built, build = [], Definition.build
+    def spy(definition):
+        built.append(definition.name)
+        return build(definition)
+    Definition.build = spy
     h = float(numeric.pitch(np.array([1.0, 1, 0, 1, 0, 0]))) if sys.argv[1] == "pitch" else None
-    print(json.dumps({"file": numeric.screws.__file__, "tag": numeric.screws._source_digest(),
+    print(json.dumps({"file": numeric.screws.__file__, "tag": codegen.code_digest(),
                       "built": built, "pitch": h}))
 """)
 
