@@ -8,7 +8,11 @@ This floor imports nothing of screwsym above it.  Its public modules:
 - :mod:`~screwsym.core.inertia`: :class:`SpatialInertia`, a body's map from twists to momenta;
 - :mod:`~screwsym.core.vectors`, :mod:`~screwsym.core.tidy`, :mod:`~screwsym.core.printing`;
 - :mod:`~screwsym.core.formulas`: the formulas the floors share (foot point, pitch,
-  axis to screw, a screw moved by a rigid motion, the half swap), each written once;
+  axis to screw, a screw moved by a rigid motion, the half swap, the reciprocal
+  product of 6-vectors, the cross-product matrix, the Lie bracket of twists and
+  its matrix), each written once;
+- :mod:`~screwsym.core.conditions`: the ``conds="piecewise"`` machinery (the
+  conditions of a result on request);
 - :mod:`~screwsym.core.decide` (exact decisions and the float policy),
   :mod:`~screwsym.core.checks` (input checks and their wording) and
   :mod:`~screwsym.core.basic` (the SymPy base of every object), which the

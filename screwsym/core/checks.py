@@ -55,7 +55,7 @@ def _np_types(*names: str) -> tuple[type, ...]:
     return tuple(out)
 
 
-def _describe(value: Any) -> str:
+def describe(value: Any) -> str:
     """A short description of ``value`` for error messages."""
     shape: Any = getattr(value, "shape", None)
     if shape is not None and not isinstance(value, Basic) or isinstance(value, MatrixBase):
@@ -66,7 +66,8 @@ def _describe(value: Any) -> str:
     return f"{type(value).__name__} {text}"
 
 
-def _shape_of(value: Any) -> tuple[int, ...] | None:
+def shape_of(value: Any) -> tuple[int, ...] | None:
+    """The shape of an array or matrix, ``(n,)`` for a list or tuple, else ``None``."""
     shape = getattr(value, "shape", None)
     if shape is not None:
         return tuple(shape)
@@ -89,7 +90,7 @@ def check_no_strings(value: Any, name: str) -> None:
     """
     found = find_string(value)
     if found is not None:
-        raise TypeError(f"{name}: strings are never evaluated, got {_describe(found)}")
+        raise TypeError(f"{name}: strings are never evaluated, got {describe(found)}")
 
 
 def find_string(value: Any) -> Any:
@@ -144,17 +145,17 @@ def refusing_strings(f: Callable[[Any], Any], name: str) -> Callable[[Any], Any]
 def _refuse_non_number(value: Any, name: str) -> None:
     if find_string(value) is not None:
         raise TypeError(
-            f"{name}: expected a real number or SymPy expression, got {_describe(value)} "
+            f"{name}: expected a real number or SymPy expression, got {describe(value)} "
             "(strings are never evaluated)"
         )
     if (
         isinstance(value, (bool, *_np_types("bool_")))
         or value is None
         or isinstance(value, (MatrixBase, list, tuple, dict, set, frozenset, *_np_types("ma.MaskedArray")))
-        or (_shape_of(value) not in (None, ()))
+        or (shape_of(value) not in (None, ()))
     ):
         raise TypeError(
-            f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
+            f"{name}: expected a real number or SymPy expression, got {describe(value)}"
         )
 
 
@@ -184,11 +185,11 @@ def check_scalar(value: Any, name: str, *, nonzero: bool = False) -> Expr:
         expr = sympify(value, strict=True)
     except SympifyError:
         raise TypeError(
-            f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
+            f"{name}: expected a real number or SymPy expression, got {describe(value)}"
         ) from None
     if not isinstance(expr, Expr) or isinstance(expr, MatrixBase):
         raise TypeError(
-            f"{name}: expected a real number or SymPy expression, got {_describe(value)}"
+            f"{name}: expected a real number or SymPy expression, got {describe(value)}"
         )
     if expr.has(S.NaN, S.Infinity, S.NegativeInfinity, S.ComplexInfinity):
         raise ValueError(f"{name}: expected a finite real value, got {expr}")
@@ -231,12 +232,12 @@ def check_vector(value: Any, name: str) -> ImmutableMatrix:
         and not isinstance(value, MatrixBase)
     ):
         raise TypeError(
-            f"{name}: expected a 3-vector (list, tuple or SymPy Matrix), got {_describe(value)}"
+            f"{name}: expected a 3-vector (list, tuple or SymPy Matrix), got {describe(value)}"
         )
-    shape = _shape_of(value)
+    shape = shape_of(value)
     if shape is None:
         raise TypeError(
-            f"{name}: expected a 3-vector (list, tuple or SymPy Matrix), got {_describe(value)}"
+            f"{name}: expected a 3-vector (list, tuple or SymPy Matrix), got {describe(value)}"
         )
     if shape not in ((3,), (3, 1), (1, 3)):
         raise ValueError(f"{name}: expected a 3-vector, got shape {shape}")
@@ -246,7 +247,7 @@ def check_vector(value: Any, name: str) -> ImmutableMatrix:
         try:
             items = [item for item in (value.reshape(3) if hasattr(value, "reshape") else value)]
         except (TypeError, ValueError):
-            raise TypeError(f"{name}: expected a 3-vector, got {_describe(value)}") from None
+            raise TypeError(f"{name}: expected a 3-vector, got {describe(value)}") from None
         # a nested list [[1], [2], [3]] has shape (3,) here; unwrap one level
         items = [i[0] if isinstance(i, (list, tuple)) and len(i) == 1 else i for i in items]
     entries = [check_scalar(item, f"{name}[{i}]") for i, item in enumerate(items)]
@@ -273,7 +274,7 @@ def check_nonzero_vector(value: Any, name: str, needs: str) -> ImmutableMatrix:
 def check_name(value: Any, name: str) -> str:
     """Return ``value`` if it is a non-empty string usable as a symbol stem."""
     if not isinstance(value, str):
-        raise TypeError(f"{name}: expected a str, got {_describe(value)}")
+        raise TypeError(f"{name}: expected a str, got {describe(value)}")
     if not value or not value.strip() or any(c.isspace() or c in ",:" for c in value):
         raise ValueError(
             f"{name}: expected a non-empty name without spaces, commas or colons, got {value!r}"
@@ -287,12 +288,12 @@ def check_six(value: Any, name: str) -> tuple[ImmutableMatrix, ImmutableMatrix]:
         isinstance(value, (str, bytes, *_np_types("ma.MaskedArray")))
         or isinstance(value, Basic)
         and not isinstance(value, MatrixBase)
-        or _shape_of(value) is None
+        or shape_of(value) is None
     ):
         raise TypeError(
-            f"{name}: expected a 6-vector (list, tuple or SymPy Matrix), got {_describe(value)}"
+            f"{name}: expected a 6-vector (list, tuple or SymPy Matrix), got {describe(value)}"
         )
-    shape = _shape_of(value)
+    shape = shape_of(value)
     if shape not in ((6,), (6, 1), (1, 6)):
         raise ValueError(f"{name}: expected a 6-vector (S; S0), got shape {shape}")
     items = (
@@ -328,17 +329,17 @@ def check_matrix(value: Any, name: str, shape: tuple[int, int]) -> ImmutableMatr
     ):
         raise TypeError(
             f"{name}: expected a {shape[0]}x{shape[1]} matrix (SymPy Matrix, NumPy array or "
-            f"nested lists), got {_describe(value)}"
+            f"nested lists), got {describe(value)}"
         )
     if isinstance(value, MatrixBase):
         got: tuple[int, ...] | None = tuple(value.shape)
         rows = value.tolist()
     else:
-        got = _shape_of(value)
+        got = shape_of(value)
         if got is None:
             raise TypeError(
                 f"{name}: expected a {shape[0]}x{shape[1]} matrix (SymPy Matrix, NumPy array "
-                f"or nested lists), got {_describe(value)}"
+                f"or nested lists), got {describe(value)}"
             )
         rows = value.tolist() if hasattr(value, "tolist") else list(value)
         if got == (len(rows),) and all(isinstance(r, (list, tuple)) for r in rows):
@@ -366,7 +367,7 @@ def check_choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
     """
     if not isinstance(value, str):
         raise TypeError(
-            f"{name}: expected one of {', '.join(map(repr, choices))}, got {_describe(value)}"
+            f"{name}: expected one of {', '.join(map(repr, choices))}, got {describe(value)}"
         )
     if value not in choices:
         raise ValueError(f"{name}: expected one of {', '.join(map(repr, choices))}, got {value!r}")
@@ -425,10 +426,10 @@ def check_point_or_direction(value: Any, name: str) -> ImmutableMatrix:
     ...
     TypeError: obj: expected a point or direction (3-vector), a screw or a Transform, got list [1, 0, 0, 0, 0, 0]; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix or Wrench.from_matrix
     """
-    if _shape_of(value) in ((6,), (6, 1), (1, 6)):
+    if shape_of(value) in ((6,), (6, 1), (1, 6)):
         raise TypeError(
             f"{name}: expected a point or direction (3-vector), a screw or a Transform, got "
-            f"{_describe(value)}; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix "
+            f"{describe(value)}; wrap a 6-vector with Screw.from_matrix, Twist.from_matrix "
             "or Wrench.from_matrix"
         )
     return check_vector(value, name)
@@ -472,7 +473,7 @@ def check_count(value: Any, name: str) -> int:
     ValueError: max_cases: expected a positive integer, got 0
     """
     if isinstance(value, bool) or not isinstance(value, int):
-        raise TypeError(f"{name}: expected a positive integer, got {_describe(value)}")
+        raise TypeError(f"{name}: expected a positive integer, got {describe(value)}")
     if value < 1:
         raise ValueError(f"{name}: expected a positive integer, got {value}")
     return value
@@ -487,7 +488,7 @@ def check_positive_float(value: Any, name: str) -> float:
     ValueError: rtol: expected a positive finite number, got -1
     """
     if isinstance(value, (bool, str, bytes)) or not isinstance(value, (int, float)):
-        raise TypeError(f"{name}: expected a positive finite number, got {_describe(value)}")
+        raise TypeError(f"{name}: expected a positive finite number, got {describe(value)}")
     if not (0 < value < float("inf")):
         raise ValueError(f"{name}: expected a positive finite number, got {value}")
     return float(value)
@@ -509,13 +510,13 @@ def check_tidy_input(value: Any, name: str) -> None:
     while stack:
         item = stack.pop()
         if isinstance(item, (str, bytes)):
-            raise TypeError(f"{name}: strings are never evaluated, got {_describe(item)}")
+            raise TypeError(f"{name}: strings are never evaluated, got {describe(item)}")
         if isinstance(item, (list, tuple)):
             stack.extend(item)
         elif not isinstance(item, (Basic, MatrixBase, int, float, *_np_types("number"))):
             raise TypeError(
                 f"{name}: expected a SymPy expression, matrix, screwsym object, "
-                f"or a tuple or list of them, got {_describe(item)}"
+                f"or a tuple or list of them, got {describe(item)}"
             )
 
 
@@ -528,5 +529,5 @@ def check_flag(value: Any, name: str) -> bool:
     TypeError: tidy: expected True or False, got int 1
     """
     if not isinstance(value, bool):
-        raise TypeError(f"{name}: expected True or False, got {_describe(value)}")
+        raise TypeError(f"{name}: expected True or False, got {describe(value)}")
     return value

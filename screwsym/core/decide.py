@@ -61,7 +61,7 @@ from sympy.matrices import MatrixBase
 from sympy.polys.domains import QQ
 from sympy.polys.rings import PolyRing
 
-from .formulas import _dot
+from .formulas import dot
 
 __all__ = [
     "is_zero",
@@ -240,7 +240,7 @@ def is_zero_vector(v: MatrixBase) -> bool | None:
 
 def norm(v: MatrixBase) -> Expr:
     """The Euclidean length ``sqrt(v . v)`` of a column."""
-    return sqrt(_dot(v, v))
+    return sqrt(dot(v, v))
 
 
 def float_tau(*exprs: Expr) -> Expr | None:

@@ -47,14 +47,15 @@ from sympy import Abs, Expr, ImmutableMatrix, S
 
 from .basic import ScrewsymBasic
 from .checks import (
-    _describe,
     check_flag,
     check_instance,
     check_matrix,
     check_scalar,
     check_vector,
+    describe,
 )
 from .decide import float_tau, is_zero, is_zero_scaled
+from .formulas import cross_matrix
 from .screw import ScalarLike, VectorLike, check_screw
 from .tidy import tidy
 from .twist import Twist
@@ -63,24 +64,12 @@ from .wrench import Wrench, power
 if TYPE_CHECKING:
     from typing_extensions import Self
 
+# cross_matrix (the matrix [v]x) lives in screwsym.core.formulas and is re-exported here
 __all__ = ["SpatialInertia", "cross_matrix", "PARAMETER_NAMES"]
 
 #: the ten inertial parameters of a body, in pinocchio's order (``Inertia.toDynamicParameters``):
 #: the mass, the first moment ``m c`` and the rotational inertia about the frame's origin
 PARAMETER_NAMES = ("m", "mc_x", "mc_y", "mc_z", "I_xx", "I_xy", "I_yy", "I_xz", "I_yz", "I_zz")
-
-
-def cross_matrix(v: ImmutableMatrix) -> ImmutableMatrix:
-    r"""The 3x3 matrix ``[v]x`` with ``[v]x w = v x w`` (of a checked 3x1 column).
-
-    >>> cross_matrix(ImmutableMatrix([1, 2, 3]))
-    Matrix([
-    [ 0, -3,  2],
-    [ 3,  0, -1],
-    [-2,  1,  0]])
-    """
-    x, y, z = v
-    return ImmutableMatrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
 
 
 def _provably_negative(value: Expr, scale: Expr) -> bool:
@@ -249,7 +238,7 @@ class SpatialInertia(ScrewsymBasic):
         ) != 10:
             raise ValueError(
                 f"parameters: expected the ten inertial parameters {list(PARAMETER_NAMES)}, "
-                f"got {_describe(parameters)}"
+                f"got {describe(parameters)}"
             )
         p = [check_scalar(x, f"parameters[{i}]") for i, x in enumerate(parameters)]
         m = p[0]

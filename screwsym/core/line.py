@@ -16,19 +16,20 @@ from sympy.core.evalf import prec_to_dps
 
 from .basic import ScrewsymBasic
 from .checks import check_choice, check_flag, check_no_strings, check_vector
+from .conditions import CONDS, piecewise, vanishes
 from .decide import float_tau, is_zero_scaled, is_zero_vector, is_zero_vector_scaled, norm
-from .formulas import _dot, foot_point
+from .formulas import dot, foot_point, reciprocal_form
 from .screw import (
     ScalarLike,
     Screw,
     ScrewLike,
     VectorLike,
-    _pitch_formula,
-    _reciprocal_product,
-    _require_axis,
     check_screw,
+    finite_pitch,
+    reciprocal_product_unchecked,
+    require_axis,
 )
-from .tidy import CONDS, _finish, _piecewise, _vanishes
+from .tidy import finish
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -63,9 +64,9 @@ def check_line_parts(S: ImmutableMatrix, S0: ImmutableMatrix, label: str | tuple
         raise ValueError(f"{first}: a line vector needs a non-zero direction S, got {list(S)}")
     if incident:
         return
-    dot = _dot(S, S0)
-    if is_zero_scaled(dot, norm(S) * norm(S0)) is False:
-        raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {dot}")
+    ss0 = dot(S, S0)
+    if is_zero_scaled(ss0, norm(S) * norm(S0)) is False:
+        raise ValueError(f"{both}: a line vector needs S.S0 = 0 (1.10), got S.S0 = {ss0}")
 
 
 class LineVector(Screw, line_of=Screw):
@@ -113,7 +114,7 @@ class LineVector(Screw, line_of=Screw):
 
     def mutual_moment(self, other: LineLike, *, tidy: bool = True) -> Expr:
         """The mutual moment with ``other`` (1.23); see :func:`mutual_moment`."""
-        return _reciprocal_product(
+        return reciprocal_product_unchecked(
             self, check_screw(other, "other", LineVector), check_flag(tidy, "tidy")
         )
 
@@ -131,8 +132,8 @@ class LineVector(Screw, line_of=Screw):
 
 
 def _contains(s: Screw, r: ImmutableMatrix, name: str | None = None) -> bool | None:
-    _require_axis(s, "axis", name)  # a couple's axis is at infinity
-    h = _pitch_formula(s)
+    require_axis(s, "axis", name)  # a couple's axis is at infinity
+    h = finite_pitch(s)
     residual = r.cross(s.S) - (s.S0 - h * s.S)
     return is_zero_vector_scaled(residual, norm(r) * norm(s.S) + norm(s.S0))
 
@@ -166,7 +167,7 @@ def mutual_moment(l1: LineLike, l2: LineLike, *, tidy: bool = True) -> Expr:
     >>> mutual_moment(x_axis, LineVector.from_axis([0, 0, 2], [0, 1, 0]))
     -2
     """
-    return _reciprocal_product(
+    return reciprocal_product_unchecked(
         check_screw(l1, "l1", LineVector), check_screw(l2, "l2", LineVector),
         check_flag(tidy, "tidy"),
     )
@@ -177,7 +178,7 @@ def _coplanar_scale(l1: Screw, l2: Screw) -> Expr:
 
 
 def _is_coplanar(l1: Screw, l2: Screw) -> bool | None:
-    return is_zero_scaled(_reciprocal_product(l1, l2), _coplanar_scale(l1, l2))
+    return is_zero_scaled(reciprocal_product_unchecked(l1, l2), _coplanar_scale(l1, l2))
 
 
 def is_coplanar(l1: LineLike, l2: LineLike) -> bool | None:
@@ -282,7 +283,7 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
                    conds: str = "none") -> CommonNormal:
     tau = float_tau(*l1.matrix, *l2.matrix)
     if tau is None or l1.free_symbols or l2.free_symbols:
-        return _finish(_common_normal_parts(l1.S, l1.S0, l2.S, l2.S0, None, names, conds), tidy)
+        return finish(_common_normal_parts(l1.S, l1.S0, l2.S, l2.S0, None, names, conds), tidy)
     # Float lines: decide by the float policy, compute exactly from the numbers given, round
     # once at the end (so nearly parallel lines get their true distance, not cancellation).
     # The moments are made exactly perpendicular to the directions first: a float line's
@@ -291,8 +292,8 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
     prec = min(f._prec for m in (l1.matrix, l2.matrix) for f in m.atoms(Float))
     S1, S2 = _exact(l1.S), _exact(l2.S)
     S01, S02 = _exact(l1.S0), _exact(l2.S0)
-    S01 = S01 - _dot(S1, S01) / _dot(S1, S1) * S1
-    S02 = S02 - _dot(S2, S02) / _dot(S2, S2) * S2
+    S01 = S01 - dot(S1, S01) / dot(S1, S1) * S1
+    S02 = S02 - dot(S2, S02) / dot(S2, S2) * S2
     cn = _common_normal_parts(S1, S01, S2, S02, tau, names)
     # the floats' digits and one guard digit (16 for double precision, as before)
     return cn.func(*(a.evalf(n=max(15, prec_to_dps(prec) + 1)) for a in cn.args))
@@ -301,12 +302,12 @@ def _common_normal(l1: Screw, l2: Screw, names: tuple[str, str], tidy: bool = Tr
 def _common_normal_parts(S1: ImmutableMatrix, S01: ImmutableMatrix, S2: ImmutableMatrix,
                          S02: ImmutableMatrix, tau: Expr | None, names: tuple[str, str],
                          conds: str = "none") -> CommonNormal:
-    nn1, nn2 = _dot(S1, S1), _dot(S2, S2)
+    nn1, nn2 = dot(S1, S1), dot(S2, S2)
     p1, p2 = foot_point(S1, S01), foot_point(S2, S02)  # the feet (1.16)
     d = p2 - p1
     n = S1.cross(S2)
-    nn = _dot(n, n)
-    cos_part = _dot(S1, S2)
+    nn = dot(n, n)
+    cos_part = dot(S1, S2)
     # parallel: |S1 x S2| against |S1||S2| (compared squared, so no root is taken)
     parallel = is_zero_scaled(nn, nn1 * nn2, None if tau is None else tau**2)
     if parallel is True:
@@ -319,15 +320,15 @@ def _common_normal_parts(S1: ImmutableMatrix, S01: ImmutableMatrix, S2: Immutabl
         a12 = norm(d)
         return CommonNormal(a12, d / a12, atan2(0, cos_part), p1, p2)
     n_len = sqrt(nn)
-    m = -(_dot(S1, S02) + _dot(S2, S01))  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
+    m = -reciprocal_form([*S1, *S01], [*S2, *S02])  # (foot2 - foot1) . (S1 x S2), by (1.22), (1.23)
     scale = sqrt(nn1) * norm(S02) + sqrt(nn2) * norm(S01)
     met = is_zero_scaled(m, scale, tau)
     intersecting = met is True
     if intersecting:
         m = 0
     orientation = 1 if intersecting else sign(m)
-    t1 = _dot(d.cross(S2), n) / nn
-    t2 = _dot(d.cross(S1), n) / nn
+    t1 = dot(d.cross(S2), n) / nn
+    t2 = dot(d.cross(S1), n) / nn
     feet = (p1 + t1 * S1, p2 + t2 * S2)
     generic = CommonNormal(
         Abs(m) / n_len,
@@ -343,13 +344,13 @@ def _common_normal_parts(S1: ImmutableMatrix, S01: ImmutableMatrix, S2: Immutabl
         a12 = norm(d)
         none = ImmutableMatrix([nan, nan, nan])
         branches += [
-            ((nan, none, nan, none, none), _vanishes(n) & _vanishes(d)),  # coincident
-            ((a12, d / a12, atan2(0, cos_part), p1, p2), _vanishes(n)),  # parallel
+            ((nan, none, nan, none, none), vanishes(n) & vanishes(d)),  # coincident
+            ((a12, d / a12, atan2(0, cos_part), p1, p2), vanishes(n)),  # parallel
         ]
     if met is None:
         branches.append(((0, n / n_len, atan2(n_len, cos_part), *feet), Eq(m, 0)))
     return CommonNormal(*(
-        _piecewise([(parts[i], c) for parts, c in branches], generic.args[i]) for i in range(5)
+        piecewise([(parts[i], c) for parts, c in branches], generic.args[i]) for i in range(5)
     ))
 
 

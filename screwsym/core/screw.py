@@ -38,8 +38,6 @@ from sympy.matrices import MatrixBase
 
 from .basic import ScrewsymBasic
 from .checks import (
-    _describe,
-    _shape_of,
     check_choice,
     check_flag,
     check_nonzero_vector,
@@ -47,11 +45,14 @@ from .checks import (
     check_scalar,
     check_six,
     check_vector,
+    describe,
     refusing_strings,
+    shape_of,
 )
+from .conditions import CONDS, piecewise, vanishes
 from .decide import float_tau, is_zero, is_zero_scaled, is_zero_vector, norm
-from .formulas import _dot, dual_part, foot_point, moved, pitch_ratio
-from .tidy import CONDS, _finish, _is_polynomial, _moment_minus, _piecewise, _vanishes
+from .formulas import dot, dual_part, foot_point, moved, pitch_ratio, reciprocal_form
+from .tidy import finish, is_polynomial, moment_minus
 
 if TYPE_CHECKING:
     import numpy as np
@@ -374,11 +375,11 @@ class Screw(ScrewsymBasic):
 
     def shift_origin(self, A: VectorLike, *, tidy: bool = True) -> Self:
         """The same screw with its moment taken about ``A`` (1.32); see :func:`shift_origin`."""
-        return _shift_origin(self, check_vector(A, "A"), check_flag(tidy, "tidy"))
+        return shift_origin_unchecked(self, check_vector(A, "A"), check_flag(tidy, "tidy"))
 
     def reciprocal_product(self, other: ScrewLike, *, tidy: bool = True) -> Expr:
         """``S1.S2^0 + S2.S1^0`` (1.45); see :func:`reciprocal_product`."""
-        return _reciprocal_product(
+        return reciprocal_product_unchecked(
             self, check_screw(other, "other", Screw), check_flag(tidy, "tidy")
         )
 
@@ -539,9 +540,9 @@ def check_screw(value: Any, name: str, cls: type[_S]) -> _S:
         if value._kind is not None and value._kind != cls._kind:
             raise TypeError(f"{name}: expected a {cls.__name__}, got {type(value).__name__}")
         return cls._rebuild(value.S, value.S0, name)
-    if isinstance(value, (str, bytes)) or _shape_of(value) is None:
+    if isinstance(value, (str, bytes)) or shape_of(value) is None:
         raise TypeError(
-            f"{name}: expected a {cls.__name__} or a 6-vector (S; S0), got {_describe(value)}"
+            f"{name}: expected a {cls.__name__} or a 6-vector (S; S0), got {describe(value)}"
         )
     S_, S0_ = check_six(value, name)
     return cls._rebuild(S_, S0_, name)
@@ -549,12 +550,14 @@ def check_screw(value: Any, name: str, cls: type[_S]) -> _S:
 
 # --------------------------------------------------------------------------
 # The chapter's operations, each written once.  The public function checks its
-# arguments (naming them as the caller wrote them) and calls the private one,
-# which methods call too with their own names checked.
+# arguments (naming them as the caller wrote them) and calls the unchecked one,
+# which methods call too with their own names checked.  The unchecked ones other
+# modules of the core call have public names (``*_unchecked``, ``require_axis``,
+# ``finite_pitch``), kept out of ``__all__``: they trust their arguments.
 # --------------------------------------------------------------------------
 
 
-def _require_axis(s: Screw, what: str, name: str | None = None) -> None:
+def require_axis(s: Screw, what: str, name: str | None = None) -> None:
     """Raise ``ValueError`` when ``S`` is provably zero: a couple, or the zero screw."""
     if is_zero_vector(s.S) is not True:
         return
@@ -569,11 +572,11 @@ def _pitch(s: Screw, name: str | None = None, tidy: bool = True, conds: str = "n
         if is_zero_vector(s.S0) is True:
             raise ValueError(f"{name + ': ' if name else ''}the zero screw (0; 0) has no pitch")
         return oo
-    h = _pitch_formula(s, tidy)
+    h = finite_pitch(s, tidy)
     return _where_direction_vanishes(s, h, oo) if conds == "piecewise" else h
 
 
-def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
+def finite_pitch(s: Screw, tidy: bool = False) -> Expr:
     """``S . S0 / S . S`` (1.34), for a screw not known to be a couple.
 
     A line vector's pitch is 0 by its invariant, and a float screw whose
@@ -582,14 +585,14 @@ def _pitch_formula(s: Screw, tidy: bool = False) -> Expr:
     ``S . S`` is a common factor whenever the dual part is ``r x S + h S``
     (the cross term vanishes on expansion), which gives ``h``.
     """
-    dot = _dot(s.S, s.S0)
+    ss0 = dot(s.S, s.S0)
     if s._pitch_is_zero:
         return S.Zero
-    if tidy and float_tau(dot) is None:
+    if tidy and float_tau(ss0) is None:
         # exact: the quotient in lowest terms is 0 exactly when S . S0 expands to 0, so the
         # zero test of the float policy below would only repeat the same expansion
-        return _finish(pitch_ratio(s.S, s.S0))
-    if is_zero_scaled(dot, norm(s.S) * norm(s.S0)) is True:
+        return finish(pitch_ratio(s.S, s.S0))
+    if is_zero_scaled(ss0, norm(s.S) * norm(s.S0)) is True:
         return S.Zero
     return pitch_ratio(s.S, s.S0)
 
@@ -610,8 +613,8 @@ def _where_direction_vanishes(s: Screw, value: Any, couple_value: Any = nan) -> 
     """
     if s._pitch_is_zero or s.free_symbols == set() or is_zero_vector(s.S) is not None:
         return value
-    S_zero = _vanishes(s.S)
-    return _piecewise([(nan, S_zero & _vanishes(s.S0)), (couple_value, S_zero)], value)
+    S_zero = vanishes(s.S)
+    return piecewise([(nan, S_zero & vanishes(s.S0)), (couple_value, S_zero)], value)
 
 
 def pitch(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> Expr:
@@ -668,10 +671,10 @@ def pitch(s: ScrewLike, *, tidy: bool = True, conds: str = "none") -> Expr:
 
 
 def _axis(s: Screw, name: str | None = None, tidy: bool = True) -> LineVector:
-    _require_axis(s, "axis", name)
+    require_axis(s, "axis", name)
     line = cast("type[LineVector]", Screw._line_class())
     if s._pitch_is_zero:
-        return _finish(line._rebuild(s.S, s.S0, name or "s"), tidy)
+        return finish(line._rebuild(s.S, s.S0, name or "s"), tidy)
     if tidy:
         return _known(line, s.S, _axis_moment(s, True))
     return line(s.S, _axis_moment(s, False))
@@ -680,8 +683,8 @@ def _axis(s: Screw, name: str | None = None, tidy: bool = True) -> LineVector:
 def _axis_moment(s: Screw, tidy: bool, h: Expr | None = None) -> ImmutableMatrix:
     """The axis moment ``S0 - h S`` (1.36), for the pitch ``h`` (found, and tidied first
     when ``tidy``, unless the caller has it already)."""
-    h = _pitch_formula(s, tidy) if h is None else h
-    return _moment_minus(s.S0, h, s.S) if tidy else s.S0 - h * s.S
+    h = finite_pitch(s, tidy) if h is None else h
+    return moment_minus(s.S0, h, s.S) if tidy else s.S0 - h * s.S
 
 
 def axis(s: ScrewLike, *, tidy: bool = True) -> LineVector:
@@ -708,8 +711,8 @@ def axis(s: ScrewLike, *, tidy: bool = True) -> LineVector:
 
 def _foot(s: Screw, name: str | None = None, tidy: bool = True,
           conds: str = "none") -> ImmutableMatrix:
-    _require_axis(s, "foot point", name)
-    P = _finish(foot_point(s.S, s.S0), tidy)
+    require_axis(s, "foot point", name)
+    P = finish(foot_point(s.S, s.S0), tidy)
     return _where_direction_vanishes(s, P) if conds == "piecewise" else P
 
 
@@ -742,12 +745,12 @@ def _distance_to_origin(s: Screw, name: str | None = None, tidy: bool = True,
         # The foot is S x S0' / S.S for the axis moment S0' = S0 - h S, and S . S0' = 0, so
         # Lagrange's identity |S x S0'|^2 = |S|^2 |S0'|^2 - (S . S0')^2 gives |S0'| / |S|:
         # short when the pitch cancels; else |S x S0| / S.S, the foot's length, is shorter.
-        _require_axis(s, "foot point", name)
-        h = _pitch_formula(s, True)
-        if _is_polynomial(h):
-            d = _finish(norm(_axis_moment(s, True, h)) / norm(s.S))
+        require_axis(s, "foot point", name)
+        h = finite_pitch(s, True)
+        if is_polynomial(h):
+            d = finish(norm(_axis_moment(s, True, h)) / norm(s.S))
         else:
-            d = _finish(norm(_foot(s, name)))
+            d = finish(norm(_foot(s, name)))
     return _where_direction_vanishes(s, d) if conds == "piecewise" else d
 
 
@@ -774,8 +777,8 @@ def distance_to_origin(s: ScrewLike, *, tidy: bool = True, conds: str = "none") 
 
 def _direction_cosines(s: Screw, name: str | None = None, tidy: bool = True,
                        conds: str = "none") -> ImmutableMatrix:
-    _require_axis(s, "direction", name)
-    dc = _finish(s.S / norm(s.S), tidy)
+    require_axis(s, "direction", name)
+    dc = finish(s.S / norm(s.S), tidy)
     return _where_direction_vanishes(s, dc) if conds == "piecewise" else dc
 
 
@@ -803,7 +806,7 @@ def _unit(s: _S, name: str | None = None, tidy: bool = True) -> _S:
         n = norm(s.S0)
     else:
         n = norm(s.S)
-    return _finish(type(s)(s.S / n, s.S0 / n), tidy)
+    return finish(type(s)(s.S / n, s.S0 / n), tidy)
 
 
 @overload
@@ -832,9 +835,9 @@ def unit(s: ScrewLike, *, tidy: bool = True) -> Screw:
 
 
 def _decompose(s: Screw, name: str | None = None, tidy: bool = True) -> tuple[Screw, Screw]:
-    _require_axis(s, "axis, so no line-plus-couple decomposition", name)
+    require_axis(s, "axis, so no line-plus-couple decomposition", name)
     general = s._combination_class()
-    h = _pitch_formula(s, tidy)
+    h = finite_pitch(s, tidy)
     moment = _axis_moment(s, tidy, h)
     line = _known(general._line_class(), s.S, moment) if tidy else general._line_class()(s.S, moment)
     return line, general(zeros(3, 1), h * s.S)
@@ -876,7 +879,7 @@ def _classify(s: Screw) -> str | None:
         return None
     if s._pitch_is_zero:
         return "line"
-    dot_zero = is_zero_scaled(_dot(s.S, s.S0), norm(s.S) * norm(s.S0))
+    dot_zero = is_zero_scaled(dot(s.S, s.S0), norm(s.S) * norm(s.S0))
     return None if dot_zero is None else ("line" if dot_zero else "screw")
 
 
@@ -902,10 +905,15 @@ def classify(s: ScrewLike) -> str | None:
     return _classify(check_screw(s, "s", Screw))
 
 
-def _shift_origin(s: _S, A: ImmutableMatrix, tidy: bool = True) -> _S:
+def shift_origin_unchecked(s: _S, A: ImmutableMatrix, tidy: bool = True) -> _S:
+    """:func:`shift_origin` (1.32) of a screw and a 3x1 column already checked.
+
+    Keeps the class of ``s``; a twist's velocity at a point and a wrench's
+    moment about a point call this too.
+    """
     S_, S0_ = moved(None, -A, s.S, s.S0)  # a pure translation by -A (1.32)
     if tidy:
-        return _known(type(s), S_, _finish(S0_))
+        return _known(type(s), S_, finish(S0_))
     return type(s)(S_, S0_)
 
 
@@ -931,18 +939,23 @@ def shift_origin(s: ScrewLike, A: VectorLike, *, tidy: bool = True) -> Screw:
     >>> shift_origin(s, [0, 1, 0])                   # A on the axis: (S; hS)
     Screw([1, 0, 0], [2, 0, 0])
     """
-    return _shift_origin(
+    return shift_origin_unchecked(
         check_screw(s, "s", Screw), check_vector(A, "A"), check_flag(tidy, "tidy")
     )
 
 
-def _reciprocal_product(s1: Screw, s2: Screw, tidy: bool = False) -> Expr:
-    return _finish(_dot(s1.S, s2.S0) + _dot(s2.S, s1.S0), tidy)
+def reciprocal_product_unchecked(s1: Screw, s2: Screw, tidy: bool = False) -> Expr:
+    """:func:`reciprocal_product` (1.45) of two screws already checked, tidied when ``tidy``.
+
+    The formula is :func:`screwsym.core.formulas.reciprocal_form`'s; the
+    mutual moment of two lines and the power of a wrench on a twist call this too.
+    """
+    return finish(reciprocal_form([*s1.S, *s1.S0], [*s2.S, *s2.S0]), tidy)
 
 
 def _is_reciprocal(s1: Screw, s2: Screw) -> bool | None:
     scale = norm(s1.S) * norm(s2.S0) + norm(s2.S) * norm(s1.S0)
-    return is_zero_scaled(_reciprocal_product(s1, s2), scale)
+    return is_zero_scaled(reciprocal_product_unchecked(s1, s2), scale)
 
 
 def reciprocal_product(s1: ScrewLike, s2: ScrewLike, *, tidy: bool = True) -> Expr:
@@ -962,7 +975,7 @@ def reciprocal_product(s1: ScrewLike, s2: ScrewLike, *, tidy: bool = True) -> Ex
     >>> reciprocal_product([1, 1, 0, 1, 0, 0], [1, 1, 0, 1, 0, 0])
     2
     """
-    return _reciprocal_product(
+    return reciprocal_product_unchecked(
         check_screw(s1, "s1", Screw), check_screw(s2, "s2", Screw), check_flag(tidy, "tidy")
     )
 

@@ -44,14 +44,11 @@ from typing import Any, TypeVar
 
 from sympy import (
     Add,
-    And,
     Basic,
     Derivative,
     Dummy,
-    Eq,
     Expr,
     Float,
-    ImmutableMatrix,
     Integral,
     Mul,
     Piecewise,
@@ -71,7 +68,6 @@ from sympy.core.cache import cacheit
 from sympy.core.function import Application, _coeff_isneg
 from sympy.core.operations import LatticeOp
 from sympy.core.sorting import default_sort_key
-from sympy.logic.boolalg import false
 from sympy.matrices import MatrixBase
 from sympy.polys.domains import QQ, ZZ
 from sympy.polys.monomials import monomial_min
@@ -468,58 +464,54 @@ def _inside(e: Expr) -> Expr:
 
 
 # --------------------------------------------------------------------------
-# Helpers of the core operations: the tidy flag, and the conditions on request.
+# Helpers of the core operations: their tidy= flag (the conds="piecewise"
+# machinery is screwsym.core.conditions).
 # --------------------------------------------------------------------------
 
-#: the values of ``conds=``, SymPy's words (``integrate(..., conds=...)``)
-CONDS = ("none", "piecewise")
 
+def finish(value: Any, flag: bool = True) -> Any:
+    """``value`` tidied when ``flag`` is set: the core operations' ``tidy=``.
 
-def _finish(value: Any, flag: bool = True) -> Any:
-    """``value`` tidied when ``flag`` is set (the core operations' ``tidy=``)."""
+    :func:`tidy` without its input checks and options, for results the core
+    built itself.
+
+    >>> from sympy import symbols
+    >>> x = symbols("x", real=True)
+    >>> finish((x**2 - 1) / (x - 1)), finish((x**2 - 1) / (x - 1), False)
+    (x + 1, (x**2 - 1)/(x - 1))
+    """
     return _tidy_any(value, MAX_SIZE) if flag else value
 
 
-def _is_polynomial(e: Expr) -> bool:
-    """Whether ``e`` has no symbolic denominator (a cancelled quotient is then a polynomial)."""
+def is_polynomial(e: Expr) -> bool:
+    """Whether ``e`` has no symbolic denominator (a cancelled quotient is then a polynomial).
+
+    >>> from sympy import symbols
+    >>> x, y = symbols("x y", real=True)
+    >>> is_polynomial(x * y + 1), is_polynomial(x / y)
+    (True, False)
+    """
     return not _has_denominator(e)
 
 
-def _moment_minus(S0, h: Expr, S) -> Any:
-    """``S0 - h S``, tidied: in full when ``h`` is a polynomial; else entry by entry only
-    with common factors pulled out, since with ``h = N/D`` in lowest terms the single
-    fractions ``(S0 D - N S)/D`` only grow (and proving so costs a gcd per entry)."""
+def moment_minus(S0: Any, h: Expr, S: Any) -> Any:
+    """``S0 - h S``, tidied: the moment of a screw's axis (1.36).
+
+    In full when ``h`` is a polynomial; else entry by entry only with common
+    factors pulled out, since with ``h = N/D`` in lowest terms the single
+    fractions ``(S0 D - N S)/D`` only grow (and proving so costs a gcd per entry).
+
+    >>> from sympy import ImmutableMatrix, symbols
+    >>> h = symbols("h", real=True)
+    >>> moment_minus(ImmutableMatrix([h, 0, 1]), h, ImmutableMatrix([1, 0, 0])).T
+    Matrix([[0, 0, 1]])
+    """
     value = S0 - h * S
-    if _is_polynomial(h):
-        return _finish(value)
+    if is_polynomial(h):
+        return finish(value)
     return value.applyfunc(
         lambda e: e if e.is_Atom or e.has(Float) else _smallest([e, _common_factor(e)])
     )
-
-
-def _vanishes(v) -> Any:
-    """The condition that every entry of the column ``v`` is zero, as a SymPy Boolean."""
-    return And(*(Eq(e, 0) for e in v))
-
-
-def _piecewise(branches, default: Any) -> Any:
-    """``Piecewise`` of ``branches`` ((value, condition) pairs) then ``default``, entrywise.
-
-    The values are expressions or columns of the same shape (an expression
-    stands for a column of it); a column gives a column of ``Piecewise``.
-    Branches whose condition is ``False`` drop out.
-    """
-    branches = [(v, c) for v, c in branches if c is not false]
-    if not branches:
-        return default
-    if isinstance(default, MatrixBase):
-        return ImmutableMatrix(
-            default.shape[0], default.shape[1],
-            [_piecewise([(v[i] if isinstance(v, MatrixBase) else v, c) for v, c in branches],
-                        default[i])
-             for i in range(len(default))],
-        )
-    return Piecewise(*branches, (default, True))
 
 
 def _count_ops(expr: Expr) -> int:

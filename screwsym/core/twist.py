@@ -13,7 +13,7 @@ from sympy import ImmutableMatrix, zeros
 
 from .checks import check_flag, check_nonzero_vector, check_vector
 from .formulas import dual_part
-from .screw import ScalarLike, Screw, VectorLike, _shift_origin
+from .screw import ScalarLike, Screw, VectorLike, shift_origin_unchecked
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -122,4 +122,4 @@ class Twist(Screw):
         >>> Twist.rotation([0, 0, 1], point=[0, 0, 0]).velocity_at([1, 0, 0]).T
         Matrix([[0, 1, 0]])
         """
-        return _shift_origin(self, check_vector(point, "point"), check_flag(tidy, "tidy")).S0
+        return shift_origin_unchecked(self, check_vector(point, "point"), check_flag(tidy, "tidy")).S0

@@ -18,9 +18,9 @@ from .screw import (
     Screw,
     ScrewLike,
     VectorLike,
-    _reciprocal_product,
-    _shift_origin,
     check_screw,
+    reciprocal_product_unchecked,
+    shift_origin_unchecked,
 )
 from .twist import Twist
 
@@ -99,7 +99,7 @@ class Wrench(Screw):
         >>> Wrench.force([0, 0, -10], point=[1, 0, 0]).moment_about([0, 1, 0]).T
         Matrix([[10, 10, 0]])
         """
-        return _shift_origin(self, check_vector(point, "point"), check_flag(tidy, "tidy")).S0
+        return shift_origin_unchecked(self, check_vector(point, "point"), check_flag(tidy, "tidy")).S0
 
 
 def power(twist: ScrewLike, wrench: ScrewLike, *, tidy: bool = True) -> Expr:
@@ -114,7 +114,7 @@ def power(twist: ScrewLike, wrench: ScrewLike, *, tidy: bool = True) -> Expr:
     >>> power(Twist.translation([1, 0, 0]), Wrench.force([3, 0, 0], point=[0, 0, 0]))
     3
     """
-    return _reciprocal_product(
+    return reciprocal_product_unchecked(
         check_screw(twist, "twist", Twist), check_screw(wrench, "wrench", Wrench),
         check_flag(tidy, "tidy"),
     )

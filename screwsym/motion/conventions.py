@@ -83,8 +83,8 @@ from sympy import ImmutableMatrix
 
 from ..core.checks import check_choice, check_matrix, check_six
 from ..core.decide import is_zero
-from ..core.formulas import SWAP
-from ..core.inertia import SpatialInertia, cross_matrix
+from ..core.formulas import SWAP, cross_matrix
+from ..core.inertia import SpatialInertia
 from ..core.line import LineVector
 from ..core.screw import MatrixLike, Screw, SixVectorLike
 from ..core.twist import Twist

@@ -23,10 +23,11 @@ Bobrow & Ploen (1995) (Lynch & Park (8.50)-(8.53), with these frames) is
 with ``V_i`` the twist of link ``i`` and ``A_i = dV_i/dt`` its spatial
 acceleration, both in ``{i}`` (in the space frame they are ``Ad(g_i)`` of
 these, ``g_i = E_1 ... E_i``: the same torques, since the reciprocal product is
-invariant (1.47)), ``[V, s] = (omega x S; omega x S0 + v x S)`` the screw product,
-the time derivative of a screw fixed in a body moving with ``V`` (twists and
-wrenches alike: both move with ``Ad`` in ray order), and ``o`` the reciprocal
-product (1.45).  Gravity is the base accelerating upward (``A_0``), as in
+invariant (1.47)), ``[V, s] = (omega x S; omega x S0 + v x S)`` the screw product
+(:func:`screwsym.core.formulas.bracket`), the time derivative of a screw fixed in a
+body moving with ``V`` (twists and wrenches alike: both move with ``Ad`` in ray
+order), and ``o`` the reciprocal product (1.45,
+:func:`screwsym.core.formulas.reciprocal_form`).  Gravity is the base accelerating upward (``A_0``), as in
 Lynch & Park and pinocchio; ``gravity`` is the gravitational acceleration,
 pointing down (``(0, 0, -g)``).
 
@@ -71,8 +72,8 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 from sympy import Dummy, Expr, ImmutableMatrix, S, Symbol, zeros
 
 from ..core.checks import check_scalar, check_sequence, check_vector
-from ..core.formulas import moved
-from ..core.inertia import PARAMETER_NAMES, SpatialInertia, cross_matrix, spatial_matrix
+from ..core.formulas import bracket, cross_matrix, moved, reciprocal_form
+from ..core.inertia import PARAMETER_NAMES, SpatialInertia, spatial_matrix
 from ..core.tidy import tidy
 from .displacement import exp6
 from .transform import Transform
@@ -131,17 +132,6 @@ def _moved_params(P: _Params, T: Transform, angles: bool = False) -> _Params:
     return _Params(P.m, _step(Rh + P.m * p, angles), _step(I_O, angles))
 
 
-def _bracket(V: ImmutableMatrix, s: ImmutableMatrix) -> ImmutableMatrix:
-    """The screw product ``[V, s] = (w x S; w x S0 + v x S)`` of 6x1 ray-order columns."""
-    w, v, S_, S0 = V[:3, 0], V[3:, 0], s[:3, 0], s[3:, 0]
-    return ImmutableMatrix.vstack(w.cross(S_), w.cross(S0) + v.cross(S_))
-
-
-def _reciprocal(a: ImmutableMatrix, b: ImmutableMatrix) -> Expr:
-    """The reciprocal product (1.45) ``a o b = S_a . S0_b + S0_a . S_b`` of 6x1 columns."""
-    return a[:3, 0].dot(b[3:, 0]) + a[3:, 0].dot(b[:3, 0])
-
-
 def _check_chain(chain: Any, name: str = "chain") -> tuple[Any, ...]:
     """The chain's inertias (home, space frame), or an error saying how to give them."""
     inertias = getattr(chain, "inertias", None)
@@ -187,7 +177,7 @@ def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
     for i in range(n):
         back = E[i].inverse()
         V = _step(_carry(back, V) + xi[i] * qd[i])
-        A = _step(_carry(back, A) + xi[i] * qdd[i] + _bracket(V, xi[i]) * qd[i])
+        A = _step(_carry(back, A) + xi[i] * qdd[i] + bracket(V, xi[i]) * qd[i])
         Vs.append(V)
         As.append(A)
     F = zeros(6, 1)
@@ -195,8 +185,8 @@ def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
     for i in reversed(range(n)):
         M = spatial_matrix(*params[i])
         F = _carry(E[i + 1], F) if i + 1 < n else F
-        F = _step(F + M * As[i] + _bracket(Vs[i], M * Vs[i]))
-        tau[i] = tidy(_reciprocal(xi[i], F))
+        F = _step(F + M * As[i] + bracket(Vs[i], M * Vs[i]))
+        tau[i] = tidy(reciprocal_form(xi[i], F))
     return ImmutableMatrix(tau)
 
 
@@ -283,7 +273,7 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
         for i in reversed(range(k + 1)):
             if i < k:
                 W = _carry(E[i + 1], W, angles=True)
-            H[i][k] = H[k][i] = tidy(_reciprocal(xi[i], W))
+            H[i][k] = H[k][i] = tidy(reciprocal_form(xi[i], W))
     return ImmutableMatrix(H)
 
 

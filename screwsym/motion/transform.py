@@ -55,7 +55,7 @@ from ..core.decide import (
     is_zero_vector_scaled,
     norm,
 )
-from ..core.formulas import moved
+from ..core.formulas import cross_matrix, moved
 from ..core.inertia import SpatialInertia
 from ..core.screw import MatrixLike, ScalarLike, Screw, VectorLike
 from ..core.tidy import tidy
@@ -70,7 +70,10 @@ _S = TypeVar("_S", bound=Screw)
 
 
 def skew(v: VectorLike) -> ImmutableMatrix:
-    r"""The 3x3 matrix ``[v]x`` with ``[v]x w = v x w``.
+    r"""The 3x3 matrix ``[v]x`` with ``[v]x w = v x w``, of a checked 3-vector ``v``.
+
+    The formula is :func:`screwsym.core.formulas.cross_matrix`'s; this checks
+    ``v`` first (a list, tuple or SymPy matrix of three real entries).
 
     >>> from screwsym.motion.transform import skew
     >>> skew([1, 2, 3])
@@ -79,8 +82,7 @@ def skew(v: VectorLike) -> ImmutableMatrix:
     [ 3,  0, -1],
     [-2,  1,  0]])
     """
-    x, y, z = check_vector(v, "v")
-    return ImmutableMatrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
+    return cross_matrix(check_vector(v, "v"))
 
 
 #: symbolic entries larger than this (``count_ops``) are not put through the

@@ -36,6 +36,7 @@ from screwsym import (
     shift_origin,
     vector,
 )
+from screwsym.core.formulas import cross_matrix
 from screwsym.motion.transform import adjoint_matrix, skew
 
 t, u = symbols("theta phi", real=True)
@@ -247,9 +248,15 @@ def test_equals_decides_and_can_say_no():
     assert Transform.identity().equals(Transform.translation([0, 0, 1])) is False
 
 
-def test_skew():
-    a, b = vector("a"), vector("b")
-    assert skew(a) * b == a.cross(b)
+def test_skew_is_the_checked_cross_matrix():
+    # the identity [a]x b = a x b is checked once, in tests/core/test_formulas.py
+    a = vector("a")
+    assert skew(a) == cross_matrix(a)
+    assert skew([1, 2, 3]) == cross_matrix(ImmutableMatrix([1, 2, 3]))
+    with pytest.raises(ValueError, match=r"v: expected a 3-vector, got shape \(2,\)"):
+        skew([1, 2])
+    with pytest.raises(TypeError, match="v: expected a 3-vector .*, got str 'abc'"):
+        skew("abc")
 
 
 # ------------------------------------------------------------ property tests
