@@ -28,6 +28,7 @@ from typing import Any
 from sympy import (
     QQ,
     ZZ,
+    Abs,
     Dummy,
     ImmutableMatrix,
     Integer,
@@ -39,6 +40,7 @@ from sympy import (
     sin,
     zeros,
 )
+from sympy import gcd as expr_gcd
 from sympy import lcm as expr_lcm
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyutils import parallel_dict_from_expr
@@ -72,6 +74,7 @@ __all__ = [
     "primitive_vector",
     "field_matrix",
     "clean_vector",
+    "primitive_entries",
     "nullspace_basis",
     "field_rank",
     "MINOR_BUDGET",
@@ -400,6 +403,28 @@ def field_matrix(M: Matrix) -> DomainMatrix:
     return DomainMatrix(rows, (M.rows, M.cols), K)
 
 
+def primitive_entries(entries: list[Any]) -> list[Any]:
+    """The entries with denominators cleared and their gcd divided out (exact): a primitive
+    vector of expressions, up to its sign (:func:`clean_vector` also fixes the sign).
+
+    >>> from sympy import symbols
+    >>> x, y = symbols("x y")
+    >>> primitive_entries([x / 2, x * y / 3, 0])
+    [3, 2*y, 0]
+    """
+    entries = [cancel(e) for e in entries]
+    dens = [fraction(e)[1] for e in entries if e != 0]
+    if not dens:
+        return entries
+    m = reduce(expr_lcm, dens)
+    entries = [cancel(e * m) for e in entries]
+    nonzero = [e for e in entries if e != 0]
+    g = reduce(expr_gcd, nonzero)
+    if g.is_number and g.is_positive is not True:
+        g = Abs(g)
+    return [cancel(e / g) for e in entries]
+
+
 def clean_vector(v: list) -> list:
     """A vector scaled to lowest terms: no denominators, no common factor, first entry positive.
 
@@ -419,8 +444,7 @@ def clean_vector(v: list) -> list:
         g = reduce(igcd, [abs(int(e)) for e in ints if e != 0])
         v = [e / g for e in ints]
     else:
-        den = reduce(expr_lcm, [fraction(e)[1] for e in nz], Integer(1))
-        v = [cancel(e * den) for e in v]
+        v = primitive_entries(v)
     first = next(e for e in v if e != 0)
     if first.is_number and first.is_negative or (not first.is_number
                                                   and first.could_extract_minus_sign()):

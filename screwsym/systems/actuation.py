@@ -58,7 +58,6 @@ Theory 45 (2010) 1462-1476.
 from __future__ import annotations
 
 import random
-from functools import reduce
 from typing import Any, NamedTuple
 
 from sympy import (
@@ -78,14 +77,14 @@ from sympy import (
     expand,
     eye,
     fraction,
-    gcd,
-    lcm,
     sqrt,
     true,
 )
 from sympy.logic.boolalg import simplify_logic
 
+from ..algebra.linalg import primitive_entries
 from ..core.decide import is_zero_vector
+from ..core.formulas import cross_matrix, reciprocal_form
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from .joints import (
@@ -191,21 +190,6 @@ def _euclid(a: Any, b: Any, X: ImmutableMatrix) -> Any:
     return a.S.dot(b.S) + ma.dot(mb)
 
 
-def _primitive(entries: list[Any]) -> list[Any]:
-    """The entries with denominators cleared and the common factor divided out (exact)."""
-    entries = [cancel(e) for e in entries]
-    dens = [fraction(e)[1] for e in entries if e != 0]
-    if not dens:
-        return entries
-    m = reduce(lcm, dens)
-    entries = [cancel(e * m) for e in entries]
-    nonzero = [e for e in entries if e != 0]
-    g = reduce(gcd, nonzero)
-    if g.is_number and g.is_positive is not True:
-        g = Abs(g)
-    return [cancel(e / g) for e in entries]
-
-
 def limb_actuation_wrench(limb: _Limb, k: int) -> Wrench:
     """The actuation wrench of joint ``k`` of ``limb`` (the module docstring gives the choice).
 
@@ -234,19 +218,19 @@ def limb_actuation_wrench(limb: _Limb, k: int) -> Wrench:
     null = G.nullspace(simplify=False)
     if len(null) != 1:  # pragma: no cover - the product is definite on forces and couples
         raise ValueError("actuated: the actuation wrench is not unique here")
-    beta = _primitive(list(null[0]))
+    beta = primitive_entries(list(null[0]))
     w = sum((beta[j] * B[j].matrix for j in range(len(B))), ImmutableMatrix.zeros(6, 1))
     return _signed(_wrench_from(w), twist)
 
 
 def _wrench_from(column: Any) -> Wrench:
-    entries = _primitive([column[i] for i in range(6)])
+    entries = primitive_entries([column[i] for i in range(6)])
     return Wrench(entries[:3], entries[3:])
 
 
 def _signed(w: Wrench, twist: Twist) -> Wrench:
     """``w`` or ``-w``: the one whose ``w o $_a`` has a positive leading coefficient."""
-    p = cancel(w.S.dot(twist.S0) + w.S0.dot(twist.S))
+    p = cancel(reciprocal_form(w.matrix, twist.matrix))
     if p == 0:
         return w
     num, den = fraction(p)
@@ -321,7 +305,7 @@ def jacobian(mech: _Mechanism) -> tuple[ImmutableMatrix, ImmutableMatrix]:
     diag = []
     for w, (i, k) in zip(wrenches, pairs, strict=True):
         twist = mech.limbs[i].joints[k]._twists()[0]
-        diag.append(cancel(w.S.dot(twist.S0) + w.S0.dot(twist.S)))
+        diag.append(cancel(reciprocal_form(w.matrix, twist.matrix)))
     Jq = ImmutableMatrix(Jx.rows, n, lambda r, c: diag[r] if r == c else 0)
     return Jx, Jq
 
@@ -569,7 +553,7 @@ def transmission(mech: _Mechanism) -> Transmission:
 # ------------------------------------------------------------------ the limb's generic rank
 def _cayley(u: ImmutableMatrix, s: Any) -> ImmutableMatrix:
     """The rotation about ``u`` by the angle ``2 atan(s |u|)``, rational in ``s`` and ``u``."""
-    K = ImmutableMatrix([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
+    K = cross_matrix(u)
     k = 2 / (1 + s**2 * u.dot(u))
     return ImmutableMatrix(eye(3) + k * (s * K + s**2 * K * K)).applyfunc(cancel)
 

@@ -83,6 +83,7 @@ from ..algebra.rings import (
 from ..algebra.surface import null_on_surface
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag
+from ..core.formulas import ad_matrix, cross_matrix
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from ._cases import check_cases, merge_cases, unmade_on_surface
@@ -91,7 +92,7 @@ from .joints import Joint, Parallelogram, Spherical, Universal
 from .motion_type import motion_of
 from .parallel import Degenerate, ParallelMechanism
 from .screw_system import ScrewSystem, basis_with
-from .second_order import SecondOrder, _skew, ad_matrix, loop_terms, second_order_of
+from .second_order import SecondOrder, loop_terms, second_order_of
 from .topology import (
     Network,
     bare_network,
@@ -877,7 +878,7 @@ def _line_op(t: Any) -> Matrix:
 
 def _point_op(p: Any) -> Matrix:
     # the velocity at p: v_O + omega x p = v_O - p x omega
-    return Matrix.hstack(-_skew(list(p)), Matrix.eye(3))
+    return Matrix.hstack(-cross_matrix(list(p)), Matrix.eye(3))
 
 
 def _elements(j: Joint, twists: tuple, side: int) -> list[Matrix]:
@@ -894,7 +895,7 @@ def _elements(j: Joint, twists: tuple, side: int) -> list[Matrix]:
     ops = []
     for t in twists:
         if all(e == 0 for e in t[:3]):  # a direction (prismatic)
-            ops.append(Matrix.hstack(-_skew(t[3:]), zeros(3)))
+            ops.append(Matrix.hstack(-cross_matrix(t[3:]), zeros(3)))
         else:
             ops.append(_line_op(t))
     return ops

@@ -40,6 +40,7 @@ from ..algebra.rings import (
     vanishes,
 )
 from ..core.decide import is_zero
+from ..core.formulas import bracket
 from ..core.twist import Twist
 from .topology import Network, network
 
@@ -51,23 +52,6 @@ __all__ = [
     "SecondOrder",
     "lie_bracket",
 ]
-
-
-def _skew(v: Any) -> Matrix:
-    x, y, z = v
-    return Matrix([[0, -z, y], [z, 0, -x], [-y, x, 0]])
-
-
-def ad_matrix(s: Any) -> Matrix:
-    """The 6 x 6 matrix of ``X -> [s, X]`` for a twist ``s = (w; v)`` in ray order."""
-    w, v = _skew(s[:3]), _skew(s[3:])
-    return Matrix.vstack(Matrix.hstack(w, zeros(3)), Matrix.hstack(v, w))
-
-
-def bracket(a: Any, b: Any) -> list:
-    """``[a, b] = (wa x wb; wa x vb - wb x va)`` of two 6-vectors (ray order)."""
-    wa, va, wb, vb = Matrix(a[:3]), Matrix(a[3:]), Matrix(b[:3]), Matrix(b[3:])
-    return list(wa.cross(wb)) + list(wa.cross(vb) - wb.cross(va))
 
 
 def lie_bracket(a: Twist, b: Twist) -> Twist:
@@ -98,8 +82,8 @@ def lie_bracket(a: Twist, b: Twist) -> Twist:
     for value, name in ((a, "a"), (b, "b")):
         if not isinstance(value, Twist):
             raise TypeError(f"{name}: expected a Twist, got {type(value).__name__}")
-    c = bracket(list(a.matrix), list(b.matrix))
-    return Twist(c[:3], c[3:])
+    c = bracket(a.matrix, b.matrix)
+    return Twist(c[:3, 0], c[3:, 0])
 
 
 class SecondOrder(NamedTuple):
