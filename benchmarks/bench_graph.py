@@ -94,7 +94,7 @@ def main() -> None:
     rows.append(("Delta: build (21 joints)", build, "-", ""))
     rows.append(("Delta: mobility(), exact", t, "< 5 s",
                  f"M = {m.mobility}, L = {m.loops}, nu = {m.redundant}"))
-    t, T = best(lambda: mech.twists("platform"), args.repeat)
+    t, T = best(lambda: mech.relative_twists("platform"), args.repeat)
     rows.append(("Delta: twists('platform') (cold)", t, "-", f"rank {T.rank}, {mech.motion('platform')}"))
     A = np.array(mech.network_matrix(), dtype=float)
     t0 = time.perf_counter()

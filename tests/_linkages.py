@@ -213,9 +213,9 @@ def assert_case_at(mech, m, point):
     assert m.answer() == generic.answer(), (point, m.answer(), generic.answer())
     rates = Matrix(m.rates.xreplace(point)).applyfunc(expand)
     assert exact_zero(A * rates) and rates.rank(simplify=True) == m.mobility, (point, rates)
-    idle = Matrix(m.idle_rates.xreplace(point)).applyfunc(expand)
-    assert exact_zero(A * idle) and idle.rank(simplify=True) == m.idle, (point, idle)
-    for case_common, common in zip(m.common, generic.common, strict=True):
+    idle = Matrix(m.passive_rates.xreplace(point)).applyfunc(expand)
+    assert exact_zero(A * idle) and idle.rank(simplify=True) == m.passive, (point, idle)
+    for case_common, common in zip(m.common_constraints, generic.common_constraints, strict=True):
         case_common = case_common.xreplace(point)
         assert case_common.rank == common.rank == case_common.union(common).rank, (
             point, case_common, common)

@@ -31,7 +31,6 @@ from sympy import (
     Abs,
     Dummy,
     ImmutableMatrix,
-    Integer,
     Matrix,
     cancel,
     fraction,

@@ -120,10 +120,11 @@ class MechanismMobility(NamedTuple):
     loops: int  #: L = J - N + 1, the independent loops
     rank: int  #: the rank of the network matrix (6L x F)
     orders: tuple[int, ...]  #: d_i = rank of loop i's twists = 6 - lambda_i
-    common: tuple[ScrewSystem, ...]  #: each loop's common constraints (lambda_i wrenches)
+    common: tuple[int, ...]  #: lambda_i = 6 - d_i: the count of each loop's common constraints
+    common_constraints: tuple[ScrewSystem, ...]  #: each loop's common constraints (a basis)
     redundant: int  #: nu = sum d_i - rank: loop equations in excess (overconstraint)
-    idle: int  #: zeta: the dimension of the idle freedoms
-    idle_rates: ImmutableMatrix  #: F x zeta: a basis of the idle joint rates
+    passive: int  #: zeta: the passive (idle) freedoms, as ``Mobility.passive``
+    passive_rates: ImmutableMatrix  #: F x zeta: a basis of the passive joint rates
     rates: ImmutableMatrix  #: F x M: a basis of the joint rates allowed
     classical: int  #: Grübler–Kutzbach, 6 (N - J - 1) + F
     links: int  #: N, base included
@@ -132,7 +133,7 @@ class MechanismMobility(NamedTuple):
     def answer(self) -> tuple[Any, ...]:
         """The numbers of the analysis, without the screw systems and bases: what two cases compare."""
         return (self.mobility, self.freedoms, self.loops, self.rank, self.orders,
-                self.redundant, self.idle, self.classical)
+                self.redundant, self.passive, self.classical)
 
 
 
@@ -178,9 +179,9 @@ class Mechanism(ScrewsymBasic):
     ...                      ("coupler", "rocker", R([3, 3, 0], z)),
     ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
     >>> m = fourbar.mobility()
-    >>> m.mobility, m.loops, m.classical, m.orders, m.redundant, m.idle
+    >>> m.mobility, m.loops, m.classical, m.orders, m.redundant, m.passive
     (1, 1, -2, (3,), 0, 0)
-    >>> fourbar.twists("coupler")   # a rotation about the instant centre (12/5, 24/5, 0)
+    >>> fourbar.relative_twists("coupler")   # a rotation about the instant centre (12/5, 24/5, 0)
     ScrewSystem(Twist([0, 0, 5], [24, -12, 0]))
     >>> fourbar.second_order().mobility     # a four-bar in general position moves on
     1
@@ -197,7 +198,7 @@ class Mechanism(ScrewsymBasic):
     ...                   ("left", "coupler", R([cos(q), sin(q), 0], z)),
     ...                   ("coupler", "right", R([2 + cos(q), sin(q), 0], z)),
     ...                   ("right", "ground", R([2, 0, 0], z))], base="ground")
-    >>> para.motion("coupler"), para.twists("coupler")
+    >>> para.motion("coupler"), para.relative_twists("coupler")
     ('1T', ScrewSystem(Twist([0, 0, 0], [sin(q), -cos(q), 0])))
     >>> [(case, m.mobility) for case, m in para.mobility_cases()]
     [(Ne(sin(q), 0), 1), (Eq(sin(q), 0), 2)]
@@ -272,7 +273,7 @@ class Mechanism(ScrewsymBasic):
         >>> m = Mechanism.from_parallel(pm)
         >>> m.links
         ('base', 'limb1.1', 'platform', 'limb2.1')
-        >>> m.twists("platform").rank == pm.mobility().mobility == 1
+        >>> m.relative_twists("platform").rank == pm.mobility().mobility == 1
         True
         """
         return _from_parallel(pm)
@@ -341,17 +342,19 @@ class Mechanism(ScrewsymBasic):
 
         - ``mobility``: ``M = F - rank``, the dimension of the null space of the
           network matrix (the independent joint rates), found exactly;
-        - ``orders``, ``common``: for each loop, the system of wrenches
-          reciprocal to all its joint twists (its common constraints, lambda_i of
-          them) and ``d_i = 6 - lambda_i``, the rank of the loop's twists;
+        - ``orders``, ``common``, ``common_constraints``: for each loop,
+          ``d_i``, the rank of the loop's twists, ``lambda_i = 6 - d_i``, the
+          count of its common constraints (as ``Mobility.common`` counts a
+          parallel mechanism's), and a basis of them: the wrenches reciprocal
+          to all its joint twists;
         - ``redundant``: ``nu = sum d_i - rank``, the loop equations that are
           consequences of the others (overconstraint beyond the common
           constraints), so that ``M = F - sum d_i + nu``;
-        - ``idle``: the idle (passive) freedoms: joint rates allowed that leave
+        - ``passive``: zeta, the passive (idle) freedoms, as ``Mobility.passive``: joint rates allowed that leave
           at rest every link with other than two joints (the base, the links
           where loops meet, end links) and move each two-joint link so that its
           joints' axes, lines and centres stay where they are (the spin of an
-          S-S or S-P-S leg about its own line); ``idle_rates`` a basis;
+          S-S or S-P-S leg about its own line); ``passive_rates`` a basis;
         - ``classical``: the Grübler–Kutzbach count ``6 (N - J - 1) + F``.
 
         Examples
@@ -364,7 +367,7 @@ class Mechanism(ScrewsymBasic):
         >>> from screwsym.systems.joints import P, S
         >>> m = Mechanism([("base", "lower", S([0, 0, 0])), ("lower", "upper", P([0, 0, 1])),
         ...                ("upper", "base", S([0, 0, 2]))], base="base").mobility()
-        >>> m.mobility, m.idle, m.orders
+        >>> m.mobility, m.passive, m.orders
         (1, 1, (6,))
         """
         net = network(self)
@@ -391,7 +394,7 @@ class Mechanism(ScrewsymBasic):
         ``And``) with its :class:`MechanismMobility`.  Every real point satisfies
         at least one case; at every point of a case its ``mobility`` and
         ``rank`` hold exactly, and so do ``orders`` (the rank of each loop's
-        twists); ``common``, ``redundant`` follow from them, while ``idle`` and
+        twists); ``common``, ``redundant`` follow from them, while ``passive`` and
         the bases are those of the case's generic point.
 
         The split is made by the rank conditions of
@@ -483,7 +486,7 @@ class Mechanism(ScrewsymBasic):
         merged = merge_cases(cast("list[tuple[Any, Any]]", out)) if merge else out
         return cast("list[tuple[Any, MechanismMobility | Degenerate | None]]", merged)
 
-    def twists(self, link: Any, relative_to: Any = None) -> ScrewSystem:
+    def relative_twists(self, link: Any, relative_to: Any = None) -> ScrewSystem:
         """The instantaneous motions of ``link`` relative to ``relative_to`` (the base by default).
 
         For every joint rate the loops allow (a basis of the null space), the
@@ -495,7 +498,7 @@ class Mechanism(ScrewsymBasic):
         >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.joints import Parallelogram
         >>> pa = Parallelogram([0, 0, 0], [1, 0, 0], [0, 0, 2])
-        >>> Mechanism(pa.links("a", "b"), base="a").twists("b")   # a translation
+        >>> Mechanism(pa.links("a", "b"), base="a").relative_twists("b")   # a translation
         ScrewSystem(Twist([0, 0, 0], [1, 0, 0]))
         >>> pa.twists                                              # the compound pair: the same
         ScrewSystem(Twist([0, 0, 0], [-4, 0, 0]))
@@ -516,17 +519,17 @@ class Mechanism(ScrewsymBasic):
         """The motion type of ``link`` relative to ``relative_to``: ``"3T"``, ``"1R"``, ``"1H"``, ...
 
         The label of :func:`~screwsym.systems.motion_type.motion_of` for
-        :meth:`twists`: translations, rotations, helical freedoms (translations
+        :meth:`relative_twists`: translations, rotations, helical freedoms (translations
         first, "3T1R"), generic in the symbols; :meth:`helical_pitches` gives
         the pitch of each helical freedom.  None where the helical freedoms depend
         on the signs of the symbols (see ``motion_of``).
         """
-        return motion_of(self.twists(link, relative_to)).motion
+        return motion_of(self.relative_twists(link, relative_to)).motion
 
     def helical_pitches(self, link: Any, relative_to: Any = None) -> tuple | None:
         """The pitches of the helical freedoms ("H" in :meth:`motion`) of ``link`` relative to
         ``relative_to`` (None with :meth:`motion`)."""
-        return motion_of(self.twists(link, relative_to)).helical_pitches
+        return motion_of(self.relative_twists(link, relative_to)).helical_pitches
 
     def _link_number(self, link: Any, name: str) -> int:
         key = check_link(link, name)
@@ -830,10 +833,11 @@ def _figures(net: Network, orders: tuple, common: tuple, rates: Matrix,
         loops=len(g.loops),
         rank=rank,
         orders=orders,
-        common=common,
+        common=tuple(6 - d for d in orders),
+        common_constraints=common,
         redundant=sum(orders) - rank,
-        idle=idle.cols,
-        idle_rates=ImmutableMatrix(idle),
+        passive=idle.cols,
+        passive_rates=ImmutableMatrix(idle),
         rates=ImmutableMatrix(rates),
         classical=6 * (n - J - 1) + F,
         links=n,

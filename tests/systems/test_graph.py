@@ -96,11 +96,11 @@ def test_from_parallel_gives_the_same_answers(name):
     old = pm.mobility()
     mech = Mechanism.from_parallel(pm)
     new = mech.mobility()
-    T = mech.twists("platform")
+    T = mech.relative_twists("platform")
     assert T.rank == old.mobility
     assert same_span(T, old.twists)
     assert mech.motion("platform") == old.motion
-    assert new.idle == old.passive
+    assert new.passive == old.passive
     assert new.classical == old.classical
     assert new.loops == len(pm.limbs) - 1
     assert new.mobility == old.mobility + old.passive  # joint rates: the platform's and the idle
@@ -140,7 +140,7 @@ def test_a_tree_has_no_loop_and_moves_freely():
     # a serial R-R-P arm: no loop, every joint rate free; its end link is not idle
     m = Mechanism([("g", "a", R(O, Z)), ("a", "b", R([1, 0, 0], Z)), ("b", "c", P(Z))], base="g")
     mo = m.mobility()
-    assert (mo.loops, mo.mobility, mo.idle, mo.redundant) == (0, 3, 0, 0)
+    assert (mo.loops, mo.mobility, mo.passive, mo.redundant) == (0, 3, 0, 0)
     assert m.motion("c") == "2T1R" and m.motion("a") == "1R"
     assert m.second_order().mobility == 3
 
@@ -152,22 +152,22 @@ def test_a_rigid_triangle():
     assert m.mobility().mobility == 0 and m.mobility().classical == -3
     so = m.second_order()
     assert (so.instantaneous, so.mobility, so.branches, so.several_branches) == (0, 0, 1, False)
-    assert m.motion("b") == "0" and len(m.twists("b")) == 0
+    assert m.motion("b") == "0" and len(m.relative_twists("b")) == 0
 
 
 def test_idle_freedoms_are_found_not_declared():
     # S-P-S closed on the base: its one joint motion spins the leg about its own line
     m = Mechanism([("g", "lo", S(O)), ("lo", "up", P(Z)), ("up", "g", S([0, 0, 2]))], base="g")
     mo = m.mobility()
-    assert (mo.mobility, mo.idle) == (1, 1)
-    spin = Matrix(mo.idle_rates)
+    assert (mo.mobility, mo.passive) == (1, 1)
+    spin = Matrix(mo.passive_rates)
     # the spin: the lower ball turns about z, the upper one back (the x, y, z order of S)
     assert spin.T * Matrix(m.network_matrix()).T == Matrix.zeros(1, 6)
     assert spin[2] != 0 and spin[2] == -spin[6] and all(spin[k] == 0 for k in (0, 1, 3, 4, 5))
     # a pendant link turning about its joint is no idle freedom; nor is a four-bar's motion
     arm = Mechanism([("g", "a", R(O, Z)), ("a", "b", S([1, 0, 0]))], base="g").mobility()
-    assert (arm.mobility, arm.idle) == (4, 0)
-    assert four_bar_graph().mobility().idle == 0
+    assert (arm.mobility, arm.passive) == (4, 0)
+    assert four_bar_graph().mobility().passive == 0
 
 
 def four_bar_graph():
@@ -176,7 +176,7 @@ def four_bar_graph():
 
 def test_common_and_redundant_constraints_of_a_planar_loop_and_the_delta():
     m = four_bar_graph().mobility()
-    (W,) = m.common
+    (W,) = m.common_constraints
     assert W.rank == 3 and m.orders == (3,)
     # the planar loop's common constraints: the force along z and the couples about x and y
     for w in W:
@@ -220,9 +220,9 @@ def test_bad_input():
         Mechanism([("a", "b", r), ("c", "d", r)], base="a")
     m = Mechanism([("a", "b", r)], base="a")
     with pytest.raises(ValueError, match="link: 'z' is not a link of this mechanism"):
-        m.twists("z")
+        m.relative_twists("z")
     with pytest.raises(ValueError, match="relative_to: 'z' is not a link"):
-        m.twists("b", relative_to="z")
+        m.relative_twists("b", relative_to="z")
     with pytest.raises(ValueError, match=r"rates: expected 1 joint rates, got shape \(2, 1\)"):
         m.quadratic_terms([1, 2])
     with pytest.raises(TypeError, match="a: expected a Twist, got list"):
@@ -239,7 +239,7 @@ def test_parallelogram_pair_equals_the_loop_built_link_by_link():
         pa = Parallelogram(p1, p2, q1)
         loop = Mechanism(pa.links("in", "out"), base="in")
         assert loop.mobility().mobility == 1
-        T = loop.twists("out")
+        T = loop.relative_twists("out")
         assert same_span(T, pa.twists) and T.rank == 1 and loop.motion("out") == "1T"
         # the compound pair inside a limb: the same
         limb = Limb(R(O, Z), pa)
@@ -266,11 +266,11 @@ def test_a_parallelogram_legged_planar_mechanism():
     a, b = parallelogram_legged(False), parallelogram_legged(True)
     ma, mb = a.mobility(), b.mobility()
     assert (ma.mobility, ma.loops, mb.mobility, mb.loops) == (1, 2, 1, 1)
-    assert same_span(a.twists("platform"), b.twists("platform"))
+    assert same_span(a.relative_twists("platform"), b.relative_twists("platform"))
     pm = ParallelMechanism(Limb(R(O, Z), b.joints[1][2]), Limb(R([5, 0, 0], Z), R([4, 3, 0], Z)))
-    assert same_span(pm.mobility().twists, a.twists("platform"))
+    assert same_span(pm.mobility().twists, a.relative_twists("platform"))
     # the platform keeps the arm's orientation (the parallelogram): it turns with arm 1
-    assert same_span(a.twists("platform", relative_to="arm1"), ScrewSystem(Twist.translation(
+    assert same_span(a.relative_twists("platform", relative_to="arm1"), ScrewSystem(Twist.translation(
         Parallelogram([1, 1, 0], [2, 1, 0], [1, 3, 0]).twists.matrix[3:, 0])))
     assert a.second_order().mobility == b.second_order().mobility == 1
     # finite motion: both close a step away, and the platform turns exactly as arm 1 does
@@ -293,9 +293,9 @@ def test_delta_robot_built_link_by_link_is_3t():
     m = delta()
     mo = m.mobility()
     assert (mo.links, mo.joints, mo.loops, mo.freedoms) == (17, 21, 5, 21)
-    assert (mo.mobility, mo.idle) == (3, 0)
+    assert (mo.mobility, mo.passive) == (3, 0)
     assert mo.classical == 6 * (17 - 21 - 1) + 21 == -9
-    T = m.twists("platform")
+    T = m.relative_twists("platform")
     assert T.rank == 3 and m.motion("platform") == "3T"
     assert all(t.omega == Matrix([0, 0, 0]) for t in T)
     # finite motion: the three arms turned a little, the loops closed, the platform translated
@@ -312,7 +312,7 @@ def test_orthoglide_is_3t():
     # translations; here at its isotropic pose, the rods along the sliders' axes
     m = orthoglide()
     mo = m.mobility()
-    assert (mo.loops, mo.freedoms, mo.mobility, mo.idle) == (5, 21, 3, 0)
+    assert (mo.loops, mo.freedoms, mo.mobility, mo.passive) == (5, 21, 3, 0)
     assert m.motion("platform") == "3T"
     c = Closure(m)
     q, res = c.solve({0: 0.02, 7: -0.01, 14: 0.015})  # the three sliders
@@ -329,9 +329,9 @@ def test_h4_is_3t1r():
     # (Schoenflies motion); 24 links, 30 joints, 7 loops.  Slow: about 3 s
     m = h4()
     mo = m.mobility()
-    assert (mo.links, mo.joints, mo.loops, mo.mobility, mo.idle) == (24, 30, 7, 4, 0)
+    assert (mo.links, mo.joints, mo.loops, mo.mobility, mo.passive) == (24, 30, 7, 4, 0)
     assert m.motion("C") == "3T1R" and m.motion("A") == "3T"
-    (w,) = [t.omega for t in m.twists("C") if t.omega != Matrix([0, 0, 0])]
+    (w,) = [t.omega for t in m.relative_twists("C") if t.omega != Matrix([0, 0, 0])]
     assert w.cross(Matrix(Z)) == Matrix([0, 0, 0])  # the rotation is about z
     c = Closure(m)
     q, res = c.solve({0: 0.02, 7: -0.01, 14: 0.015, 21: 0.01})  # the four actuated arms
@@ -353,7 +353,7 @@ def test_watt_and_stephenson_six_bars_have_one_freedom(build):
     # e.g. Hunt, Kinematic Geometry of Mechanisms, 1978): planar, two loops of order 3
     m = build()
     mo = m.mobility()
-    assert (mo.mobility, mo.loops, mo.orders, mo.redundant, mo.idle) == (1, 2, (3, 3), 0, 0)
+    assert (mo.mobility, mo.loops, mo.orders, mo.redundant, mo.passive) == (1, 2, (3, 3), 0, 0)
     assert m.second_order()[:4] == (1, 1, 1, False)
     c = Closure(m)
     q, res = c.solve({0: 0.05}, start=0.05 * rates_of(m) / rates_of(m)[0])
@@ -538,7 +538,7 @@ def test_mobility_cases_of_a_symbolic_four_bar_match_parallel_mechanism():
     pm = four_bar(B=(bx, by, 0), Cp=(3, 0, 0))
     mech = Mechanism.from_parallel(pm)
     cases = mech.mobility_cases(merge=False)
-    assert [(m.mobility, m.orders, m.idle) for _, m in cases] == [
+    assert [(m.mobility, m.orders, m.passive) for _, m in cases] == [
         (1, (3,), 0), (2, (2,), 0), (2, (2,), 1)]
     rnd = random.Random(19)
     special = [{bx: u, by: 0} for u in (0, 1, 3, 4, Rational(7, 2))]
@@ -747,7 +747,7 @@ def test_mobility_cases_decides_a_case_that_no_substitution_states():
     with pytest.raises(AssertionError):
         assert_case_at(mech, m._replace(rates=m.rates + Matrix.eye(4)[:, :2]), on[1])
     with pytest.raises(AssertionError):
-        assert_case_at(mech, m._replace(common=(ScrewSystem(*m.common[0].screws[:3]),)), on[0])
+        assert_case_at(mech, m._replace(common_constraints=(ScrewSystem(*m.common_constraints[0].screws[:3]),)), on[0])
 
 
 def test_mobility_cases_reports_a_joint_unmade_on_a_surface():

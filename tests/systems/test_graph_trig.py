@@ -108,10 +108,10 @@ def test_a_parallelogram_translates_its_coupler_at_every_angle_off_the_flat_pose
     # Kinematic Geometry of Mechanisms, 1978, §2; test_graph's flat parallelogram)
     mech = parallelogram()
     m = mech.mobility()
-    assert (m.mobility, m.orders, m.idle) == (1, (3,), 0)
+    assert (m.mobility, m.orders, m.passive) == (1, (3,), 0)
     assert m.rates == Matrix([1, -1, 1, -1])
     assert mech.motion("coupler") == "1T"
-    assert mech.twists("coupler").screws == (Twist([0, 0, 0], [sin(q), -cos(q), 0]),)
+    assert mech.relative_twists("coupler").screws == (Twist([0, 0, 0], [sin(q), -cos(q), 0]),)
     assert mech.helical_pitches("coupler") == ()
     assert mech.second_order().mobility == 1  # the forms vanish on the whole circle
     assert [(c, m.mobility) for c, m in mech.mobility_cases()] == [
