@@ -6,16 +6,20 @@ mechanism's analysis into the cases where a rank changes, one system after anoth
 Both grow the same tree: a :class:`Leaf` holds the conditions so far, the substitution
 that states them (``None``: undecided), the *relation* of a case that no substitution
 states (the later splits are made modulo it), and the nodes that proved each rank.
-:func:`refine` splits a leaf by the rank conditions of one more system
-(:mod:`screwsym.systems._rank_cases`), composed with the leaf's own;
-:func:`unmade_on_surface` is the Degenerate rule on a surface (a joint whose twists
-lose rank there); :func:`check_cases` is the limit on their number;
+:func:`split_mechanism` is the driver: each mechanism lists only the systems it splits
+on (its :class:`Stage` s), the parts that its values may unmake, and what it gives on a
+case; the driver splits each leaf by the rank conditions of one more system
+(:mod:`screwsym.systems._rank_cases`), composed with the leaf's own, drops the cases
+that contradict themselves, applies the Degenerate rule (:func:`unmade`, and
+:func:`unmade_on_surface` on a surface: a joint whose twists lose rank there) and
+keeps their number within the limit (:func:`check_cases`);
 :func:`merge_cases` gives the cases with the same answer as one, and
 :func:`union_of` writes their condition in few terms.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any, NamedTuple, Protocol, TypeVar, cast
 
 from sympy import (
@@ -27,14 +31,15 @@ from sympy import (
     Or,
     cos,
     count_ops,
+    false,
     sin,
     true,
 )
 from sympy.logic.boolalg import simplify_logic
 
 from ..algebra.circle import circle_simplify, trig_substitute
+from ..algebra.rings import vanishes
 from ._rank_cases import rank_cases, rank_on_surface, surface_cases, within
-from .screw_system import ScrewSystem
 
 
 def unmade_on_surface(joints: Any, subs: dict[Any, Any], fe: Any) -> str | None:
@@ -134,30 +139,101 @@ def check_cases(count: int, limit: int) -> None:
 class Leaf(NamedTuple):
     """A case of the split: its conditions, its substitution (None: undecided), its relation
     (the equation of a case that no substitution states, the later splits made modulo it),
-    and the nodes of screw_system's split that proved each rank so far (limbs, constraints)."""
+    the nodes of the rank split that proved each rank so far, and what the mechanism's own
+    stages carry along (``extra``: the graph's joint rates closing the loops so far)."""
 
     conds: tuple
     subs: dict | None
     relation: tuple
     nodes: tuple
+    extra: Any = None
 
 
-def refine(leaf: Leaf, system: ScrewSystem, limit: int) -> list[Leaf]:
-    """The cases of ``system`` (already substituted) within ``leaf``: composed with it.
+class Stage(NamedTuple):
+    """One system a mechanism's split is made on, within each decided leaf.
 
-    On a leaf with a relation ``fe``, the system's cases on the surface ``fe = 0``
-    (:func:`~screwsym.systems.screw_system._surface_cases`).  A case whose rank is
-    undecided keeps ``None`` as its substitution.
+    ``system(leaf)`` gives the matrix whose rank conditions split the leaf (the leaf's
+    substitution made) and what ``grow`` needs; ``grow(leaf, node, context)`` gives the
+    leaf of the new case ``node`` (by default: ``node`` recorded in ``leaf.nodes``).
     """
-    out: list[Leaf] = []
-    subs = cast("dict[Any, Any]", leaf.subs)  # called on decided leaves only
-    M = system.matrix
-    nodes = surface_cases(M, leaf.relation[0], limit) if leaf.relation else rank_cases(M, limit)
-    for node in nodes:
-        new_conds = leaf.conds if node.condition is true else leaf.conds + (node.condition,)
-        if node.rank is None:  # undecided
-            out.append(Leaf(new_conds, None, (), ()))
+
+    system: Callable[[Leaf], tuple[ImmutableMatrix, Any]]
+    grow: Callable[[Leaf, Any, Any], Leaf] | None = None
+
+
+def contradicts(conds: tuple, subs: dict) -> bool:
+    """Whether the substitution of a case makes one of its own ``Ne`` conditions false."""
+    for c in conds:
+        for atom in c.atoms(Ne):
+            if vanishes(trig_substitute(atom.lhs - atom.rhs, subs)):
+                return True
+    return False
+
+
+def unmade(units: Any, subs: dict) -> str | None:
+    """Why the first of ``units`` (``(name, joint or limb)`` pairs) is unmade by ``subs``: the
+    ``ValueError`` its constructor gives with those values, as ``"name: error"``; None when
+    all stand."""
+    for name, unit in units:
+        try:
+            trig_substitute(unit, subs)
+        except ValueError as error:
+            return f"{name}: {error}"
+    return None
+
+
+def split_mechanism(stages: list[Stage], units: Any, joints: Any,
+                    result: Callable[[Leaf], Any], limit: int) -> list[tuple[Any, Any]]:
+    """The cases of a mechanism: split by each stage's system in turn, then ``result`` of each.
+
+    The driver both mobility splits share.  Each decided leaf is split by the rank
+    conditions of its stage's system (:func:`~screwsym.systems._rank_cases.rank_cases`, or
+    :func:`~screwsym.systems._rank_cases.surface_cases` modulo the leaf's relation); a new
+    case is composed with its leaf (:func:`~screwsym.systems._rank_cases.within`), dropped
+    where its substitution contradicts its own conditions (no point), and given as
+    :class:`~screwsym.systems.parallel.Degenerate` where its values unmake one of ``units``
+    (``(name, joint or limb)`` pairs: :func:`unmade`) or, on a new surface, one of
+    ``joints`` (:func:`unmade_on_surface`): the Degenerate rule.  An undecided case (rank
+    ``None``) stays a leaf with ``None`` as its substitution and comes out with ``None``.
+    At most ``limit`` leaves after each stage (:func:`check_cases`).  The degenerate cases
+    are listed last.
+    """
+    from .parallel import Degenerate  # the result type; parallel imports this module
+
+    leaves = [Leaf((), {}, (), ())]
+    degenerate: list[tuple[Any, Any]] = []
+    for stage in stages:
+        grown: list[Leaf] = []
+        for leaf in leaves:
+            if leaf.subs is None:
+                grown.append(leaf)
+                continue
+            M, context = stage.system(leaf)
+            nodes = (surface_cases(M, leaf.relation[0], limit) if leaf.relation
+                     else rank_cases(M, limit))
+            for node in nodes:
+                conds = leaf.conds if node.condition is true else leaf.conds + (node.condition,)
+                if node.rank is None:  # undecided
+                    grown.append(Leaf(conds, None, (), ()))
+                    continue
+                composed, relation = within(cast("dict", leaf.subs), leaf.relation, node)
+                if contradicts(conds, composed):
+                    continue
+                why = unmade(units, composed) if node.subs else None
+                if why is None and relation and relation != leaf.relation:  # a new surface
+                    why = unmade_on_surface(joints, composed, relation[0])
+                if why is not None:  # the case's values unmake a joint: nothing to analyse
+                    degenerate.append((And(*conds), Degenerate(why)))
+                    continue
+                new = Leaf(conds, composed, relation, leaf.nodes, leaf.extra)
+                grown.append(stage.grow(new, node, context) if stage.grow
+                             else new._replace(nodes=new.nodes + (node,)))
+        leaves = grown
+        check_cases(len(leaves), limit)
+    out: list[tuple[Any, Any]] = []
+    for leaf in leaves:
+        condition = And(*leaf.conds) if leaf.conds else true
+        if condition is false:
             continue
-        composed, relation = within(subs, leaf.relation, node)
-        out.append(Leaf(new_conds, composed, relation, leaf.nodes + (node,)))
-    return out
+        out.append((condition, None if leaf.subs is None else result(leaf)))
+    return out + degenerate

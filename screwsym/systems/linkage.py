@@ -57,15 +57,12 @@ from functools import reduce
 from typing import TYPE_CHECKING, Any, NamedTuple, cast
 
 from sympy import (
-    And,
     ImmutableMatrix,
     Integer,
     Matrix,
-    Ne,
     Tuple,
     cancel,
     expand,
-    false,
     fraction,
     lcm,
     true,
@@ -78,7 +75,6 @@ from ..algebra.linalg import clean_vector, det_rows, nullspace_basis
 from ..algebra.rings import (
     to_expr,
     to_ring,
-    vanishes,
 )
 from ..algebra.surface import null_on_surface
 from ..core.basic import ScrewsymBasic
@@ -86,8 +82,8 @@ from ..core.checks import check_count, check_flag
 from ..core.formulas import ad_matrix, cross_matrix
 from ..core.twist import Twist
 from ..core.wrench import Wrench
-from ._cases import check_cases, merge_cases, unmade_on_surface
-from ._rank_cases import apply_subs, case_budget, rank_cases, surface_cases, swapped, within
+from ._cases import Leaf, Stage, merge_cases, split_mechanism
+from ._rank_cases import apply_subs, case_budget, swapped
 from .joints import Joint, Parallelogram, Spherical, Universal
 from .motion_type import motion_of
 from .parallel import Degenerate, ParallelMechanism
@@ -616,15 +612,6 @@ def _put(M: Matrix, subs: dict) -> Matrix:
     return Matrix(apply_subs(M, subs)) if subs else M
 
 
-def _contradicts(conds: tuple, subs: dict) -> bool:
-    """Whether the substitution of a case makes one of its own ``Ne`` conditions false."""
-    for c in conds:
-        for atom in c.atoms(Ne):
-            if vanishes(trig_substitute(atom.lhs - atom.rhs, subs)):
-                return True
-    return False
-
-
 def _relations(node: Any) -> Matrix:
     """A basis of the linear relations among the members of a case (its columns' null space).
 
@@ -678,118 +665,58 @@ def _named_joints(mech: Mechanism) -> list[tuple[str, Joint]]:
     return [(f"joints[{k}] ({a!r}, {b!r})", j) for k, (a, b, j) in enumerate(mech.joints)]
 
 
-def _unmade(mech: Mechanism, subs: dict) -> Degenerate | None:
-    """The first joint that ``subs`` unmakes (its ``ValueError`` when built with those values),
-    named as the graph knows it, ``joints[k] (link_a, link_b): ...``; ``None`` when all stand."""
-    for name, j in _named_joints(mech):
-        try:
-            trig_substitute(j, subs)
-        except ValueError as error:
-            return Degenerate(f"{name}: {error}")
-    return None
-
-
 def _mobility_cases(mech: Mechanism,
                     limit: int) -> list[tuple[Any, MechanismMobility | Degenerate | None]]:
+    """The split of :meth:`Mechanism.mobility_cases` before merging: by each loop's twists
+    (its order, exact on each case), then by the network matrix loop by loop, the joint rates
+    closing the loops so far carried in each leaf
+    (:func:`~screwsym.systems._cases.split_mechanism`)."""
     net = network(mech)
     g = net.graph
     A = net.A
     F = A.cols
     if not A.free_symbols:
         return [(true, mech.mobility())]
-    # a leaf: its conditions; its substitution (None: undecided); its relation, the equation
-    # of a case that no substitution states, () if none (the later splits are made on that
-    # surface, modulo it: surface_cases); the nodes that proved each loop's order; and the
-    # rates closing the loops so far
-    leaves: list[_Leaf] = [_Leaf((), {}, (), (), None)]
     used = [sorted({g.offsets[e] + k for e, _ in loop for k in range(g.edges[e][2].freedom)})
             for loop in g.loops]
 
-    degenerate: list[tuple[Any, MechanismMobility | Degenerate | None]] = []  # listed last
+    def rows(i: int) -> list[int]:
+        return list(range(6 * i, 6 * i + 6))
 
-    def split(leaf: _Leaf, M: Matrix) -> list[tuple[_Leaf, Any]]:
-        found: list[tuple[_Leaf, Any]] = []
-        M = ImmutableMatrix(M)
-        nodes = surface_cases(M, leaf.relation[0], limit) if leaf.relation else rank_cases(M, limit)
-        for node in nodes:
-            new = leaf.conds if node.condition is true else leaf.conds + (node.condition,)
-            if node.rank is None:  # undecided
-                found.append((_Leaf(new, None, (), (), None), node))
-                continue
-            # split is called on decided leaves only
-            composed, relation = within(cast("dict", leaf.subs), leaf.relation, node)
-            if _contradicts(new, composed):
-                continue
-            unmade = _unmade(mech, composed) if node.subs else None
-            if unmade is None and relation and relation != leaf.relation:  # a new surface
-                why = unmade_on_surface(_named_joints(mech), composed, relation[0])
-                unmade = None if why is None else Degenerate(why)
-            if unmade is not None:  # the case's values unmake a joint: nothing to analyse there
-                degenerate.append((And(*new), unmade))
-                continue
-            found.append((_Leaf(new, composed, relation, leaf.orders, leaf.rates), node))
-        return found
+    def order(i: int) -> Stage:
+        # the loop's twists: its order with the node that proved it (recorded in leaf.nodes)
+        return Stage(lambda leaf: (ImmutableMatrix(_put(A.extract(rows(i), used[i]), leaf.subs)),
+                                   None))
 
-    for i in range(len(g.loops)):  # each loop's twists: its order d_i exact on each case
-        grown: list[_Leaf] = []
-        for leaf in leaves:
-            if leaf.subs is None:
-                grown.append(leaf)
-                continue
-            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), used[i]), leaf.subs)
-            # each loop's order with the node that proved it, at every point of its case
-            grown.extend(new._replace(orders=new.orders + (node,)) if new.subs is not None
-                         else new for new, node in split(leaf, block))
-        leaves = grown
-        check_cases(len(leaves), limit)
-    leaves = [leaf._replace(rates=None if leaf.subs is None else Matrix.eye(F)) for leaf in leaves]
-    for i in range(len(g.loops)):  # the network matrix, loop by loop
-        grown = []
-        for leaf in leaves:
-            if leaf.subs is None or leaf.rates is None:
-                grown.append(leaf)
-                continue
-            block = _put(A.extract(list(range(6 * i, 6 * i + 6)), list(range(F))), leaf.subs)
-            block, N = _polynomial_columns(block * leaf.rates, leaf.rates)
-            for new, node in split(leaf._replace(rates=N), block):
-                if new.subs is None:
-                    grown.append(new)
-                    continue
-                more = dict(node.subs)
-                rates = (_put(N, more) * _relations(node)).applyfunc(cancel)
-                grown.append(new._replace(rates=rates))
-        leaves = grown
-        check_cases(len(leaves), limit)
-    out: list[tuple[Any, MechanismMobility | Degenerate | None]] = []
-    for leaf in leaves:
-        condition = And(*leaf.conds) if leaf.conds else true
-        if condition is false:
-            continue
-        if leaf.subs is None or leaf.rates is None:
-            out.append((condition, None))
-            continue
+    def closure(i: int) -> Stage:
+        def system(leaf: Leaf) -> tuple[ImmutableMatrix, Matrix]:
+            rates = Matrix.eye(F) if leaf.extra is None else leaf.extra
+            block = _put(A.extract(rows(i), list(range(F))), leaf.subs)
+            block, N = _polynomial_columns(block * rates, rates)
+            return ImmutableMatrix(block), N
+
+        def grow(leaf: Leaf, node: Any, N: Matrix) -> Leaf:
+            rates = (_put(N, dict(node.subs)) * _relations(node)).applyfunc(cancel)
+            return leaf._replace(extra=rates)
+
+        return Stage(system, grow)
+
+    def result(leaf: Leaf) -> MechanismMobility | None:
         here = trig_substitute(mech, leaf.subs) if leaf.subs else mech
         if leaf.relation:  # on a surface: the figures of the split, proved there
-            out.append((condition, _on_surface_mobility(here, leaf)))
-            continue
+            return _on_surface_mobility(here, leaf)
         m = here.mobility()
-        if m.mobility != leaf.rates.cols:  # pragma: no cover - the split proves the rank on the case
+        if m.mobility != leaf.extra.cols:  # pragma: no cover - the split proves the rank
             raise AssertionError("mobility_cases: the case's rank and its generic rank differ")
-        out.append((condition, m))
-    return out + degenerate
+        return m
+
+    loops = range(len(g.loops))
+    stages = [order(i) for i in loops] + [closure(i) for i in loops]
+    named = _named_joints(mech)
+    return split_mechanism(stages, named, named, result, limit)
 
 
-class _Leaf(NamedTuple):
-    """A case of the graph's split (see ``_mobility_cases``)."""
-
-    conds: tuple
-    subs: dict | None
-    relation: tuple
-    orders: tuple  # the nodes (of screw_system's split) that proved each loop's order
-    rates: Matrix | None
-
-
-def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | None:
+def _on_surface_mobility(mech: Mechanism, leaf: Leaf) -> MechanismMobility | None:
     """The figures of a case on a surface ``fe = 0`` (``leaf.relation``) from its split.
 
     The mobility, rank, orders and common constraints are proved at every point of the
@@ -800,7 +727,7 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
     """
     fe = leaf.relation[0]
     net = bare_network(mech)
-    N = cast(Matrix, leaf.rates)
+    N = cast(Matrix, leaf.extra)
     N = Matrix.hstack(*(Matrix(clean_vector(list(N.col(k)))) for k in range(N.cols))) if N.cols \
         else N
 
@@ -815,8 +742,8 @@ def _on_surface_mobility(mech: Mechanism, leaf: _Leaf) -> MechanismMobility | No
         return None
     # each basis by Cramer's rule on the minor that proved its loop's order (non-zero on
     # the case), written with the case's substitution (a later case's may set more symbols)
-    return _figures(net, tuple(node.rank for node in leaf.orders),
-                    tuple(basis_with(node, Wrench, leaf.subs) for node in leaf.orders), N, idle)
+    return _figures(net, tuple(node.rank for node in leaf.nodes),
+                    tuple(basis_with(node, Wrench, leaf.subs) for node in leaf.nodes), N, idle)
 
 
 def _figures(net: Network, orders: tuple, common: tuple, rates: Matrix,

@@ -56,12 +56,9 @@ import sys
 from typing import TYPE_CHECKING, Any, NamedTuple, SupportsIndex, cast
 
 from sympy import (
-    And,
     Basic,
     ImmutableMatrix,
     Tuple,
-    false,
-    true,
 )
 
 from ..algebra.budget import BUDGET, MAX_CASES
@@ -71,7 +68,7 @@ from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from . import actuation as _actuation
-from ._cases import Answered, Leaf, check_cases, merge_cases, refine, unmade_on_surface
+from ._cases import Answered, Leaf, Stage, merge_cases, split_mechanism
 from ._rank_cases import case_budget, rank_on_surface
 from .actuation import check_actuated, generic_limb_rank
 from .joints import Joint, check_joints
@@ -484,83 +481,36 @@ class ParallelMechanism(ScrewsymBasic):
         return cast("list[tuple[Any, Mobility | Degenerate | None]]", merge_cases(answered))
 
     def _mobility_cases(self, max_cases: int) -> list[tuple[Any, Mobility | Degenerate | None]]:
-        leaves: list[Leaf] = [Leaf((), {}, (), ())]
-        out: list[tuple[Any, Mobility | Degenerate | None]] = []
-        degenerate: list[tuple[Any, Mobility | Degenerate | None]] = []  # listed last
-        for i in range(len(self.args)):
-            grown: list[Leaf] = []
-            for leaf in leaves:
-                if leaf.subs is None:
-                    grown.append(leaf)
-                    continue
-                try:
-                    limb = trig_substitute(self.args[i], leaf.subs) if leaf.subs else self.args[i]
-                except ValueError as error:  # the case's values unmake a joint of this limb
-                    degenerate.append((And(*leaf.conds), Degenerate(f"limbs[{i}]: {error}")))
-                    continue
-                for case in refine(leaf, limb.twists, max_cases):
-                    unmade = _surface_unmade(self, leaf, case)
-                    if unmade is not None:  # a joint unmade on the case's surface
-                        degenerate.append((And(*case.conds), Degenerate(unmade)))
-                    else:
-                        grown.append(case)
-            leaves = grown
-            check_cases(len(leaves), max_cases)
-        for leaf in leaves:
-            if leaf.subs is None:
-                out.append((And(*leaf.conds) if leaf.conds else true, None))
-                continue
-            try:
-                mech = trig_substitute(self, leaf.subs) if leaf.subs else self
-            except ValueError as error:  # a later limb's case unmakes a joint of an earlier one
-                degenerate.append((And(*leaf.conds),
-                                   Degenerate(_which_limb(self, leaf.subs, error))))
-                continue
+        """The split of :meth:`mobility_cases` before merging: by each limb's twists, then by
+        the union of the limbs' constraints (:func:`~screwsym.systems._cases.split_mechanism`)."""
+        limbs = self.args
+
+        def limb_twists(i: int) -> Stage:
+            return Stage(lambda leaf: (_substituted(limbs[i], leaf.subs).twists.matrix, None))
+
+        def constraints(leaf: Leaf) -> tuple[ImmutableMatrix, None]:
             # on a surface, each limb's constraints are those its own case proved there
-            W = _surface_constraints(leaf) if leaf.relation else mech.constraints
-            for case in refine(leaf, W, max_cases):
-                condition = And(*case.conds) if case.conds else true
-                if condition is false:  # contradicts the limb's case: no point
-                    continue
-                if case.subs is None:
-                    out.append((condition, None))
-                    continue
-                unmade = _surface_unmade(self, leaf, case)
-                if unmade is not None:  # a joint unmade on the case's surface
-                    degenerate.append((condition, Degenerate(unmade)))
-                    continue
-                try:
-                    here = trig_substitute(self, case.subs) if case.subs else self
-                except ValueError as error:  # the constraints' case unmakes a joint
-                    degenerate.append((condition,
-                                       Degenerate(_which_limb(self, case.subs, error))))
-                    continue
-                out.append((condition, _surface_mobility(here, case) if case.relation
-                            else _mobility(here)))
-                check_cases(len(out), max_cases)
-        return out + degenerate
+            W = (_surface_constraints(leaf) if leaf.relation
+                 else _substituted(self, leaf.subs).constraints)
+            return W.matrix, None
+
+        def result(leaf: Leaf) -> Mobility | None:
+            here = _substituted(self, leaf.subs)
+            return _surface_mobility(here, leaf) if leaf.relation else _mobility(here)
+
+        stages = [limb_twists(i) for i in range(len(limbs))] + [Stage(constraints)]
+        units = [(f"limbs[{i}]", limb) for i, limb in enumerate(limbs)]
+        return split_mechanism(stages, units, _limb_joints(self), result, max_cases)
+
+
+def _substituted(obj: Any, subs: Any) -> Any:
+    """``obj`` with a case's substitution made (none: ``obj`` itself)."""
+    return trig_substitute(obj, subs) if subs else obj
 
 
 def _limb_joints(mech: ParallelMechanism) -> list[tuple[str, Joint]]:
     return [(f"limbs[{i}]: joints[{k}]", j) for i, limb in enumerate(mech.args)
             for k, j in enumerate(limb.joints)]
-
-
-def _which_limb(mech: ParallelMechanism, subs: dict[Any, Any], error: ValueError) -> str:
-    """``"limbs[i]: <the joint's error>"`` for the first limb that ``subs`` unmakes."""
-    for i, limb in enumerate(mech.args):
-        try:
-            trig_substitute(limb, subs)
-        except ValueError as found:
-            return f"limbs[{i}]: {found}"
-    return str(error)  # pragma: no cover - the error came from one of the limbs
-
-
-def _surface_unmade(mech: ParallelMechanism, leaf: Leaf, case: Leaf) -> str | None:
-    """Why ``case`` unmakes a joint of ``mech`` where it brings a new surface; else None."""
-    if not case.relation or case.relation == leaf.relation or case.subs is None:
-        return None
-    return unmade_on_surface(_limb_joints(mech), case.subs, case.relation[0])
 
 
 def _surface_constraints(leaf: Leaf) -> ScrewSystem:
