@@ -182,8 +182,8 @@ def unmade(units: Any, subs: dict) -> str | None:
     return None
 
 
-def split_mechanism(stages: list[Stage], units: Any, joints: Any,
-                    result: Callable[[Leaf], Any], limit: int) -> list[tuple[Any, Any]]:
+def split_mechanism(stages: list[Stage], units: Any, joints: Any, result: Callable[[Leaf], Any],
+                    degenerate: Callable[[str], Any], limit: int) -> list[tuple[Any, Any]]:
     """The cases of a mechanism: split by each stage's system in turn, then ``result`` of each.
 
     The driver both mobility splits share.  Each decided leaf is split by the rank
@@ -191,17 +191,16 @@ def split_mechanism(stages: list[Stage], units: Any, joints: Any,
     :func:`~screwsym.systems._rank_cases.surface_cases` modulo the leaf's relation); a new
     case is composed with its leaf (:func:`~screwsym.systems._rank_cases.within`), dropped
     where its substitution contradicts its own conditions (no point), and given as
-    :class:`~screwsym.systems.parallel.Degenerate` where its values unmake one of ``units``
+    ``degenerate(why)`` (:class:`~screwsym.systems.parallel.Degenerate`) where its values
+    unmake one of ``units``
     (``(name, joint or limb)`` pairs: :func:`unmade`) or, on a new surface, one of
     ``joints`` (:func:`unmade_on_surface`): the Degenerate rule.  An undecided case (rank
     ``None``) stays a leaf with ``None`` as its substitution and comes out with ``None``.
     At most ``limit`` leaves after each stage (:func:`check_cases`).  The degenerate cases
     are listed last.
     """
-    from .parallel import Degenerate  # the result type; parallel imports this module
-
     leaves = [Leaf((), {}, (), ())]
-    degenerate: list[tuple[Any, Any]] = []
+    unmade_cases: list[tuple[Any, Any]] = []
     for stage in stages:
         grown: list[Leaf] = []
         for leaf in leaves:
@@ -223,7 +222,7 @@ def split_mechanism(stages: list[Stage], units: Any, joints: Any,
                 if why is None and relation and relation != leaf.relation:  # a new surface
                     why = unmade_on_surface(joints, composed, relation[0])
                 if why is not None:  # the case's values unmake a joint: nothing to analyse
-                    degenerate.append((And(*conds), Degenerate(why)))
+                    unmade_cases.append((And(*conds), degenerate(why)))
                     continue
                 new = Leaf(conds, composed, relation, leaf.nodes, leaf.extra)
                 grown.append(stage.grow(new, node, context) if stage.grow
@@ -236,4 +235,4 @@ def split_mechanism(stages: list[Stage], units: Any, joints: Any,
         if condition is false:
             continue
         out.append((condition, None if leaf.subs is None else result(leaf)))
-    return out + degenerate
+    return out + unmade_cases

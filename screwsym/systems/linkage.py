@@ -713,7 +713,7 @@ def _mobility_cases(mech: Mechanism,
     loops = range(len(g.loops))
     stages = [order(i) for i in loops] + [closure(i) for i in loops]
     named = _named_joints(mech)
-    return split_mechanism(stages, named, named, result, limit)
+    return split_mechanism(stages, named, named, result, Degenerate, limit)
 
 
 def _on_surface_mobility(mech: Mechanism, leaf: Leaf) -> MechanismMobility | None:

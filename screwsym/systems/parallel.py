@@ -500,7 +500,7 @@ class ParallelMechanism(ScrewsymBasic):
 
         stages = [limb_twists(i) for i in range(len(limbs))] + [Stage(constraints)]
         units = [(f"limbs[{i}]", limb) for i, limb in enumerate(limbs)]
-        return split_mechanism(stages, units, _limb_joints(self), result, max_cases)
+        return split_mechanism(stages, units, _limb_joints(self), result, Degenerate, max_cases)
 
 
 def _substituted(obj: Any, subs: Any) -> Any:

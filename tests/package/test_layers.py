@@ -14,6 +14,7 @@ on each other one way only.
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -312,3 +313,47 @@ def test_the_rule_checker_reads_modules_imported_by_name(tmp_path, monkeypatch, 
     (pkg / where).write_text(source)
     monkeypatch.setattr(__import__(__name__), "ROOT", pkg)
     assert bool(layer_violations(import_statements())) is broken
+
+
+# ------------------------------------------------------------------ the house's size
+#: the longest a module of screwsym may be: past it a module holds more than one idea
+MAX_MODULE_LINES = 1000
+#: the most underscore names one module may import from another (``from .m import _x``, or
+#: ``m._x`` through a module bound to a name); a private module imported by name does not count
+MAX_PRIVATE_IMPORTS = 10
+
+
+def private_imports(statements) -> list[tuple[str, str, str]]:
+    """``(module, target, name)`` for every underscore name a module takes from another."""
+    return sorted({(module, target, name) for module, target, names in statements
+                   for name in names
+                   if name.startswith("_") and not name.startswith("__") and target != module})
+
+
+def test_no_module_is_longer_than_the_limit():
+    long = {name: n for name, path in _modules().items()
+            if (n := len(path.read_text().splitlines())) > MAX_MODULE_LINES}
+    assert long == {}
+
+
+def test_few_private_names_cross_modules():
+    found = private_imports(import_statements())
+    assert len(found) <= MAX_PRIVATE_IMPORTS, found
+
+
+def test_the_private_import_counter_sees_both_forms():
+    statements = [("screwsym.a", "screwsym.b", ["_x", "y"]), ("screwsym.a", "screwsym.b", ["_x"]),
+                  ("screwsym.c", "screwsym.c", ["_self"]), ("screwsym.d", "screwsym.e", ["__all__"])]
+    assert private_imports(statements) == [("screwsym.a", "screwsym.b", "_x")]
+
+
+def test_every_module_of_the_algebra_floor_has_a_test_that_imports_it():
+    tests = Path(__file__).parents[1]
+    text = "\n".join(p.read_text() for p in tests.rglob("test_*.py"))
+    modules = [m for m in _modules() if m.startswith("screwsym.algebra.")]
+    assert modules
+    untested = [m for m in modules
+                if not re.search(rf"(from {re.escape(m)} import|import {re.escape(m)}\b|"
+                                 rf"from screwsym\.algebra import [^\n]*\b{m.rsplit('.', 1)[1]}\b)",
+                                 text)]
+    assert untested == []

@@ -477,3 +477,22 @@ def test_a_universal_joint_with_parallel_axes_is_refused():
     a = symbols("a", real=True)
     assert U([0, 0, 0], [1, 0, 0], [a, 1, 0]).freedom == 2  # never parallel: kept
     assert U([0, 0, 0], [1, 0, 0], [1, a, 0]).freedom == 2  # parallel only at a = 0: kept
+
+
+def test_the_case_limit_names_the_method_the_user_called():
+    # the splitter is shared (ScrewSystem.rank_conditions, both mobility_cases): its errors
+    # name the method called, not the splitter's first user
+    from screwsym.systems.linkage import Mechanism
+
+    b = symbols("b", real=True)
+    mech = four_bar(B=(1, b, 0), Cp=(3, 0, 0))  # folds flat where b = 0
+    assert len(mech.mobility_cases(merge=False)) == 2  # so a limit of 1 is too small
+    with pytest.raises(ValueError, match=r"^mobility_cases: .*more than 1 cases"):
+        mech.mobility_cases(max_cases=1)
+    with pytest.raises(ValueError, match=r"^mobility_cases: .*more than 1 cases"):
+        Mechanism.from_parallel(mech).mobility_cases(max_cases=1)
+    with pytest.raises(ValueError, match=r"^rank_conditions: .*more than 1 cases"):
+        mech.constraints.rank_conditions(max_cases=1)
+    c = symbols("c", real=True)  # a mechanism not split yet (a split's results are cached)
+    with pytest.raises(ValueError, match=r"^mobility_cases: .*budget=10 units"):
+        four_bar(B=(1, c, 0), Cp=(3, 0, 0)).mobility_cases(budget=10)
