@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import random
 from functools import lru_cache
+from math import comb
 from typing import Any
 
 from sympy import (
@@ -45,6 +46,7 @@ __all__ = [
     "trig_entries",
     "angles_of",
     "reduce_circle",
+    "reduce_powers",
     "on_circle",
     "sample_point",
     "circle_simplify",
@@ -104,24 +106,52 @@ def angles_of(R) -> tuple:
     return tuple((q, ci, si) for q, (ci, si) in found.items())
 
 
+def reduce_powers(P: Any, pairs: Any) -> Any:
+    """``P`` modulo ``low**2 + high**2 - 1`` for each ``(low, high)`` pair of generator indices:
+    every ``high**k``, ``k >= 2``, made ``high**(k mod 2) (1 - low**2)**(k // 2)``.
+
+    The normal form modulo the circles (their leading terms ``high**2`` are coprime, a
+    Groebner basis): ``P`` vanishes on the circles exactly when this is zero.  One pass
+    by the binomial expansion; used with ``high`` the cosine here (:func:`reduce_circle`)
+    and the sine in the product of exponentials (``screwsym.motion``).
+
+    >>> from sympy import QQ
+    >>> from sympy.polys.rings import ring
+    >>> R, c, s = ring("c s", QQ)
+    >>> reduce_powers(s**3 + c, [(0, 1)])          # s**3 = s (1 - c**2)
+    -c**2*s + c + s
+    >>> reduce_powers(s**2 + c**2 - 1, [(0, 1)])   # zero on the circle
+    0
+    """
+    ring = P.ring
+    zero = ring.domain.zero
+    for low, high in pairs:
+        if all(m[high] < 2 for m in P.itermonoms()):
+            continue
+        out: dict = {}
+        for m, c in P.iterterms():
+            k = m[high]
+            if k < 2:
+                out[m] = out.get(m, zero) + c
+                continue
+            j, r = divmod(k, 2)
+            base = list(m)
+            base[high] = r
+            for t in range(j + 1):
+                ml = list(base)
+                ml[low] += 2 * t
+                mt = tuple(ml)
+                out[mt] = out.get(mt, zero) + c * comb(j, t) * (-1) ** t
+        P = ring.from_dict({m: c for m, c in out.items() if c})
+    return P
+
+
 def reduce_circle(p, R):
     """``p`` reduced modulo ``sin(q)**2 + cos(q)**2 - 1`` for each angle: degree <= 1 in cos(q)."""
-    pairs = angles_of(R)
+    pairs = [(si, ci) for _, ci, si in angles_of(R) if ci is not None and si is not None]
     if not pairs or not p:
         return p
-    ring = p.ring
-    for _, ci, si in pairs:
-        if ci is None or si is None:
-            continue
-        one_minus_s2 = ring.one - ring.gens[si] ** 2
-        while True:
-            high = {m: v for m, v in p.items() if m[ci] >= 2}
-            if not high:
-                break
-            lowered = ring.from_dict({m[:ci] + (m[ci] - 2,) + m[ci + 1:]: v
-                                      for m, v in high.items()})
-            p = p - ring.from_dict(high) + lowered * one_minus_s2
-    return p
+    return reduce_powers(p, pairs)
 
 
 def on_circle(t: Any) -> tuple:

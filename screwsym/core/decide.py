@@ -61,6 +61,7 @@ from sympy.matrices import MatrixBase
 from sympy.polys.domains import QQ
 from sympy.polys.rings import PolyRing
 
+from ..algebra.rings import NotInRing, tree_to_ring
 from .formulas import dot
 
 __all__ = [
@@ -129,51 +130,9 @@ def _rational_parts(expr: Expr) -> tuple | None:
     if not gens:
         return None
     R = PolyRing(gens, QQ, "lex")
-    index = dict(zip(gens, R.gens, strict=True))
-    one = R.one
-    memo: dict[int, tuple] = {}
-
-    def conv(x: Expr) -> tuple:
-        got = memo.get(id(x))
-        if got is not None:
-            return got
-        if x.is_Rational:
-            out = (R.ground_new(QQ(int(x.p), int(x.q))), one)
-        elif x.is_Add:
-            num, den = conv(x.args[0])
-            for a in x.args[1:]:
-                n, d = conv(a)
-                if d == den:
-                    num = num + n
-                else:
-                    num, den = num * d + n * den, den * d
-            out = (num, den)
-        elif x.is_Mul:
-            num, den = one, one
-            for a in x.args:
-                n, d = conv(a)
-                num, den = num * n, den * d
-            out = (num, den)
-        elif x.is_Pow and x.exp.is_Integer:
-            n, d = conv(x.base)
-            k = int(x.exp)
-            if k < 0:
-                n, d, k = d, n, -k
-            out = (n**k, d**k)
-        elif x.is_Pow and x.exp.is_Rational:
-            g = index[Pow(x.base, Rational(1, x.exp.q))]
-            k = int(x.exp.p)
-            out = (g**k, one) if k >= 0 else (one, g ** (-k))
-        else:
-            out = (index[x], one)
-        if not out[1]:
-            raise _NotRational
-        memo[id(x)] = out
-        return out
-
     try:
-        return conv(expr)
-    except _NotRational:
+        return tree_to_ring(expr, R, dict(zip(gens, R.gens, strict=True)), fractions=True)
+    except NotInRing:
         return None
 
 

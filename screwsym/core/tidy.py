@@ -75,6 +75,7 @@ from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialEr
 from sympy.polys.rings import ring
 from sympy.simplify.fu import TR10i
 
+from ..algebra.rings import NotInRing, tree_to_ring
 from .basic import ScrewsymBasic
 from .checks import check_count, check_tidy_input
 
@@ -376,40 +377,13 @@ def _to_ring(exprs: list) -> list:
 
 
 def _ring_element(R: Any, index: dict, e: Expr) -> Any:
-    """The polynomial expression ``e`` as an element of ``R``, by ring arithmetic on its tree.
-
-    What ``R.from_expr`` gives (ring elements are canonical), without its
-    per-node search for powers of generators; ``CoercionFailed`` for anything
-    that is not a polynomial in ``R``'s symbols over its domain.
-    """
-    memo: dict[int, Any] = {}
-    domain = R.domain
-
-    def conv(x: Expr) -> Any:
-        got = memo.get(id(x))
-        if got is not None:
-            return got
-        g = index.get(x) if x.is_Symbol else None
-        if g is not None:
-            out = g
-        elif x.is_Rational:
-            out = R.ground_new(domain.convert(x))
-        elif x.is_Add:
-            out = R.zero
-            for a in x.args:
-                out += conv(a)
-        elif x.is_Mul:
-            out = R.one
-            for a in x.args:
-                out *= conv(a)
-        elif x.is_Pow and x.exp.is_Integer and x.exp >= 0:
-            out = conv(x.base) ** int(x.exp)
-        else:
-            raise CoercionFailed(f"not a polynomial in {R.symbols}: {x}")
-        memo[id(x)] = out
-        return out
-
-    return conv(e)
+    """The polynomial expression ``e`` as an element of ``R``, by ring arithmetic on its tree
+    (:func:`screwsym.algebra.rings.tree_to_ring`); ``CoercionFailed`` for anything that is
+    not a polynomial in ``R``'s symbols over its domain."""
+    try:
+        return tree_to_ring(e, R, index)
+    except NotInRing as error:
+        raise CoercionFailed(str(error)) from None
 
 
 def _pulled(P) -> Expr:

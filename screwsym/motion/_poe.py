@@ -62,7 +62,6 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from itertools import combinations
-from math import comb
 from typing import Any, cast
 
 from sympy import (
@@ -82,6 +81,8 @@ from sympy.core.sorting import default_sort_key
 from sympy.polys.domains import QQ
 from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
 from sympy.polys.rings import ring
+
+from ..algebra.circle import reduce_powers
 
 __all__: list[str] = []
 
@@ -195,27 +196,8 @@ class _Engine:
 
     def _reduce(self, P: Any) -> Any:
         """``P`` modulo ``c^2 + s^2 - 1`` of each geometry base: every ``s^k`` with ``k >= 2`` made
-        ``s^(k mod 2) (1 - c^2)^(k // 2)``.  A normal form (the relations' leading terms ``s^2``
-        are coprime, a Groebner basis), so ``P`` vanishes on the circles when this is zero."""
-        for ic, is_ in self.pairs:
-            if all(m[is_] < 2 for m in P.itermonoms()):
-                continue
-            out: dict = {}
-            for m, c in P.iterterms():
-                k = m[is_]
-                if k < 2:
-                    out[m] = out.get(m, 0) + c
-                    continue
-                j, r = divmod(k, 2)
-                base = list(m)
-                base[is_] = r
-                for t in range(j + 1):
-                    ml = list(base)
-                    ml[ic] += 2 * t
-                    mt = tuple(ml)
-                    out[mt] = out.get(mt, 0) + c * comb(j, t) * (-1) ** t
-            P = self.R.from_dict({m: c for m, c in out.items() if c})
-        return P
+        ``s^(k mod 2) (1 - c^2)^(k // 2)`` (:func:`screwsym.algebra.circle.reduce_powers`)."""
+        return reduce_powers(P, self.pairs)
 
     def _vec(self, v: Any) -> list:
         return [self._el(e) for e in v]
