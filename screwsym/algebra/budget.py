@@ -31,12 +31,12 @@ __all__ = [
 ]
 
 
-#: the default limit on the number of cases of ``rank_conditions``
+#: the default limit on the number of cases of a split (``rank_conditions``, ``mobility_cases``)
 MAX_CASES = 200
 
 
 #: the default work budget of one case split (``rank_conditions``, ``reciprocal_cases``,
-#: ``substitutions``, ``ParallelMechanism.mobility_cases``): units of polynomial arithmetic,
+#: ``substitutions``, both ``mobility_cases``, ``singularities``): units of polynomial arithmetic,
 #: ``k! t_1 ... t_k`` for a k x k determinant whose rows have at most ``t_i`` terms, ``t**2``
 #: to factor a polynomial of ``t`` terms (about a microsecond each, measured; see ``charge``)
 BUDGET = 20_000_000

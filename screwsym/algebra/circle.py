@@ -15,6 +15,18 @@ points, found exactly through t (the real roots of the numerator of f(2t/(1+t**2
 (1-t**2)/(1+t**2))) together with q = pi, which t cannot reach (``circle_points``).
 A symbol ``q`` that also appears outside sin and cos is never solved for (a condition
 ``q sin(q) = 1`` is not a substitution): such a case is left undecided (None).
+
+The half-angle map itself (:func:`on_circle`, :func:`half_angle_symbol`,
+:func:`from_half_angle`) serves where a *field* is needed: the rational functions of
+``t`` are those of the circle, so a rank or a null space over them is the generic one
+(:func:`screwsym.algebra.linalg.field_matrix`), and a basis found in ``t`` is written
+back in ``sin(q)``, ``cos(q)``.
+
+Where it does not simply call SymPy: ``trigsimp`` and ``fu`` search for short forms
+and decide nothing; a Groebner basis of the circles would give the same normal form as
+:func:`reduce_powers`, which reads it off in one pass (the relations' leading terms are
+coprime).  SymPy's ``expand_trig`` brings sums and multiples of angles to ``sin(q)``,
+``cos(q)`` (:func:`trig_normal`).
 """
 
 from __future__ import annotations

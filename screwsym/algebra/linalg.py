@@ -358,12 +358,12 @@ def field_matrix(M: Matrix) -> DomainMatrix:
     """``M`` over its field: QQ, an algebraic field, or rational functions over one.
 
     The entries go through polynomial dictionaries and the cached algebraic
-    coefficients of :mod:`screwsym.systems.screw_system` (``K.from_sympy`` on an
+    coefficients of :mod:`screwsym.algebra.rings` (``K.from_sympy`` on an
     algebraic field computes a minimal polynomial per entry: seconds).
 
     ``sin(q)`` and ``cos(q)`` of a symbol (sums and multiples expanded) live on
     the unit circle, whose rational functions are those of ``t = tan(q/2)``
-    (:func:`~screwsym.systems.screw_system._on_circle`, a bijection of the two
+    (:func:`~screwsym.algebra.circle.on_circle`, a bijection of the two
     fields): they are written in ``t``, so that rank and null space are exact,
     the generic ones on the circle (a field of fractions in ``sin(q)``,
     ``cos(q)`` as free symbols would not know ``sin(q)**2 + cos(q)**2 = 1``).
@@ -427,7 +427,7 @@ def primitive_entries(entries: list[Any]) -> list[Any]:
 def clean_vector(v: list) -> list:
     """A vector scaled to lowest terms: no denominators, no common factor, first entry positive.
 
-    With ``sin``/``cos`` of symbols, in the ring of :mod:`~screwsym.systems.screw_system`:
+    With ``sin``/``cos`` of symbols, in the ring of :mod:`~screwsym.algebra.rings`:
     polynomial, reduced by ``sin(q)**2 + cos(q)**2 = 1`` (so an entry zero on the circle is 0).
     """
     if has_trig(v):

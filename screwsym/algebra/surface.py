@@ -20,6 +20,11 @@ Where h is neither and f, h are curves of a plane (two symbols or angles between
 basis of f, h (and the circles) is in one symbol, and is imposed first.  In three or
 more symbols the intersection is listed with rank None: a Groebner basis of two such
 surfaces (a curve in common) did not finish in 90 s on the 3-RPS.
+
+Where it does not simply call SymPy: the Groebner bases and the factorisations mod p
+are SymPy's (``groebner``, ``gf_factor_sqf``); SymPy has no point on a hypersurface
+over a finite field, and a rank over the function field of ``f = 0`` cannot be asked
+of it, hence :func:`point_on` and :func:`rank_on`.
 """
 
 from __future__ import annotations
@@ -73,7 +78,7 @@ def meeting(f, h_expr: Any, R) -> Any:
     ``h`` there, decides them.  Returns that polynomial (an element of ``R``),
     ``R.zero`` where the two have no common point even over the complex numbers
     (the basis is 1), or None: more than two symbols (a curve or more in common,
-    whose basis may take minutes: see the section on surfaces), a Bezout bound
+    whose basis may take minutes: see this module's docstring), a Bezout bound
     over ``MEETING``, or no such polynomial.
     """
     try:

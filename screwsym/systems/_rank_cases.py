@@ -334,7 +334,7 @@ def proved_on(M: ImmutableMatrix, fe: Any, swap: bool = True) -> tuple[PolyColum
 
 
 def _on_surface(M, conds, subs, nonzero, fe, out: list) -> bool:
-    """The cases of ``fe = 0`` proved modulo ``fe`` (see the section's comment); False: not done."""
+    """The cases of ``fe = 0`` proved modulo ``fe`` (:mod:`screwsym.algebra.surface` says how); False: not done."""
     rg, found = proved_on(M, fe)
     RM = rg.ring
     if found is None:
