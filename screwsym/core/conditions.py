@@ -1,8 +1,5 @@
 r"""The conditions of a result on request: the machinery of ``conds="piecewise"``.
 
-Explanation
-===========
-
 A core operation on symbols returns its *generic* result by default
 (``conds="none"``): the pitch ``S . S0 / S . S`` holds where ``S != 0``, the
 common normal of two lines where they are skew.  With ``conds="piecewise"``
