@@ -607,7 +607,7 @@ class Mechanism(ScrewsymBasic):
 
 
 
-def _put(M: Matrix, subs: dict) -> Matrix:
+def _put(M: Matrix, subs: dict | None) -> Matrix:
     """``M`` with a case's substitution made (``sin(q)``, ``cos(q)`` reach ``sin(2 q)``)."""
     return Matrix(apply_subs(M, subs)) if subs else M
 
