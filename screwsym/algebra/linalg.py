@@ -33,7 +33,6 @@ from sympy import (
     ImmutableMatrix,
     Matrix,
     cancel,
-    fraction,
     igcd,
     ilcm,
     sin,
@@ -410,9 +409,12 @@ def primitive_entries(entries: list[Any]) -> list[Any]:
     >>> x, y = symbols("x y")
     >>> primitive_entries([x / 2, x * y / 3, 0])
     [3, 2*y, 0]
+    >>> primitive_entries([x / 2 - 1, -x**2 / 3])   # rational coefficients too
+    [3*x - 6, -2*x**2]
     """
     entries = [cancel(e) for e in entries]
-    dens = [fraction(e)[1] for e in entries if e != 0]
+    # as_numer_denom, not fraction: x/2 - 1 is an Add whose denominator fraction() misses
+    dens = [e.as_numer_denom()[1] for e in entries if e != 0]
     if not dens:
         return entries
     m = reduce(expr_lcm, dens)

@@ -157,6 +157,18 @@ def irreducible_over_field(g, R, seed: int = 0, tries: int = 4) -> bool:
     x = max(involved, key=lambda i: g.degree(i))
     others = [i for i in involved if i != x]
     lead = g.coeff_wrt(L.gens[x], g.degree(x))
+    if others:
+        # the proof needs g primitive in x (true for g irreducible over Q, the callers'
+        # case): a factor free of x would vanish from every specialisation unseen
+        content = lead
+        for k in range(g.degree(x)):
+            if content.is_ground:
+                break
+            c = g.coeff_wrt(L.gens[x], k)
+            if c:
+                content = content.gcd(c)
+        if not content.is_ground:
+            return False
     rnd = random.Random(seed)
     K = R.domain
     for _ in range(tries):

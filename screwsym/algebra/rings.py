@@ -136,7 +136,15 @@ def circle_normal(e: Any) -> Any:
     if not e.has(sin, cos):
         return e
     rg = to_ring(ImmutableMatrix([e]))
-    return to_expr(rg.cols[0][0], rg.ring) / to_expr(rg.scales[0], rg.ring)
+    num, den = rg.cols[0][0], rg.scales[0]
+    # the denominator made monic *after* its reduction, so that the form is idempotent (a
+    # reduction may leave it a negative leading coefficient, which the next call's monic
+    # lcm would flip: 1/(sin**2 cos**2 + 1) -> 1/(-sin**4 + sin**2 + 1) -> -1/(sin**4 - ...))
+    K = rg.ring.domain
+    if den and den.LC != K.one:
+        inv = K.quo(K.one, den.LC)
+        num, den = num * inv, den * inv
+    return to_expr(num, rg.ring) / to_expr(den, rg.ring)
 
 
 def rational_parts(entries: list, what: str) -> tuple[list, list, list]:
