@@ -151,7 +151,7 @@ def rank_cases(M: ImmutableMatrix, limit: int = MAX_CASES) -> tuple[Node, ...]:
 @lru_cache(maxsize=256)
 def top_case(M: ImmutableMatrix) -> Node:
     """The generic case alone (what ``reciprocal`` needs), without the case split."""
-    return _here(trig_normal_matrix(M), (), (), (), split=False)[0]
+    return case_here(trig_normal_matrix(M), (), (), (), split=False)[0]
 
 
 def trig_normal_matrix(M: ImmutableMatrix) -> ImmutableMatrix:
@@ -197,7 +197,7 @@ def substitute_nonzero(nonzero: tuple, pairs: tuple) -> tuple | None:
     return tuple(out)
 
 
-def _here(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, split: bool = True):
+def case_here(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, split: bool = True):
     """The case of ``M`` (the substitution made) where its chosen minor is non-zero.
 
     Returns the node and the factors (as expressions) of the minor that
@@ -223,7 +223,7 @@ def _node(M: ImmutableMatrix, conds: tuple, subs: tuple, nonzero: tuple, out: li
     The special cases are those of the factors of the minor, one after the
     other, each with the earlier ones non-zero: the cases do not overlap.
     """
-    node, factors = _here(M, conds, subs, nonzero)
+    node, factors = case_here(M, conds, subs, nonzero)
     out.append(node)
     for k, f in enumerate(factors):
         earlier = tuple(factors[:k])

@@ -160,13 +160,13 @@ def test_ur5_singularities_are_the_textbook_ones():
     # elbow singularity sin(theta3) = 0, the wrist singularity sin(theta5) = 0 (axes 4 and 6
     # parallel), and the shoulder singularity where the wrist centre meets the axis of
     # joint 1.  theta1 and theta6 do not enter (the space Jacobian turns rigidly with q1).
-    from screwsym.systems._rank_cases import _here, trig_normal_matrix
+    from screwsym.systems._rank_cases import case_here, trig_normal_matrix
 
     q = symbols("q1:7", real=True)
     J = ur5().jacobian([0, *q[1:5], 0])
     T = ScrewSystem(*(Twist.from_matrix(J[:, i]) for i in range(6)))
     assert T.rank == 6
-    node, factors = _here(trig_normal_matrix(T.matrix), (), (), ())  # the generic case, without the split
+    node, factors = case_here(trig_normal_matrix(T.matrix), (), (), ())  # the generic case, without the split
     assert sin(q[2]) in factors and sin(q[4]) in factors and len(factors) == 3
     (shoulder,) = [f for f in factors if f not in (sin(q[2]), sin(q[4]))]
     assert node.condition == Ne(sin(q[2]), 0) & Ne(sin(q[4]), 0) & Ne(shoulder, 0)
