@@ -499,14 +499,12 @@ class Mechanism(ScrewsymBasic):
         >>> pa.twists                                              # the compound pair: the same
         ScrewSystem(Twist([0, 0, 0], [-4, 0, 0]))
         """
-        g = spanning_tree(self)
         target = self._link_number(link, "link")
         ref = 0 if relative_to is None else self._link_number(relative_to, "relative_to")
         net = network(self)
         J = (path_matrix(net, target) - path_matrix(net, ref)) * net.null
         cols = [clean_vector(list(J.col(k))) for k in range(J.cols)]
         members = [Twist(c[:3], c[3:]) for c in cols if any(e != 0 for e in c)]
-        del g
         if not members:
             return ScrewSystem(kind=Twist)
         return ScrewSystem(*members).basis()
