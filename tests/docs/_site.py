@@ -99,6 +99,17 @@ def raw_markdown(html: str) -> list[str]:
     return found
 
 
+def empty_headers(html: str) -> list[str]:
+    """Table headers with an empty cell: a reader sees a column, or a whole row, with no name."""
+    found = []
+    for head in re.findall(r"<thead>(.*?)</thead>", html, re.S):
+        cells = [re.sub(r"<[^>]+>", "", c).strip()
+                 for c in re.findall(r"<th\b[^>]*>(.*?)</th>", head, re.S)]
+        if any(not c for c in cells):
+            found.append(f"a table header with an empty cell: {cells}")
+    return found
+
+
 def network_resources(html: str) -> list[str]:
     """Scripts, stylesheets and images a page would load from the network."""
     return [f"loads {src!r} from the network" for src in read_page(html).resources

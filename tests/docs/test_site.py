@@ -41,6 +41,13 @@ def test_raw_markdown_is_found_outside_code():
     assert not _site.raw_markdown('<span class="math">\\(h = 1\\)</span>')
 
 
+def test_empty_table_headers_are_found():
+    assert _site.empty_headers("<table><thead><tr><th><p></p></th><th>b</th></tr></thead></table>")
+    assert _site.empty_headers("<thead><tr><th class='head'> </th><th></th></tr></thead>")
+    assert not _site.empty_headers("<table><thead><tr><th><p>a</p></th><th>b</th></tr></thead>"
+                                   "<tbody><tr><td></td></tr></tbody></table>")
+
+
 def test_network_resources_are_found():
     bad = ('<script src="https://cdn.jsdelivr.net/npm/mathjax@3/es5/tex-chtml.js"></script>'
            '<link rel="stylesheet" href="//fonts.example.org/a.css"><img src="http://x/y.png">')
@@ -158,6 +165,12 @@ def test_every_notebook_is_a_page_with_every_figure_it_drew(site, pages):
 @pytest.mark.slow
 def test_no_page_leaves_markdown_raw(pages):
     found = {name: f for name, html in pages.items() if (f := _site.raw_markdown(html))}
+    assert found == {}
+
+
+@pytest.mark.slow
+def test_no_table_has_an_empty_header(pages):
+    found = {name: f for name, html in pages.items() if (f := _site.empty_headers(html))}
     assert found == {}
 
 
