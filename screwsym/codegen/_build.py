@@ -369,7 +369,7 @@ def save_index(tag: str, fn: Callable) -> None:
 
 
 def load_index(tag: str, doc: str, backend: str = "numba") -> Callable | None:
-    """The function (``backend`` numba or numpy) saved under ``tag``, or None (never saved, or unreadable).
+    """The function (``backend`` numba, numpy or c) saved under ``tag``, or None (never saved, or unreadable).
 
     A NumPy function is its generated source, read back (checked against the
     digest in its file name) and executed: no SymPy work, no numba import, so
@@ -392,6 +392,9 @@ def load_index(tag: str, doc: str, backend: str = "numba") -> Callable | None:
             tuple(Out(tuple(int(d) for d in t)) for t in meta["outs"]),
             bool(meta["is_tuple"]), (), (), (), str(meta["name"]), key,
         )  # fmt: skip
+        if backend == "c":
+            found_c = _load_c(path.parent, f"screwsym_k{key}")
+            return None if found_c is None else _c_function(plan, *found_c, doc)
         found = find_artifact(path.parent, f"screwsym_generated_{key}", ".py")
         if found is None:
             return None
@@ -441,24 +444,9 @@ def _compile_c(source: str) -> bytes:
         return Path(tmp_so).read_bytes()
 
 
-def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    plan = prepared(plan, use_cse)
+def _c_function(plan: Plan, lib: Any, text: str, doc: str) -> Any:
+    """The generated wrapper ``text`` around the loop of the loaded library ``lib``."""
     cname = f"screwsym_k{plan.key}"
-    source = _emit.c_source(plan, cname)
-    sub = _subdir("c")
-    found = None if sub is None else find_artifact(sub, cname, ".so")
-    if found is not None:
-        lib = ctypes.CDLL(str(found[0]))
-    else:
-        data = _compile_c(source)
-        so_path = None if sub is None else _store(sub, cname, ".so", data)
-        if so_path is not None:
-            lib = ctypes.CDLL(str(so_path))
-        else:
-            with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
-                tmp_path = Path(tmp) / f"{cname}.so"
-                tmp_path.write_bytes(data)
-                lib = ctypes.CDLL(str(tmp_path))  # stays mapped after the file is removed
     cfunc = getattr(lib, cname)
     ptr = ctypes.POINTER(ctypes.c_double)
     argtypes: list = [ctypes.c_size_t]
@@ -479,12 +467,46 @@ def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
 
     ns = _namespace(plan)
     ns["_kernel"] = kernel
-    text = _emit.c_wrapper_source(plan) + "\n# C source compiled for this function:\n" + "".join(
-        "# " + line + "\n" for line in source.splitlines()
-    )
     fn = _finish(_exec(text, plan, "c", ns), plan, doc)
     fn.kernel = kernel
     fn.c_library = lib
+    fn._screwsym_meta = _meta(plan, "c")
+    return fn
+
+
+def _load_c(sub: Path | None, cname: str) -> tuple[Any, str] | None:
+    """The cached library ``cname`` and its wrapper source, or None."""
+    if sub is None:
+        return None
+    so = find_artifact(sub, cname, ".so")
+    py = find_artifact(sub, cname, ".py")
+    if so is None or py is None:
+        return None
+    return ctypes.CDLL(str(so[0])), py[1].decode()
+
+
+def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
+    cname = f"screwsym_k{plan.key}"
+    sub = _subdir("c")
+    found = _load_c(sub, cname)  # no CSE nor printing where the library is on disk
+    if found is not None:
+        return _c_function(plan, *found, doc)
+    plan = prepared(plan, use_cse)
+    source = _emit.c_source(plan, cname)
+    data = _compile_c(source)
+    text = _emit.c_wrapper_source(plan) + "\n# C source compiled for this function:\n" + "".join(
+        "# " + line + "\n" for line in source.splitlines()
+    )
+    so_path = None if sub is None else _store(sub, cname, ".so", data)
+    if so_path is not None:
+        _store(so_path.parent, cname, ".py", text.encode())
+        lib = ctypes.CDLL(str(so_path))
+    else:
+        with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
+            tmp_path = Path(tmp) / f"{cname}.so"
+            tmp_path.write_bytes(data)
+            lib = ctypes.CDLL(str(tmp_path))  # stays mapped after the file is removed
+    fn = _c_function(plan, lib, text, doc)
     fn.c_source = source
     return fn
 
