@@ -393,8 +393,7 @@ def load_index(tag: str, doc: str, backend: str = "numba") -> Callable | None:
             bool(meta["is_tuple"]), (), (), (), str(meta["name"]), key,
         )  # fmt: skip
         if backend == "c":
-            found_c = _load_c(path.parent, f"screwsym_k{key}")
-            return None if found_c is None else _c_function(plan, *found_c, doc)
+            return _load_c(path.parent, f"screwsym_k{key}", doc, plan)
         found = find_artifact(path.parent, f"screwsym_generated_{key}", ".py")
         if found is None:
             return None
@@ -427,8 +426,32 @@ def compiler() -> str | None:
     return None
 
 
-def _compile_c(source: str) -> bytes:
-    """The shared library compiled from ``source``."""
+def python_headers() -> list[str] | None:
+    """The include folders of Python's and NumPy's C headers, or None where either is missing.
+
+    With them the C back end builds each function as a CPython extension
+    module (see :func:`screwsym.codegen._emit.c_extension_source`): one point
+    per call at the cost of a C call.  Without them, a plain library.
+    """
+    import sysconfig
+
+    py = sysconfig.get_paths().get("include") or ""
+    inc = np.get_include()
+    ok = (os.path.isfile(os.path.join(py, "Python.h"))
+          and os.path.isfile(os.path.join(inc, "numpy", "arrayobject.h")))
+    return [py, inc] if ok else None
+
+
+def _abi() -> str:
+    """A tag of the Python and NumPy an extension module was built for (in its file name)."""
+    import sysconfig
+
+    text = f"{sys.version}|{np.__version__}|{sysconfig.get_config_var('EXT_SUFFIX')}"
+    return hashlib.sha256(text.encode()).hexdigest()[:12]
+
+
+def _compile_c(source: str, include: list[str] | None = None) -> bytes:
+    """The shared library compiled from ``source`` (an extension module with ``include``)."""
     cc = compiler()
     if cc is None:
         raise RuntimeError("backend 'c' needs a C compiler: none of $CC, cc, gcc, clang found")
@@ -437,15 +460,36 @@ def _compile_c(source: str) -> bytes:
         tmp_so = os.path.join(tmp, "generated.so")
         with open(c_path, "w") as fh:
             fh.write(source)
-        cmd = [cc, "-O3", "-std=c99", "-shared", "-fPIC", c_path, "-o", tmp_so, "-lm"]
+        flags = ["-std=c99"] if include is None else ["-std=c11", *(f"-I{d}" for d in include)]
+        cmd = [cc, "-O3", *flags, "-shared", "-fPIC", c_path, "-o", tmp_so, "-lm"]
         done = subprocess.run(cmd, capture_output=True, text=True)
         if done.returncode != 0:
             raise RuntimeError(f"backend 'c': {' '.join(cmd)} failed:\n{done.stderr}")
         return Path(tmp_so).read_bytes()
 
 
-def _c_function(plan: Plan, lib: Any, text: str, doc: str) -> Any:
-    """The generated wrapper ``text`` around the loop of the loaded library ``lib``."""
+_EXTENSIONS: dict[str, Any] = {}
+
+
+def _extension(path: Path, cname: str) -> Any:
+    """The extension module ``cname`` at ``path`` (a checked artefact), loaded once."""
+    import importlib.machinery
+
+    mod = _EXTENSIONS.get(cname)
+    if mod is None:
+        loader = importlib.machinery.ExtensionFileLoader(cname, str(path))
+        spec = importlib.util.spec_from_file_location(cname, str(path), loader=loader)
+        assert spec is not None
+        mod = importlib.util.module_from_spec(spec)
+        loader.exec_module(mod)
+        _EXTENSIONS[cname] = mod
+    return mod
+
+
+def _c_function(plan: Plan, lib: Any, text: str, doc: str, point: Any = None) -> Any:
+    """The generated wrapper ``text`` around the loop of the loaded library ``lib``.
+
+    ``point`` is the extension module's one-point function, where there is one."""
     cname = f"screwsym_k{plan.key}"
     cfunc = getattr(lib, cname)
     ptr = ctypes.POINTER(ctypes.c_double)
@@ -467,48 +511,61 @@ def _c_function(plan: Plan, lib: Any, text: str, doc: str) -> Any:
 
     ns = _namespace(plan)
     ns["_kernel"] = kernel
+    ns["_point"] = point
     fn = _finish(_exec(text, plan, "c", ns), plan, doc)
     fn.kernel = kernel
     fn.c_library = lib
     fn._screwsym_meta = _meta(plan, "c")
+    marker = "# C source compiled for this function:\n"
+    fn.c_source = "".join(line[2:] + "\n" for line in
+                          text[text.index(marker) + len(marker):].splitlines())
     return fn
 
 
-def _load_c(sub: Path | None, cname: str) -> tuple[Any, str] | None:
-    """The cached library ``cname`` and its wrapper source, or None."""
+def _load_c(sub: Path | None, cname: str, doc: str, plan: Plan) -> Any:
+    """The cached function ``cname`` (extension module first, else plain library), or None."""
     if sub is None:
         return None
-    so = find_artifact(sub, cname, ".so")
-    py = find_artifact(sub, cname, ".py")
-    if so is None or py is None:
-        return None
-    return ctypes.CDLL(str(so[0])), py[1].decode()
+    for stem, ext in ((f"{cname}_py{_abi()}", True), (cname, False)):
+        so = find_artifact(sub, stem, ".so")
+        py = find_artifact(sub, stem, ".py")
+        if so is not None and py is not None:
+            point = _extension(so[0], cname).point if ext else None
+            return _c_function(plan, ctypes.CDLL(str(so[0])), py[1].decode(), doc, point)
+    return None
 
 
 def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
     cname = f"screwsym_k{plan.key}"
     sub = _subdir("c")
-    found = _load_c(sub, cname)  # no CSE nor printing where the library is on disk
+    found = _load_c(sub, cname, doc, plan)  # no CSE nor printing where it is on disk
     if found is not None:
-        return _c_function(plan, *found, doc)
+        return found
     plan = prepared(plan, use_cse)
     source = _emit.c_source(plan, cname)
-    data = _compile_c(source)
-    text = _emit.c_wrapper_source(plan) + "\n# C source compiled for this function:\n" + "".join(
-        "# " + line + "\n" for line in source.splitlines()
-    )
-    so_path = None if sub is None else _store(sub, cname, ".so", data)
+    include = python_headers()
+    stem = cname
+    if include is not None:
+        source += _emit.c_extension_source(plan, cname)
+        stem = f"{cname}_py{_abi()}"
+    data = _compile_c(source, include)
+    text = _emit.c_wrapper_source(plan, include is not None) + (
+        "\n# C source compiled for this function:\n"
+        + "".join("# " + line + "\n" for line in source.splitlines()))
+    so_path = None if sub is None else _store(sub, stem, ".so", data)
+    tmp = None
     if so_path is not None:
-        _store(so_path.parent, cname, ".py", text.encode())
-        lib = ctypes.CDLL(str(so_path))
+        _store(so_path.parent, stem, ".py", text.encode())
     else:
-        with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
-            tmp_path = Path(tmp) / f"{cname}.so"
-            tmp_path.write_bytes(data)
-            lib = ctypes.CDLL(str(tmp_path))  # stays mapped after the file is removed
-    fn = _c_function(plan, lib, text, doc)
-    fn.c_source = source
-    return fn
+        tmp = tempfile.TemporaryDirectory(prefix="screwsym-c-")
+        so_path = Path(tmp.name) / f"{stem}.so"
+        so_path.write_bytes(data)
+    try:  # a library stays mapped after its file is removed
+        point = _extension(so_path, cname).point if include is not None else None
+        return _c_function(plan, ctypes.CDLL(str(so_path)), text, doc, point)
+    finally:
+        if tmp is not None:
+            tmp.cleanup()
 
 
 BUILDERS = {"numpy": build_numpy, "numba": build_numba, "c": build_c}
