@@ -134,5 +134,5 @@ def test_a_new_process_loads_the_extension_without_compiling(tmp_path):
     assert [r.returncode for r in runs] == [0, 0], runs[1].stderr
     assert runs[0].stdout == runs[1].stdout == "1.5 True\n"
     # the extension module is named for the Python and NumPy it was built for
-    assert [p.suffix for p in sorted((tmp_path / "c").glob(f"*_py{_build._abi()}-*"))] == [
+    assert sorted(p.suffix for p in (tmp_path / "c").glob(f"*_py{_build._abi()}-*")) == [
         ".py", ".so"]
