@@ -123,7 +123,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from . import _build
-from ._build import BLOCK, cache_dir, clear_cache, load_index, save_index
+from ._build import BLOCK, cache_dir, clear_cache, compiler, load_index, save_index
 from ._emit import c_source as _c_source_from_plan
 from ._plan import build_plan, code_digest
 from ._runtime import describe_trailing
@@ -140,6 +140,7 @@ __all__ = [
     "load_index",
     "save_index",
     "code_digest",
+    "compiler",
 ]
 
 #: the back ends :func:`lambdify` knows

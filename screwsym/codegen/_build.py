@@ -29,7 +29,7 @@ from typing import Any
 
 import numpy as np
 
-from . import _emit
+from . import _emit, generated
 from ._plan import Out, Plan, prepared
 from ._printers import PY_HELPERS
 from ._runtime import Arg, Trailings, prepare
@@ -227,10 +227,13 @@ def _write_atomic(path: Path, data: bytes) -> None:
 # ------------------------------------------------------------------ finishing
 
 
-def _finish(fn: Callable[..., Any], plan: Plan, doc: str) -> Any:
+def _finish(fn: Any, plan: Plan, doc: str, backend: str) -> Any:
     """Give the generated ``_fn`` the user's names, as data on its code object.
 
-    Returns the function (typed Any: the backends attach their own attributes to it)."""
+    The function is registered in :mod:`screwsym.codegen.generated` (so that it
+    pickles by reference), and what a new process needs to load it again is
+    saved beside its module or library.  Returns the function (typed Any: the
+    backends attach their own attributes to it)."""
     code = fn.__code__
     n = len(plan.specs)
     varnames = tuple(spec.name for spec in plan.specs) + code.co_varnames[n:]
@@ -240,8 +243,34 @@ def _finish(fn: Callable[..., Any], plan: Plan, doc: str) -> Any:
     fn.__code__ = code.replace(**changes)
     fn.__name__ = fn.__qualname__ = plan.name
     fn.__doc__ = doc
-    fn.__module__ = "screwsym.generated"
+    fn._screwsym_meta = meta = _meta(plan, backend)
+    reference = f"k{plan.key}_{backend}_{_digest(doc.encode())[:12]}"
+    generated.register(fn, reference)
+    path = _index_path(reference, backend)
+    if path is not None and not path.exists():
+        try:
+            _write_atomic(path, json.dumps({**meta, "doc": doc}).encode())
+        except OSError:  # pragma: no cover - a full disk: unpickling elsewhere says so
+            pass
     return fn
+
+
+def load_reference(reference: str, backend: str) -> Callable | None:
+    """The function ``reference`` of :mod:`screwsym.codegen.generated`, from the disk cache."""
+    path = _index_path(reference, backend)
+    text = None if path is None else _read_private(path)
+    if text is None:
+        return None
+    try:
+        doc = json.loads(text)["doc"]
+    except (ValueError, KeyError, TypeError):
+        return None
+    if not isinstance(doc, str) or not reference.endswith(_digest(doc.encode())[:12]):
+        return None
+    return load_index(reference, doc, backend)
+
+
+generated.LOADER = load_reference
 
 
 def _namespace(plan: Plan) -> dict:
@@ -293,9 +322,7 @@ def build_numpy(plan: Plan, use_cse: bool, doc: str) -> Callable:
     sub = _subdir("numpy")
     if sub is not None:  # kept, content-addressed, for load_index in a new process
         _store(sub, f"screwsym_generated_{plan.key}", ".py", source.encode())
-    fn = _finish(fn, plan, doc)
-    fn._screwsym_meta = _meta(plan, "numpy")
-    return fn
+    return _finish(fn, plan, doc, "numpy")
 
 
 def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
@@ -342,9 +369,8 @@ def _numba_function(mod, plan: Plan, doc: str) -> Callable:
     base = mod._fn
     fn = type(base)(base.__code__, mod.__dict__, "_fn", None, base.__closure__)
     fn.__kwdefaults__ = dict(base.__kwdefaults__ or {})
-    fn = _finish(fn, plan, doc)
+    fn = _finish(fn, plan, doc, "numba")
     fn.load_kernel = mod._load  # the numba dispatcher (imports numba, compiles or loads)
-    fn._screwsym_meta = _meta(plan, "numba")
     return fn
 
 
@@ -399,9 +425,7 @@ def load_index(tag: str, doc: str, backend: str = "numba") -> Callable | None:
             return None
         if backend == "numpy":
             fn = _exec(found[1].decode(), plan, "numpy", _namespace(plan))
-            fn = _finish(fn, plan, doc)
-            fn._screwsym_meta = _meta(plan, "numpy")
-            return fn
+            return _finish(fn, plan, doc, "numpy")
         return _numba_function(_numba_module(plan, False, from_index=True), plan, doc)
     except (OSError, ValueError, KeyError, TypeError):
         return None
@@ -420,6 +444,11 @@ def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
 
 
 def compiler() -> str | None:
+    """The C compiler of the C back end: ``$CC``, ``cc``, ``gcc`` or ``clang``, or None.
+
+    >>> compiler() is None or isinstance(compiler(), str)
+    True
+    """
     for cc in (os.environ.get("CC"), "cc", "gcc", "clang"):
         if cc and shutil.which(cc):
             return cc
@@ -512,10 +541,9 @@ def _c_function(plan: Plan, lib: Any, text: str, doc: str, point: Any = None) ->
     ns = _namespace(plan)
     ns["_kernel"] = kernel
     ns["_point"] = point
-    fn = _finish(_exec(text, plan, "c", ns), plan, doc)
+    fn = _finish(_exec(text, plan, "c", ns), plan, doc, "c")
     fn.kernel = kernel
     fn.c_library = lib
-    fn._screwsym_meta = _meta(plan, "c")
     marker = "# C source compiled for this function:\n"
     fn.c_source = "".join(line[2:] + "\n" for line in
                           text[text.index(marker) + len(marker):].splitlines())

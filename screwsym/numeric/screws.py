@@ -70,8 +70,7 @@ from typing import Any
 import numpy as np
 from sympy import And, Eq, Integer, Piecewise, Rational, nan
 
-from ..codegen import code_digest, lambdify, load_index, resolve_backend, save_index
-from ..codegen._build import compiler
+from ..codegen import code_digest, compiler, lambdify, load_index, resolve_backend, save_index
 from ..core import screw as _core
 from ..core.line import LineVector
 from ..core.screw import Screw

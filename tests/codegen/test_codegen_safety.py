@@ -322,7 +322,8 @@ def test_c_build_leaves_no_temporary_directory(tmp_path, monkeypatch):
     f = lambdify([x], x**3 + 17.5, "c")
     assert f(2.0) == 25.5 and np.array_equal(f(np.array([1.0, 2.0])), [18.5, 25.5])
     # the library and its Python wrapper (read back without CSE nor printing in a new process)
-    assert sorted(p.suffix for p in (tmp_path / "cache" / "c").iterdir()) == [".py", ".so"]
+    # and its description for a new process (unpickling, codegen.generated)
+    assert sorted(p.suffix for p in (tmp_path / "cache" / "c").iterdir()) == [".json", ".py", ".so"]
     # without a usable one: a temporary directory, removed after loading
     (tmp_path / "file").write_text("")
     monkeypatch.setenv("SCREWSYM_CACHE_DIR", str(tmp_path / "file"))

@@ -24,7 +24,7 @@ from sympy import Rational, sqrt, symbols
 
 import screwsym
 from screwsym import LineVector, Screw, Twist, Wrench, codegen, numeric
-from screwsym.codegen._build import compiler
+from screwsym.codegen import compiler
 from screwsym.numeric.screws import DEFINITIONS, Definitions, numeric_definition
 
 
