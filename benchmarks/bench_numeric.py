@@ -12,7 +12,7 @@ and TREE's (e.g. a worktree of main) in alternate rounds, side by side with
 hand-written NumPy (einsum) and the memory floor; ``--default-only`` stops there.
 
 Prints, per operation, nanoseconds per screw for the default
-``screwsym.numeric`` (numba when installed), each back end (numpy, numba,
+``screwsym.numeric`` (numba once imported, else C), each back end (numpy, numba,
 c), hand-written NumPy, SymEngine's LLVM ``Lambdify`` (if installed), the
 memory-bound floor and the peers' per-screw functions (pytransform3d,
 modern_robotics, if installed, called one screw at a time as their users
@@ -260,7 +260,7 @@ def main() -> None:
         print(f"  numba: generate {t_gen:.3f}, first-call JIT compile {t_jit:.3f} "
               f"({t_jit / len(numeric.NAMES):.3f} per function)")
         backends["numba"] = nb
-    default = numeric.screws.default_backend()  # numba once imported (above), else numpy
+    default = numeric.screws.default_backend()  # numba once imported (above), else C or NumPy
     same = all(getattr(numeric, k) is getattr(backends[default], k) for k in numeric.NAMES)
     print(f"  default of screwsym.numeric: {default!r} (the same function objects: {same})")
     if shutil.which("cc"):
@@ -330,7 +330,7 @@ SECOND = textwrap.dedent("""
     t1 = time.perf_counter()
     numeric.pitch(np.array([1.0, 1.0, 0.0, 1.0, 0.0, 0.0]))  # a point: numba not needed
     t2 = time.perf_counter()
-    numeric.foot(np.ones((10, 6)))  # imports numba, loads the loop from its disk cache
+    numeric.foot(np.ones((10, 6)))  # the default back end's loop (C: the library is loaded)
     t3 = time.perf_counter()
     numeric.foot(np.ones((10, 6)))
     t4 = time.perf_counter()
@@ -351,7 +351,7 @@ def second_process() -> None:
     imp, point, batch, again = min(runs[1:], key=lambda r: r[1] + r[2])
     print(f"\nNew process (disk cache warm), ms: import screwsym.numeric {imp:.0f}; "
           f"first call numeric.pitch(one screw) {point:.1f}; first batch call "
-          f"numeric.foot((10, 6)) {batch:.0f} (numba import and cache load), next {again:.2f}")
+          f"numeric.foot((10, 6)) {batch:.0f}, next {again:.2f}")
 
 
 if __name__ == "__main__":

@@ -399,7 +399,7 @@ def _scale_free(fn: Callable, name: str) -> Callable:
         result = fn(s, out=out)
         r = result if out is None else out
         first = r if name == "pitch" else r[..., 0]
-        if np.ndim(first) == 0:
+        if not isinstance(first, np.ndarray) or first.ndim == 0:  # (np.ndim: 2 us a call)
             if first == first:  # not nan: the common case of one screw
                 return result
             a = np.asarray(s, dtype=np.float64)
@@ -407,7 +407,7 @@ def _scale_free(fn: Callable, name: str) -> Callable:
             if out is None:
                 return again
             out[...] = again
-            return result
+            return result if isinstance(result, np.ndarray) else out[()]  # a 0-d out
         bad = np.isnan(first)
         if not bad.any():
             return result

@@ -487,3 +487,21 @@ def test_only_the_out_of_range_elements_are_recomputed(backend, monkeypatch):
     out = np.empty(1000)
     assert f.pitch(batch, out=out) is not None and seen == [(3, 6)]
     np.testing.assert_array_equal(out, got)
+    # one screw, rescaled, into a 0-d out= (its result is a copy of out: the new value)
+    one, foot3 = np.empty(()), np.empty(3)
+    assert f.pitch(np.array([1.0, 1, 0, 1, 0, 0]) * 1e-200, out=one) == 0.5 and one == 0.5
+    f.foot(np.array([1.0, 1, 0, 1, 0, 0]) * 1e200, out=foot3)
+    assert foot3.tolist() == [0.0, 0.0, -0.5]
+
+
+def test_the_default_back_end_without_numba_imported(monkeypatch):
+    # compiled loops at memory speed without a numba import (issue 34 item 4): C where a
+    # compiler is found, NumPy without one; numba once the user has imported it
+    monkeypatch.delitem(sys.modules, "numba", raising=False)
+    monkeypatch.setattr(numeric.screws, "compiler", lambda: "cc")
+    assert numeric.screws.default_backend() == "c"
+    monkeypatch.setattr(numeric.screws, "compiler", lambda: None)
+    assert numeric.screws.default_backend() == "numpy"
+    if HAS_NUMBA:
+        monkeypatch.setitem(sys.modules, "numba", __import__("numba"))
+        assert numeric.screws.default_backend() == "numba"
