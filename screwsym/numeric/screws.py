@@ -59,6 +59,7 @@ screwsym.codegen.lambdify
 
 from __future__ import annotations
 
+import math
 import re
 import sys
 import threading
@@ -395,12 +396,15 @@ def _scale_free(fn: Callable, name: str) -> Callable:
     integer array ending in 6 is answered by ``fn`` (its own checks).
     """
 
+    pitch, float64, isnan = name == "pitch", np.float64, math.isnan
+
     def scaled(s: Any, *, out: Any = None) -> Any:
         result = fn(s, out=out)
         r = result if out is None else out
-        first = r if name == "pitch" else r[..., 0]
-        if not isinstance(first, np.ndarray) or first.ndim == 0:  # (np.ndim: 2 us a call)
-            if first == first:  # not nan: the common case of one screw
+        # one number per screw (a float for one screw: r[..., 0] would be a 0-d array)
+        first = r if pitch else r[0] if r.ndim == 1 else r[..., 0]
+        if type(first) is float64 or first.ndim == 0:  # one screw (np.ndim: 2 us a call)
+            if not isnan(first):  # the common case (math.isnan: 40 ns; np.isnan 1 us)
                 return result
             a = np.asarray(s, dtype=np.float64)
             again = _rescaled(fn, a, name)
