@@ -218,15 +218,14 @@ def _pitch() -> _Made:
     array([ 1., inf, nan])
     """
     s = Screw(vector("S"), vector("S0"))
-    # Only the last branch is the book's formula; the first two say what the symbolic
-    # pitch gives for a couple (oo) and that the zero screw has none (nan here, an error
-    # there); the third is the numeric guard (nan where the parts are out of range, then
-    # recomputed scaled by the wrapper: see _in_range).
+    # The first branch is the book's formula where the parts are in range (the common case
+    # first: one test per screw); the second says what the symbolic pitch gives for a couple
+    # (oo); the zero screw has none (nan here, an error there), and out of range the nan is
+    # recomputed scaled by the wrapper (see _in_range, which implies S != 0).
     return {"s": s}, Piecewise(
+        (_core.pitch(s), _in_range(s)),
         (_core.pitch(Screw.couple(s.S0)), _is_zero(s.S) & ~_is_zero(s.S0)),
-        (nan, _is_zero(s.S)),
-        (nan, ~_in_range(s)),
-        (_core.pitch(s), True),
+        (nan, True),
     )
 
 
@@ -246,8 +245,8 @@ def _foot() -> _Made:
     array([ 0. ,  0. , -0.5])
     """
     s = Screw(vector("S"), vector("S0"))
-    bad = ~_in_range(s)  # nan, then recomputed scaled by the wrapper (see _in_range)
-    return {"s": s}, _core.foot(s).applyfunc(lambda e: Piecewise((nan, bad), (e, True)))
+    good = _in_range(s)  # else nan, then recomputed scaled by the wrapper (see _in_range)
+    return {"s": s}, _core.foot(s).applyfunc(lambda e: Piecewise((e, good), (nan, True)))
 
 
 @numeric_definition
