@@ -4,9 +4,15 @@ Run from the repository root::
 
     .venv/bin/python benchmarks/bench_numeric.py            # N = 1,000,000
     .venv/bin/python benchmarks/bench_numeric.py --n 100000 --repeat 3
+    .venv/bin/python benchmarks/bench_numeric.py --default-only --versus /path/to/other/tree
+
+``--versus TREE`` first times the *default* functions of ``screwsym.numeric`` in
+fresh processes that have not imported numba (as a user's process), this tree's
+and TREE's (e.g. a worktree of main) in alternate rounds, side by side with
+hand-written NumPy (einsum) and the memory floor; ``--default-only`` stops there.
 
 Prints, per operation, nanoseconds per screw for the default
-``screwsym.numeric`` (numba when installed), each back end (numpy, numba,
+``screwsym.numeric`` (numba once imported, else C), each back end (numpy, numba,
 c), hand-written NumPy, SymEngine's LLVM ``Lambdify`` (if installed), the
 memory-bound floor and the peers' per-screw functions (pytransform3d,
 modern_robotics, if installed, called one screw at a time as their users
@@ -52,15 +58,15 @@ TARGET_OPS = tuple(ISSUE_FLOOR)
 
 
 def round_robin(calls: dict, n: int, repeat: int) -> dict:
-    """Best ns per screw of each call, timed in turns so that all see the same load."""
+    """Best ns per screw of each call (CPU time), timed in turns so that all see the same load."""
     best = dict.fromkeys(calls, float("inf"))
     for fn, args in calls.values():
         fn(*args)
     for _ in range(repeat):
         for label, (fn, args) in calls.items():
-            t0 = time.perf_counter()
+            t0 = time.process_time()
             fn(*args)
-            best[label] = min(best[label], time.perf_counter() - t0)
+            best[label] = min(best[label], time.process_time() - t0)
     return {label: t / n * 1e9 for label, t in best.items()}
 
 
@@ -151,12 +157,83 @@ def peers():
     return found
 
 
+def worker(n: int, repeat: int) -> None:
+    """Time the default functions in this process (numba not imported); print JSON."""
+    import json
+
+    rng = np.random.default_rng(0)
+    assert "numba" not in sys.modules
+    bw = bandwidth(n, repeat)
+    rows = {"_backend": numeric.screws.default_backend()}
+    for name in numeric.NAMES:
+        args = inputs(name, n, rng)
+        fn = getattr(numeric, name)
+        copy_args = [a.copy() for a in args]
+
+        def copy_inputs(*a, dst=copy_args):  # a memory floor: one copy of the inputs
+            for src, d in zip(a, dst, strict=True):
+                np.copyto(d, src)
+
+        row = round_robin({"default": (fn, args), "hand NumPy": (HAND[name], args),
+                           "copy of inputs": (copy_inputs, args)}, n, repeat)
+        row["floor"] = BYTES[name] / bw
+        one = tuple(a[0].copy() for a in args)
+        row["one call us"] = min(timeit.repeat(lambda fn=fn, one=one: fn(*one), number=5000,
+                                               repeat=5)) / 5000 * 1e6
+        rows[name] = row
+    assert "numba" not in sys.modules
+    print(json.dumps(rows))
+
+
+def versus(trees: list[str], n: int, repeat: int, rounds: int = 3) -> None:
+    """The default functions of each tree, in fresh processes, rounds alternating."""
+    import json
+
+    best: dict[str, dict] = {}
+    for _ in range(rounds):
+        for tree in trees:
+            env = dict(os.environ, PYTHONPATH=tree,
+                       SCREWSYM_CACHE_DIR=os.path.join(os.environ["SCREWSYM_CACHE_DIR"],
+                                                       str(abs(hash(tree)))))
+            done = subprocess.run([sys.executable, __file__, "--worker", "--n", str(n),
+                                   "--repeat", str(repeat)], env=env, capture_output=True,
+                                  text=True, check=True)
+            rows = json.loads(done.stdout.splitlines()[-1])
+            old = best.setdefault(tree, rows)
+            for name in numeric.NAMES:
+                for k, v in rows[name].items():
+                    old[name][k] = min(old[name][k], v)
+    print(f"Default back end of screwsym.numeric, numba not imported; N = {n:,}, ns per screw "
+          f"(best of {rounds} processes x {repeat})")
+    cols = ["default", "hand NumPy", "copy of inputs", "floor"]
+    for tree in trees:
+        print(f"  {tree}: default back end {best[tree]['_backend']!r}")
+        print(f"    {'operation':<20}" + "".join(f"{c:>15}" for c in cols)
+              + f"{'default/floor':>15}{'default/hand':>14}{'one call us':>13}")
+        for name in numeric.NAMES:
+            row = best[tree][name]
+            print(f"    {name:<20}" + "".join(f"{row[c]:>15.2f}" for c in cols)
+                  + f"{row['default'] / row['floor']:>15.2f}"
+                  + f"{row['default'] / row['hand NumPy']:>14.2f}{row['one call us']:>13.2f}")
+    print("  (floor: bytes read and written per screw at the streaming bandwidth of a copy)\n")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=1_000_000)
     parser.add_argument("--repeat", type=int, default=7)
+    parser.add_argument("--versus", metavar="TREE", help="another checkout to compare with")
+    parser.add_argument("--default-only", action="store_true")
+    parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
     opts = parser.parse_args()
     n, repeat = opts.n, opts.repeat
+    if opts.worker:
+        worker(n, repeat)
+        return
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    versus([here] + ([os.path.abspath(opts.versus)] if opts.versus else []), n, repeat)
+    if opts.default_only:
+        return
     rng = np.random.default_rng(0)
 
     # ---------------------------------------------------- generation time
@@ -183,7 +260,7 @@ def main() -> None:
         print(f"  numba: generate {t_gen:.3f}, first-call JIT compile {t_jit:.3f} "
               f"({t_jit / len(numeric.NAMES):.3f} per function)")
         backends["numba"] = nb
-    default = numeric.screws.default_backend()  # numba once imported (above), else numpy
+    default = numeric.screws.default_backend()  # numba once imported (above), else C or NumPy
     same = all(getattr(numeric, k) is getattr(backends[default], k) for k in numeric.NAMES)
     print(f"  default of screwsym.numeric: {default!r} (the same function objects: {same})")
     if shutil.which("cc"):
@@ -253,7 +330,7 @@ SECOND = textwrap.dedent("""
     t1 = time.perf_counter()
     numeric.pitch(np.array([1.0, 1.0, 0.0, 1.0, 0.0, 0.0]))  # a point: numba not needed
     t2 = time.perf_counter()
-    numeric.foot(np.ones((10, 6)))  # imports numba, loads the loop from its disk cache
+    numeric.foot(np.ones((10, 6)))  # the default back end's loop (C: the library is loaded)
     t3 = time.perf_counter()
     numeric.foot(np.ones((10, 6)))
     t4 = time.perf_counter()
@@ -274,7 +351,7 @@ def second_process() -> None:
     imp, point, batch, again = min(runs[1:], key=lambda r: r[1] + r[2])
     print(f"\nNew process (disk cache warm), ms: import screwsym.numeric {imp:.0f}; "
           f"first call numeric.pitch(one screw) {point:.1f}; first batch call "
-          f"numeric.foot((10, 6)) {batch:.0f} (numba import and cache load), next {again:.2f}")
+          f"numeric.foot((10, 6)) {batch:.0f}, next {again:.2f}")
 
 
 if __name__ == "__main__":

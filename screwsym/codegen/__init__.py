@@ -68,13 +68,20 @@ Back ends
     numba's on-disk cache serves the next process without compiling.
 ``"c"``
     The :func:`c_source` of the expression, compiled with the system C
-    compiler into a shared library in the cache directory (or a temporary
-    directory that is removed) and called through ``ctypes``.
+    compiler into a CPython extension module (where Python's and NumPy's C
+    headers are found; a plain shared library otherwise) in the cache
+    directory (or a temporary directory that is removed); its loop over
+    rows is called through ``ctypes``, one point through the module's
+    ``METH_FASTCALL`` function.  A new process loads the cached module and
+    its Python wrapper in milliseconds, without CSE or printing.
 
 A single point (every argument unbatched and ``float64``: a ``(6,)`` screw,
 a ``(3,)`` vector, a Python or NumPy float) takes a fast path in every back
-end: the same plan in plain Python floats.  Where that path would divide by
-zero or leave the reals, the array code gives the IEEE result instead.
+end: in C the compiled point function, called at the cost of one C call
+(about pinocchio's Python call for the UR5's kinematics and dynamics,
+``benchmarks/bench_one_pose.py``); elsewhere the same plan in plain Python
+floats, and where that path would divide by zero or leave the reals, the
+array code gives the IEEE result instead.
 
 Generated functions are cached in memory per signature (bounded, least
 recently used first; one build per signature when threads race), named
@@ -116,7 +123,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from . import _build
-from ._build import BLOCK, cache_dir, clear_cache, load_index, save_index
+from ._build import BLOCK, cache_dir, clear_cache, compiler, load_index, save_index
 from ._emit import c_source as _c_source_from_plan
 from ._plan import build_plan, code_digest
 from ._runtime import describe_trailing
@@ -133,6 +140,7 @@ __all__ = [
     "load_index",
     "save_index",
     "code_digest",
+    "compiler",
 ]
 
 #: the back ends :func:`lambdify` knows

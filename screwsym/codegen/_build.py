@@ -29,7 +29,7 @@ from typing import Any
 
 import numpy as np
 
-from . import _emit
+from . import _emit, generated
 from ._plan import Out, Plan, prepared
 from ._printers import PY_HELPERS
 from ._runtime import Arg, Trailings, prepare
@@ -227,10 +227,13 @@ def _write_atomic(path: Path, data: bytes) -> None:
 # ------------------------------------------------------------------ finishing
 
 
-def _finish(fn: Callable[..., Any], plan: Plan, doc: str) -> Any:
+def _finish(fn: Any, plan: Plan, doc: str, backend: str) -> Any:
     """Give the generated ``_fn`` the user's names, as data on its code object.
 
-    Returns the function (typed Any: the backends attach their own attributes to it)."""
+    The function is registered in :mod:`screwsym.codegen.generated` (so that it
+    pickles by reference), and what a new process needs to load it again is
+    saved beside its module or library.  Returns the function (typed Any: the
+    backends attach their own attributes to it)."""
     code = fn.__code__
     n = len(plan.specs)
     varnames = tuple(spec.name for spec in plan.specs) + code.co_varnames[n:]
@@ -240,8 +243,34 @@ def _finish(fn: Callable[..., Any], plan: Plan, doc: str) -> Any:
     fn.__code__ = code.replace(**changes)
     fn.__name__ = fn.__qualname__ = plan.name
     fn.__doc__ = doc
-    fn.__module__ = "screwsym.generated"
+    fn._screwsym_meta = meta = _meta(plan, backend)
+    reference = f"k{plan.key}_{backend}_{_digest(doc.encode())[:12]}"
+    generated.register(fn, reference)
+    path = _index_path(reference, backend)
+    if path is not None and not path.exists():
+        try:
+            _write_atomic(path, json.dumps({**meta, "doc": doc}).encode())
+        except OSError:  # pragma: no cover - a full disk: unpickling elsewhere says so
+            pass
     return fn
+
+
+def load_reference(reference: str, backend: str) -> Callable | None:
+    """The function ``reference`` of :mod:`screwsym.codegen.generated`, from the disk cache."""
+    path = _index_path(reference, backend)
+    text = None if path is None else _read_private(path)
+    if text is None:
+        return None
+    try:
+        doc = json.loads(text)["doc"]
+    except (ValueError, KeyError, TypeError):
+        return None
+    if not isinstance(doc, str) or not reference.endswith(_digest(doc.encode())[:12]):
+        return None
+    return load_index(reference, doc, backend)
+
+
+generated.LOADER = load_reference
 
 
 def _namespace(plan: Plan) -> dict:
@@ -293,9 +322,7 @@ def build_numpy(plan: Plan, use_cse: bool, doc: str) -> Callable:
     sub = _subdir("numpy")
     if sub is not None:  # kept, content-addressed, for load_index in a new process
         _store(sub, f"screwsym_generated_{plan.key}", ".py", source.encode())
-    fn = _finish(fn, plan, doc)
-    fn._screwsym_meta = _meta(plan, "numpy")
-    return fn
+    return _finish(fn, plan, doc, "numpy")
 
 
 def _numba_module(plan: Plan, use_cse: bool, from_index: bool = False):
@@ -342,9 +369,8 @@ def _numba_function(mod, plan: Plan, doc: str) -> Callable:
     base = mod._fn
     fn = type(base)(base.__code__, mod.__dict__, "_fn", None, base.__closure__)
     fn.__kwdefaults__ = dict(base.__kwdefaults__ or {})
-    fn = _finish(fn, plan, doc)
+    fn = _finish(fn, plan, doc, "numba")
     fn.load_kernel = mod._load  # the numba dispatcher (imports numba, compiles or loads)
-    fn._screwsym_meta = _meta(plan, "numba")
     return fn
 
 
@@ -369,7 +395,7 @@ def save_index(tag: str, fn: Callable) -> None:
 
 
 def load_index(tag: str, doc: str, backend: str = "numba") -> Callable | None:
-    """The function (``backend`` numba or numpy) saved under ``tag``, or None (never saved, or unreadable).
+    """The function (``backend`` numba, numpy or c) saved under ``tag``, or None (never saved, or unreadable).
 
     A NumPy function is its generated source, read back (checked against the
     digest in its file name) and executed: no SymPy work, no numba import, so
@@ -392,14 +418,14 @@ def load_index(tag: str, doc: str, backend: str = "numba") -> Callable | None:
             tuple(Out(tuple(int(d) for d in t)) for t in meta["outs"]),
             bool(meta["is_tuple"]), (), (), (), str(meta["name"]), key,
         )  # fmt: skip
+        if backend == "c":
+            return _load_c(path.parent, f"screwsym_k{key}", doc, plan)
         found = find_artifact(path.parent, f"screwsym_generated_{key}", ".py")
         if found is None:
             return None
         if backend == "numpy":
             fn = _exec(found[1].decode(), plan, "numpy", _namespace(plan))
-            fn = _finish(fn, plan, doc)
-            fn._screwsym_meta = _meta(plan, "numpy")
-            return fn
+            return _finish(fn, plan, doc, "numpy")
         return _numba_function(_numba_module(plan, False, from_index=True), plan, doc)
     except (OSError, ValueError, KeyError, TypeError):
         return None
@@ -418,14 +444,43 @@ def build_numba(plan: Plan, use_cse: bool, doc: str) -> Callable:
 
 
 def compiler() -> str | None:
+    """The C compiler of the C back end: ``$CC``, ``cc``, ``gcc`` or ``clang``, or None.
+
+    >>> compiler() is None or isinstance(compiler(), str)
+    True
+    """
     for cc in (os.environ.get("CC"), "cc", "gcc", "clang"):
         if cc and shutil.which(cc):
             return cc
     return None
 
 
-def _compile_c(source: str) -> bytes:
-    """The shared library compiled from ``source``."""
+def python_headers() -> list[str] | None:
+    """The include folders of Python's and NumPy's C headers, or None where either is missing.
+
+    With them the C back end builds each function as a CPython extension
+    module (see :func:`screwsym.codegen._emit.c_extension_source`): one point
+    per call at the cost of a C call.  Without them, a plain library.
+    """
+    import sysconfig
+
+    py = sysconfig.get_paths().get("include") or ""
+    inc = np.get_include()
+    ok = (os.path.isfile(os.path.join(py, "Python.h"))
+          and os.path.isfile(os.path.join(inc, "numpy", "arrayobject.h")))
+    return [py, inc] if ok else None
+
+
+def _abi() -> str:
+    """A tag of the Python and NumPy an extension module was built for (in its file name)."""
+    import sysconfig
+
+    text = f"{sys.version}|{np.__version__}|{sysconfig.get_config_var('EXT_SUFFIX')}"
+    return hashlib.sha256(text.encode()).hexdigest()[:12]
+
+
+def _compile_c(source: str, include: list[str] | None = None) -> bytes:
+    """The shared library compiled from ``source`` (an extension module with ``include``)."""
     cc = compiler()
     if cc is None:
         raise RuntimeError("backend 'c' needs a C compiler: none of $CC, cc, gcc, clang found")
@@ -434,31 +489,37 @@ def _compile_c(source: str) -> bytes:
         tmp_so = os.path.join(tmp, "generated.so")
         with open(c_path, "w") as fh:
             fh.write(source)
-        cmd = [cc, "-O3", "-std=c99", "-shared", "-fPIC", c_path, "-o", tmp_so, "-lm"]
+        flags = ["-std=c99"] if include is None else ["-std=c11", *(f"-I{d}" for d in include)]
+        cmd = [cc, "-O3", *flags, "-shared", "-fPIC", c_path, "-o", tmp_so, "-lm"]
         done = subprocess.run(cmd, capture_output=True, text=True)
         if done.returncode != 0:
             raise RuntimeError(f"backend 'c': {' '.join(cmd)} failed:\n{done.stderr}")
         return Path(tmp_so).read_bytes()
 
 
-def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
-    plan = prepared(plan, use_cse)
+_EXTENSIONS: dict[str, Any] = {}
+
+
+def _extension(path: Path, cname: str) -> Any:
+    """The extension module ``cname`` at ``path`` (a checked artefact), loaded once."""
+    import importlib.machinery
+
+    mod = _EXTENSIONS.get(cname)
+    if mod is None:
+        loader = importlib.machinery.ExtensionFileLoader(cname, str(path))
+        spec = importlib.util.spec_from_file_location(cname, str(path), loader=loader)
+        assert spec is not None
+        mod = importlib.util.module_from_spec(spec)
+        loader.exec_module(mod)
+        _EXTENSIONS[cname] = mod
+    return mod
+
+
+def _c_function(plan: Plan, lib: Any, text: str, doc: str, point: Any = None) -> Any:
+    """The generated wrapper ``text`` around the loop of the loaded library ``lib``.
+
+    ``point`` is the extension module's one-point function, where there is one."""
     cname = f"screwsym_k{plan.key}"
-    source = _emit.c_source(plan, cname)
-    sub = _subdir("c")
-    found = None if sub is None else find_artifact(sub, cname, ".so")
-    if found is not None:
-        lib = ctypes.CDLL(str(found[0]))
-    else:
-        data = _compile_c(source)
-        so_path = None if sub is None else _store(sub, cname, ".so", data)
-        if so_path is not None:
-            lib = ctypes.CDLL(str(so_path))
-        else:
-            with tempfile.TemporaryDirectory(prefix="screwsym-c-") as tmp:
-                tmp_path = Path(tmp) / f"{cname}.so"
-                tmp_path.write_bytes(data)
-                lib = ctypes.CDLL(str(tmp_path))  # stays mapped after the file is removed
     cfunc = getattr(lib, cname)
     ptr = ctypes.POINTER(ctypes.c_double)
     argtypes: list = [ctypes.c_size_t]
@@ -479,14 +540,60 @@ def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
 
     ns = _namespace(plan)
     ns["_kernel"] = kernel
-    text = _emit.c_wrapper_source(plan) + "\n# C source compiled for this function:\n" + "".join(
-        "# " + line + "\n" for line in source.splitlines()
-    )
-    fn = _finish(_exec(text, plan, "c", ns), plan, doc)
+    ns["_point"] = point
+    fn = _finish(_exec(text, plan, "c", ns), plan, doc, "c")
     fn.kernel = kernel
     fn.c_library = lib
-    fn.c_source = source
+    marker = "# C source compiled for this function:\n"
+    fn.c_source = "".join(line[2:] + "\n" for line in
+                          text[text.index(marker) + len(marker):].splitlines())
     return fn
+
+
+def _load_c(sub: Path | None, cname: str, doc: str, plan: Plan) -> Any:
+    """The cached function ``cname`` (extension module first, else plain library), or None."""
+    if sub is None:
+        return None
+    for stem, ext in ((f"{cname}_py{_abi()}", True), (cname, False)):
+        so = find_artifact(sub, stem, ".so")
+        py = find_artifact(sub, stem, ".py")
+        if so is not None and py is not None:
+            point = _extension(so[0], cname).point if ext else None
+            return _c_function(plan, ctypes.CDLL(str(so[0])), py[1].decode(), doc, point)
+    return None
+
+
+def build_c(plan: Plan, use_cse: bool, doc: str) -> Callable:
+    cname = f"screwsym_k{plan.key}"
+    sub = _subdir("c")
+    found = _load_c(sub, cname, doc, plan)  # no CSE nor printing where it is on disk
+    if found is not None:
+        return found
+    plan = prepared(plan, use_cse)
+    source = _emit.c_source(plan, cname)
+    include = python_headers()
+    stem = cname
+    if include is not None:
+        source += _emit.c_extension_source(plan, cname)
+        stem = f"{cname}_py{_abi()}"
+    data = _compile_c(source, include)
+    text = _emit.c_wrapper_source(plan, include is not None) + (
+        "\n# C source compiled for this function:\n"
+        + "".join("# " + line + "\n" for line in source.splitlines()))
+    so_path = None if sub is None else _store(sub, stem, ".so", data)
+    tmp = None
+    if so_path is not None:
+        _store(so_path.parent, stem, ".py", text.encode())
+    else:
+        tmp = tempfile.TemporaryDirectory(prefix="screwsym-c-")
+        so_path = Path(tmp.name) / f"{stem}.so"
+        so_path.write_bytes(data)
+    try:  # a library stays mapped after its file is removed
+        point = _extension(so_path, cname).point if include is not None else None
+        return _c_function(plan, ctypes.CDLL(str(so_path)), text, doc, point)
+    finally:
+        if tmp is not None:
+            tmp.cleanup()
 
 
 BUILDERS = {"numpy": build_numpy, "numba": build_numba, "c": build_c}

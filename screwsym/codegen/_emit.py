@@ -113,10 +113,17 @@ def _returns(plan: Plan) -> str:
 SCALAR_STATEMENTS = 500
 
 
-def _wrapper(plan: Plan, body: list[str], contiguous: bool) -> list[str]:
+def _wrapper(plan: Plan, body: list[str], contiguous: bool, fast: bool = False) -> list[str]:
     params = _params(plan)
     lines = [f"def _fn({params}, *, out=None):"]
-    if len(plan.assigns) <= SCALAR_STATEMENTS:  # a huge plan: printed (and compiled) once
+    if fast:  # the extension module's point(): None unless one plain point
+        lines += [
+            "    if out is None:",
+            f"        _r = _point({params})",
+            "        if _r is not None:",
+            "            return _r",
+        ]
+    elif len(plan.assigns) <= SCALAR_STATEMENTS:  # a huge plan: printed (and compiled) once
         lines += _scalar_path(plan)
     lines.append(
         f"    ({params},), ({_outs(plan)},), _shape, _n = "
@@ -237,9 +244,10 @@ def numba_source(plan: Plan, helpers: str) -> str:
     return "\n".join(lines) + "\n"
 
 
-def c_wrapper_source(plan: Plan) -> str:
+def c_wrapper_source(plan: Plan, fast: bool = False) -> str:
+    """The Python wrapper of the C loop (``_kernel``); ``fast``: one point by ``_point``."""
     body = [f"    _kernel(_n, {_params(plan)}, {_outs(plan)})"]
-    return "\n".join(_header(plan, "c") + _wrapper(plan, body, True)) + "\n"
+    return "\n".join(_header(plan, "c") + _wrapper(plan, body, True, fast)) + "\n"
 
 
 #: plans whose assignments print to more characters than this are written for C as a chain
@@ -348,6 +356,121 @@ def c_source(plan: Plan, cname: str) -> str:
         "    for (size_t i = 0; i < n; ++i) {",
         f"        {cname}_point({', '.join(call_args)});",
         "    }",
+        "}",
+        "",
+    ]
+    return "\n".join(lines)
+
+
+def c_extension_source(plan: Plan, cname: str) -> str:
+    """A CPython extension module ``cname`` around ``cname_point``: one point per fast call.
+
+    Its one function, ``point(*args)`` (``METH_FASTCALL``: no argument tuple
+    is built), evaluates a single point when every argument is exactly what
+    the single-point path takes (a C-contiguous native ``float64`` array of
+    the argument's own shape, or a Python or NumPy float) and returns the
+    results as NumPy arrays (a scalar as ``numpy.float64``); for anything
+    else it returns ``None`` and the Python wrapper takes the general path.
+    Appended to :func:`c_source` (which it calls); every identifier is
+    screwsym's, and ``cname`` is ``screwsym_k`` and a hex digest.
+    """
+    n = len(plan.specs)
+    lines = [
+        "",
+        "/* The CPython extension module: one point per METH_FASTCALL call. */",
+        "#define PY_SSIZE_T_CLEAN",
+        "#include <Python.h>",
+        "#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION",
+        "#include <numpy/arrayobject.h>",
+        "#include <numpy/arrayscalars.h>",
+        "",
+        "static PyArray_Descr *screwsym_f64;",
+        "",
+        "static int screwsym_vec(PyObject *o, int nd, const npy_intp *dims, double **p)",
+        "{",
+        "    if (!PyArray_CheckExact(o)) return 0;",
+        "    PyArrayObject *a = (PyArrayObject *)o;",
+        "    if (PyArray_TYPE(a) != NPY_DOUBLE || PyArray_NDIM(a) != nd",
+        "        || !PyArray_ISCARRAY_RO(a) || !PyArray_ISNOTSWAPPED(a)) return 0;",
+        "    for (int k = 0; k < nd; ++k) if (PyArray_DIMS(a)[k] != dims[k]) return 0;",
+        "    *p = (double *)PyArray_DATA(a);",
+        "    return 1;",
+        "}",
+        "",
+        "static int screwsym_num(PyObject *o, double *x)",
+        "{",
+        "    if (!PyFloat_CheckExact(o) && !PyArray_IsScalar(o, Double)) return 0;",
+        "    *x = PyFloat_AS_DOUBLE(o);",
+        "    return 1;",
+        "}",
+        "",
+        f"static PyObject *{cname}_fast(PyObject *self, PyObject *const *args, Py_ssize_t nargs)",
+        "{",
+        "    (void)self;",
+        f"    if (nargs != {n}) Py_RETURN_NONE;",
+    ]
+    call = []
+    for i, spec in enumerate(plan.specs):
+        if spec.trailing:
+            dims = ", ".join(str(d) for d in spec.trailing)
+            lines += [
+                f"    static const npy_intp _d{i}[] = {{{dims}}};",
+                f"    double *_p{i};",
+                f"    if (!screwsym_vec(args[{i}], {len(spec.trailing)}, _d{i}, &_p{i}))"
+                " Py_RETURN_NONE;",
+            ]
+            call.append(f"_p{i}")
+        else:
+            lines += [f"    double _v{i};",
+                      f"    if (!screwsym_num(args[{i}], &_v{i})) Py_RETURN_NONE;"]
+            call.append(f"_v{i}")
+    results = list(range(len(plan.outs)))
+    lines += [f"    PyObject *_r{j} = NULL;" for j in results]  # all set before any goto
+    for j, out in enumerate(plan.outs):
+        if out.trailing:
+            dims = ", ".join(str(d) for d in out.trailing)
+            lines += [
+                f"    npy_intp _e{j}[] = {{{dims}}};",
+                f"    _r{j} = PyArray_SimpleNew({len(out.trailing)}, _e{j}, NPY_DOUBLE);",
+                f"    if (_r{j} == NULL) goto fail;",
+            ]
+            call.append(f"(double *)PyArray_DATA((PyArrayObject *)_r{j})")
+        else:
+            lines.append(f"    double _w{j};")
+            call.append(f"&_w{j}")
+    lines.append(f"    {cname}_point({', '.join(call)});")
+    for j, out in enumerate(plan.outs):
+        if not out.trailing:
+            lines += [f"    _r{j} = PyArray_Scalar(&_w{j}, screwsym_f64, NULL);",
+                      f"    if (_r{j} == NULL) goto fail;"]
+    if plan.is_tuple:
+        lines += [f"    PyObject *_t = PyTuple_New({len(plan.outs)});",
+                  "    if (_t == NULL) goto fail;"]
+        lines += [f"    PyTuple_SET_ITEM(_t, {j}, _r{j});" for j in results]
+        lines.append("    return _t;")
+    else:
+        lines.append("    return _r0;")
+    lines += ["fail:"]
+    lines += [f"    Py_XDECREF(_r{j});" for j in results]
+    lines += [
+        "    return NULL;",
+        "}",
+        "",
+        f"static PyMethodDef {cname}_methods[] = {{",
+        f'    {{"point", (PyCFunction)(void (*)(void)){cname}_fast, METH_FASTCALL, NULL}},',
+        "    {NULL, NULL, 0, NULL}",
+        "};",
+        "",
+        f"static struct PyModuleDef {cname}_module = {{",
+        f'    PyModuleDef_HEAD_INIT, "{cname}", NULL, -1, {cname}_methods,',
+        "    NULL, NULL, NULL, NULL",
+        "};",
+        "",
+        f"PyMODINIT_FUNC PyInit_{cname}(void)",
+        "{",
+        "    import_array();",
+        "    screwsym_f64 = PyArray_DescrFromType(NPY_DOUBLE);",
+        f"    return PyModule_Create(&{cname}_module);",
         "}",
         "",
     ]

@@ -305,6 +305,29 @@ def check_supported(x: Expr, backend: str) -> None:
             )
         if isinstance(node, log) and len(node.args) != 1:  # pragma: no cover - SymPy folds it
             raise TypeError(f"expr: backend {backend!r} cannot generate code for {node}")
+        if isinstance(node, (sympy.Rational, sympy.Float)):
+            _check_double(node)
+
+
+def _check_double(c: Any) -> None:
+    """Raise ``ValueError`` naming ``c``, a number whose nearest double is inf or 0.
+
+    ``x/10**400`` would otherwise be ``x*0.0`` in generated code (``inf*x`` for
+    ``x*10**400``): a silent wrong number wherever ``x`` makes the result a double.
+    A rational's value is Python's correctly rounded ``p/q`` (see the printers).
+    """
+    try:
+        value = c.p / c.q if isinstance(c, sympy.Rational) else float(c)
+    except OverflowError:
+        value = math.inf
+    if math.isinf(value) or (value == 0 and c != 0):
+        text = str(c)
+        shown = text if len(text) <= 40 else f"{sympy.N(c, 6)} (written in {len(text)} characters)"
+        raise ValueError(
+            f"expr: the constant {shown} is out of the range of float64 (magnitudes 4.9e-324 "
+            f"to 1.8e308): generated code would hold {'inf' if value else '0'} for it; "
+            "rescale the expression (other units) so that each of its constants is a double"
+        )
 
 
 def _postorder(roots: Sequence[Basic]):

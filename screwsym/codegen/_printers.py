@@ -71,7 +71,10 @@ class _Common:
         return str(p) if abs(p) <= _EXACT else self._number(p)
 
     def _print_Rational(self, expr):
-        return f"({self._print(Integer(expr.p))}/{self._print(Integer(expr.q))})"
+        if abs(expr.p) <= _EXACT and expr.q <= _EXACT:  # doubles: their quotient is rounded once
+            return f"({self._print(Integer(expr.p))}/{self._print(Integer(expr.q))})"
+        # Python's int division is correctly rounded: (10**400 + 1)/10**400 is 1.0, not inf/inf
+        return self._number(expr.p / expr.q)
 
     def _print_Half(self, expr):
         return "0.5"

@@ -56,9 +56,10 @@ def batched(
     travel as float64 inside a chunk (exact below ``2**53``).  For the
     process-based schedulers and ``dask.distributed``, ``fn`` must pickle: a
     module-level function or a ``functools.partial`` of one with picklable
-    arguments, not a function made by :func:`screwsym.lambdify` (whose
-    generated namespace does not pickle); rebuild that inside ``fn`` from
-    its recipe, as :func:`~screwsym.numeric.mobility.mobility_map` does.
+    arguments.  A function made by :func:`screwsym.lambdify` pickles by
+    reference and loads only where its disk cache is shared
+    (:mod:`screwsym.codegen.generated`); on other machines rebuild it inside
+    ``fn`` from its recipe, as :func:`~screwsym.numeric.mobility.mobility_map` does.
 
     Examples
     ========

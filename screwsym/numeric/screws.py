@@ -27,12 +27,14 @@ the pitch of a couple ``(0; C)`` is ``inf`` (the symbolic
 symbolic one raises); the foot point of a couple, whose axis lies at
 infinity, is ``nan`` (the symbolic one raises).
 
-The functions here use the compiled (numba) back end once numba is imported
-in the process (``pip install -e ".[fast]"`` from a clone, then ``import numba``),
-and NumPy otherwise (:func:`default_backend`), so that a new process's first
-call pays no numba import; each is generated on first use and kept in the disk
-cache (see :func:`screwsym.codegen.cache_dir`), from which a new process reads
-it back without SymPy work (and numba's cache spares it the compilation).  :func:`functions_for` gives the same set
+The functions here use the numba back end once numba is imported in the
+process (``pip install -e ".[fast]"`` from a clone, then ``import numba``),
+else the C back end where a C compiler is found, else NumPy
+(:func:`default_backend`), so that a new process's first call pays no numba
+import; each is generated on first use and kept in the disk cache (see
+:func:`screwsym.codegen.cache_dir`), from which a new process reads it back
+without SymPy work (and numba's cache spares it the compilation, the C
+library is loaded as it is).  :func:`functions_for` gives the same set
 for a chosen back end, e.g. ``functions_for("numpy")`` or ``functions_for("c")``.
 
 Examples
@@ -57,6 +59,7 @@ screwsym.codegen.lambdify
 
 from __future__ import annotations
 
+import math
 import re
 import sys
 import threading
@@ -66,9 +69,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from sympy import Eq, Ne, Piecewise, nan
+from sympy import And, Eq, Integer, Piecewise, Rational, nan
 
-from ..codegen import code_digest, lambdify, load_index, resolve_backend, save_index
+from ..codegen import code_digest, compiler, lambdify, load_index, resolve_backend, save_index
 from ..core import screw as _core
 from ..core.line import LineVector
 from ..core.screw import Screw
@@ -167,6 +170,32 @@ class Definitions(Mapping[str, Definition]):
         return len(self._by_name)
 
 
+#: the range of ``S . S`` and ``S0 . S0`` in which the formulas of degree 2 (1.16, 1.34)
+#: neither underflow nor overflow: every part then has size in ``[2^-480, 2^480]``, so that
+#: each product of two components is a normal double (or a harmless subnormal beside a
+#: normal term) and no sum of three overflows
+_LOW, _HIGH = Rational(1, 2**960), Integer(2**960)
+
+
+def _is_zero(v: Any) -> Any:
+    """Each component of ``v`` is zero (exactly: not its square sum, which can underflow)."""
+    return And(*(Eq(x, 0) for x in v))
+
+
+def _in_range(s: Screw) -> Any:
+    """Where the plain formula of a pitch or foot point is accurate in floats.
+
+    ``S . S`` within ``[_LOW, _HIGH]``, and ``S0 . S0`` too unless ``S0`` is
+    zero.  Outside (a screw scaled by ``1e-200`` or ``1e200``, a couple, a
+    part not finite) the generated kernel gives ``nan`` and
+    :func:`_scale_free` recomputes those elements, and only those, on the
+    parts scaled to size 1.  One branch per element: no pass over the array.
+    """
+    SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
+    return ((SS >= _LOW) & (SS <= _HIGH)
+            & (((S0S0 >= _LOW) & (S0S0 <= _HIGH)) | _is_zero(s.S0)))
+
+
 #: the generated functions' definitions, in the order of :data:`NAMES`
 DEFINITIONS = Definitions()
 numeric_definition = DEFINITIONS.register
@@ -189,14 +218,14 @@ def _pitch() -> _Made:
     array([ 1., inf, nan])
     """
     s = Screw(vector("S"), vector("S0"))
-    SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
-    # Only the general branch is the book's formula; the special cases say
-    # what the symbolic pitch gives for a couple (oo) and that the zero screw
-    # has none (nan here, an error there).
+    # The first branch is the book's formula where the parts are in range (the common case
+    # first: one test per screw); the second says what the symbolic pitch gives for a couple
+    # (oo); the zero screw has none (nan here, an error there), and out of range the nan is
+    # recomputed scaled by the wrapper (see _in_range, which implies S != 0).
     return {"s": s}, Piecewise(
-        (_core.pitch(Screw.couple(s.S0)), Eq(SS, 0) & Ne(S0S0, 0)),
-        (nan, Eq(SS, 0)),
-        (_core.pitch(s), True),
+        (_core.pitch(s), _in_range(s)),
+        (_core.pitch(Screw.couple(s.S0)), _is_zero(s.S) & ~_is_zero(s.S0)),
+        (nan, True),
     )
 
 
@@ -216,7 +245,8 @@ def _foot() -> _Made:
     array([ 0. ,  0. , -0.5])
     """
     s = Screw(vector("S"), vector("S0"))
-    return {"s": s}, _core.foot(s)
+    good = _in_range(s)  # else nan, then recomputed scaled by the wrapper (see _in_range)
+    return {"s": s}, _core.foot(s).applyfunc(lambda e: Piecewise((e, good), (nan, True)))
 
 
 @numeric_definition
@@ -333,35 +363,61 @@ _LOCK = threading.Lock()
 SCALE_FREE: tuple[str, ...] = ("pitch", "foot")
 
 
-def _scale_free(fn: Callable, name: str) -> Callable:
+def _rescaled(fn: Callable, a: np.ndarray, name: str) -> Any:
     """``fn`` evaluated on ``(S/2^e; S0/2^e0)``, its result scaled back by ``2^(e0 - e)``.
 
     ``2^e`` is the power of two at or above the largest ``|S_i|`` (likewise
     ``2^e0`` for ``S0``): dividing by it is exact, and the scaled parts have
     size 1, so that ``S . S`` cannot underflow (``nan`` for a screw scaled by
     ``1e-200``) nor overflow (``nan`` at ``1e200``).  A part that is zero or
-    not finite is left as it is.  Input that is not a float or integer array
-    ending in 6 goes to ``fn`` unchanged (its own checks answer it).
+    not finite is left as it is.
+    """
+    with np.errstate(all="ignore"):
+        m, m0 = np.abs(a[..., :3]).max(axis=-1), np.abs(a[..., 3:]).max(axis=-1)
+        e = np.where((m > 0) & np.isfinite(m), np.frexp(m)[1], 0)
+        e0 = np.where((m0 > 0) & np.isfinite(m0), np.frexp(m0)[1], 0)
+        x = np.concatenate([np.ldexp(a[..., :3], -e[..., None]),
+                            np.ldexp(a[..., 3:], -e0[..., None])], axis=-1)
+    shift = e0 - e if name == "pitch" else (e0 - e)[..., None]
+    with np.errstate(over="ignore"):  # a result beyond the floats is inf, as unscaled
+        return np.ldexp(fn(x), shift)
+
+
+def _scale_free(fn: Callable, name: str) -> Callable:
+    """``fn`` (whose kernel gives ``nan`` where its parts are out of range) made scale-free.
+
+    The kernel runs once over the whole array at memory speed; its guard
+    (:func:`_in_range`, one branch per element) leaves ``nan`` where ``S . S``
+    or ``S0 . S0`` is out of range.  Only those elements (``nan`` results:
+    also the zero screw, a couple's foot point and non-finite input, which
+    come back the same) are computed again by :func:`_rescaled`.  The one
+    extra pass is ``isnan`` over the result.  Input that is not a float or
+    integer array ending in 6 is answered by ``fn`` (its own checks).
     """
 
+    pitch, float64, isnan = name == "pitch", np.float64, math.isnan
+
     def scaled(s: Any, *, out: Any = None) -> Any:
-        a = s if isinstance(s, np.ndarray) else np.asarray(s) if isinstance(s, (list, tuple)) else None
-        if a is None or a.dtype.kind not in "fiu" or a.ndim == 0 or a.shape[-1] != 6:
-            return fn(s, out=out)
-        a = a.astype(np.float64, copy=False)
-        with np.errstate(all="ignore"):
-            m, m0 = np.abs(a[..., :3]).max(axis=-1), np.abs(a[..., 3:]).max(axis=-1)
-            e = np.where((m > 0) & np.isfinite(m), np.frexp(m)[1], 0)
-            e0 = np.where((m0 > 0) & np.isfinite(m0), np.frexp(m0)[1], 0)
-            x = np.concatenate([np.ldexp(a[..., :3], -e[..., None]),
-                                np.ldexp(a[..., 3:], -e0[..., None])], axis=-1)
-        shift = e0 - e if name == "pitch" else (e0 - e)[..., None]
-        result = fn(x, out=out)
-        with np.errstate(over="ignore"):  # a result beyond the floats is inf, as unscaled
-            if out is not None:
-                np.ldexp(out, np.broadcast_to(shift, np.shape(out)), out=out)
+        result = fn(s, out=out)
+        r = result if out is None else out
+        # one number per screw (a float for one screw: r[..., 0] would be a 0-d array)
+        first = r if pitch else r[0] if r.ndim == 1 else r[..., 0]
+        if type(first) is float64 or first.ndim == 0:  # one screw (np.ndim: 2 us a call)
+            if not isnan(first):  # the common case (math.isnan: 40 ns; np.isnan 1 us)
                 return result
-            return np.ldexp(result, shift)
+            a = np.asarray(s, dtype=np.float64)
+            again = _rescaled(fn, a, name)
+            if out is None:
+                return again
+            out[...] = again
+            return result if isinstance(result, np.ndarray) else out[()]  # a 0-d out
+        bad = np.isnan(first)
+        if not bad.any():
+            return result
+        where = np.nonzero(bad)
+        a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
+        r[where] = _rescaled(fn, a[where], name)
+        return result
 
     scaled.__name__ = scaled.__qualname__ = fn.__name__
     scaled.__doc__ = fn.__doc__
@@ -371,18 +427,22 @@ def _scale_free(fn: Callable, name: str) -> Callable:
 
 
 def default_backend() -> str:
-    """The back end of this module's functions: numba once numba is imported, else NumPy.
+    """The back end of this module's functions: numba once imported, else C where a compiler is, else NumPy.
 
-    A new process's first call then pays no numba import (0.5 s quiet, seconds
-    under load): the NumPy function is read back from the disk cache in
-    milliseconds.  Import numba first (``import numba``), or use
-    :func:`functions_for` with ``"numba"``, for the compiled loops.
+    Compiled loops run at memory speed (the NumPy back end, a dozen array
+    expressions per block, does not).  numba only once the user has imported
+    it, so that a new process's first call pays no numba import (0.5 s quiet,
+    seconds under load); otherwise the C back end where a C compiler is found
+    (each library compiled once, about 0.2 s, then loaded from the disk cache
+    in milliseconds, see :func:`screwsym.codegen.cache_dir`); NumPy on a
+    machine with neither.  :func:`functions_for` chooses another.
 
-    >>> default_backend() in ("numba", "numpy")
+    >>> default_backend() in ("numba", "c", "numpy")
     True
     """
-    compiled = resolve_backend(None)
-    return compiled if compiled != "numba" or "numba" in sys.modules else "numpy"
+    if "numba" in sys.modules and resolve_backend(None) == "numba":
+        return "numba"
+    return "c" if compiler() is not None else "numpy"
 
 
 def _function(name: str, backend: str | None = None) -> Callable:
@@ -394,13 +454,12 @@ def _function(name: str, backend: str | None = None) -> Callable:
             fn = _BUILT.get(key)
             definition = DEFINITIONS[name]
             tag = f"{name}-{code_digest()}"
-            if fn is None and backend in ("numba", "numpy"):
+            if fn is None:
                 fn = load_index(tag, definition.doc, backend)
             if fn is None:
                 args, expr, names = definition.build()
                 fn = lambdify(args, expr, backend, name=name, names=names, doc=definition.doc)
-                if backend in ("numba", "numpy"):
-                    save_index(tag, fn)
+                save_index(tag, fn)
             if name in SCALE_FREE:
                 fn = _scale_free(fn, name)
             _BUILT[key] = fn

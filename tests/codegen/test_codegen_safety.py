@@ -321,7 +321,9 @@ def test_c_build_leaves_no_temporary_directory(tmp_path, monkeypatch):
     monkeypatch.setenv("SCREWSYM_CACHE_DIR", str(tmp_path / "cache"))
     f = lambdify([x], x**3 + 17.5, "c")
     assert f(2.0) == 25.5 and np.array_equal(f(np.array([1.0, 2.0])), [18.5, 25.5])
-    assert [p.suffix for p in (tmp_path / "cache" / "c").iterdir()] == [".so"]
+    # the library and its Python wrapper (read back without CSE nor printing in a new process)
+    # and its description for a new process (unpickling, codegen.generated)
+    assert sorted(p.suffix for p in (tmp_path / "cache" / "c").iterdir()) == [".json", ".py", ".so"]
     # without a usable one: a temporary directory, removed after loading
     (tmp_path / "file").write_text("")
     monkeypatch.setenv("SCREWSYM_CACHE_DIR", str(tmp_path / "file"))
@@ -412,3 +414,26 @@ def test_array_entry_points_check_huge_integers_and_out(backend):
     out = (np.empty(2),)
     g(np.ones(2), np.ones(2), out=out)
     assert out[0].tolist() == [2.125] * 2
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_constant_beyond_the_doubles_is_refused_by_name(backend):
+    # issue 33: x/10**400 gave a bare OverflowError naming nothing; its nearest double is 0,
+    # so generated code would give 0 where x = 1e300 makes the result 1e-100
+    from sympy import Float, Rational
+
+    for expr, held in [(x / 10**400, "0"), (x * 10**400, "inf"), (x + 10**309, "inf"),
+                       (x * Float("1e400"), "inf"), (y * Rational(1, 3 * 10**330), "0"),
+                       (x * y ** Rational(1, 10**400), "0")]:
+        with pytest.raises(ValueError, match=r"expr: the constant (\S+E[+-]\d+ \(written in \d+ "
+                                             rf"characters\)|\S+) is out of the range of float64 "
+                                             rf".*would hold {held} for it"):
+            lambdify([x, y], expr, backend)
+    # a rational whose numerator and denominator are beyond the doubles, its value not: the
+    # correctly rounded quotient (printing p/q as doubles gave inf/inf = nan)
+    f = lambdify([x, y], x * Rational(10**400 + 1, 10**400) + y * Rational(2**60 + 1, 3),
+                 backend)
+    assert f(2.0, 0.0) == 2.0 and f(0.0, 3.0) == float(2**60 + 1)
+    assert f(np.array([2.0]), np.array([0.0])).tolist() == [2.0]
+    # the smallest doubles are constants like any other (subnormal: the nearest double)
+    assert lambdify([x], x * Rational(1, 10**310), backend)(2.0) == 2e-310

@@ -24,6 +24,7 @@ from sympy import Rational, sqrt, symbols
 
 import screwsym
 from screwsym import LineVector, Screw, Twist, Wrench, codegen, numeric
+from screwsym.codegen import compiler
 from screwsym.numeric.screws import DEFINITIONS, Definitions, numeric_definition
 
 
@@ -87,10 +88,12 @@ def test_agrees_with_the_symbolic_core(name, backend):
 
 def test_module_functions_are_the_default_back_end_and_generated():
     # lambdify compiles by default when numba is installed (the issue's "fast by default");
-    # the numeric functions once numba is imported, so that a first call pays no numba
-    # import (issue 23 item 4)
+    # the numeric functions use numba once numba is imported, so that a first call pays no
+    # numba import (issue 23 item 4),
     assert codegen.default_backend() == ("numba" if HAS_NUMBA else "numpy")
-    default = "numba" if HAS_NUMBA and "numba" in sys.modules else "numpy"
+    # else C where a compiler is (compiled loops at memory speed, issue 34 item 4)
+    default = ("numba" if HAS_NUMBA and "numba" in sys.modules
+               else "c" if compiler() is not None else "numpy")
     assert numeric.screws.default_backend() == default
     assert numeric.pitch is numeric.functions_for().pitch is numeric.functions_for(default).pitch
     assert numeric.pitch is not numeric.functions_for("numpy").pitch or default == "numpy"
@@ -274,7 +277,8 @@ def test_a_new_process_loads_the_compiled_functions_without_rebuilding_them(tmp_
     assert first.stdout == second.stdout == "0.5 0.0 False\n"
     # an unreadable index is ignored: the function is built again
     indexes = list(tmp_path.glob("*/index-pitch-*.json"))
-    assert [p.parent.name for p in indexes] == ["numpy"]  # numba is not imported there
+    # numba is not imported there: the default is C (a compiler found), else NumPy
+    assert [p.parent.name for p in indexes] == ["c" if compiler() else "numpy"]
     for index in indexes:
         index.write_text('{"key": "../../evil"}')
     third = run("second")
@@ -363,7 +367,8 @@ def test_an_edited_formula_is_rebuilt_not_loaded_from_the_old_index(tmp_path):
     package, cache = _copy_package(tmp_path), tmp_path / "cache"
     first = _probe(package, cache, "pitch")
     assert first["built"] == ["pitch"] and first["pitch"] == 0.5  # built, saved to the index
-    assert list((cache / "numpy").glob("index-pitch-*.json"))  # numba not imported there
+    # numba not imported there: the default is C (a compiler found), else NumPy
+    assert list((cache / ("c" if compiler() else "numpy")).glob("index-pitch-*.json"))
     again = _probe(package, cache, "pitch")
     assert again["built"] == [] and again["pitch"] == 0.5  # the same source: loaded
     with open(package / "core" / "screw.py", "a", encoding="utf-8") as f:
@@ -396,21 +401,107 @@ _component = st.integers(-9, 9)
 _scale = st.integers(-300, 300)
 
 
-@settings(max_examples=25, deadline=None, derandomize=True)
-@given(st.lists(_component, min_size=6, max_size=6), _scale, _scale)
-def test_property_pitch_and_foot_are_scale_robust_against_sympys_exact_values(c, j, j0):
-    # the parts scaled by 10^j and 10^j0 (floats from 1e-300 to 1e300); the reference is the
-    # exact pitch (1.34) and foot (1.16) of the very floats given, in SymPy's rationals
+def _assert_scale_robust(pitch, foot, s) -> None:
+    """``pitch(s)`` and ``foot(s)`` against the exact (1.34) and (1.16) of the very floats given.
+
+    The error bound of the formulas: eps times the size of their terms, ``|S0|/|S|``."""
     from sympy import Matrix
 
-    assume(any(c[:3]))
-    s = np.array([float(Rational(v) * Rational(10) ** j) for v in c[:3]]
-                 + [float(Rational(v) * Rational(10) ** j0) for v in c[3:]])
     S, S0 = Matrix([Rational(v) for v in s[:3]]), Matrix([Rational(v) for v in s[3:]])
     h, P = S.dot(S0) / S.dot(S), S.cross(S0) / S.dot(S)
-    # the error bound of the formulas: eps times the size of their terms, |S0|/|S|
     size = float(sqrt(S0.dot(S0) / S.dot(S)))
-    assume(1e-300 < size < 1e300 or not any(c[3:]))
-    f = numeric.functions_for("numpy")
-    for got, want in [(f.pitch(s), h), *zip(f.foot(s), P, strict=True)]:
+    for got, want in [(pitch(s), h), *zip(foot(s), P, strict=True)]:
         assert abs(got - float(want)) <= 8 * np.finfo(float).eps * size, (got, want)
+
+
+def _scaled_screw(c, j, j0) -> np.ndarray:
+    return np.array([float(Rational(v) * Rational(10) ** j) for v in c[:3]]
+                    + [float(Rational(v) * Rational(10) ** j0) for v in c[3:]])
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@settings(max_examples=25, deadline=None, derandomize=True)
+@given(c=st.lists(_component, min_size=6, max_size=6), j=_scale, j0=_scale)
+def test_property_pitch_and_foot_are_scale_robust_against_sympys_exact_values(backend, c, j, j0):
+    # the parts scaled by 10^j and 10^j0 (floats from 1e-300 to 1e300); the reference is the
+    # exact pitch (1.34) and foot (1.16) of the very floats given, in SymPy's rationals; every
+    # back end (the kernels' guard is generated code, issue 34 item 4)
+    assume(any(c[:3]))
+    s = _scaled_screw(c, j, j0)
+    S, S0 = [sum(Rational(v) ** 2 for v in part) for part in (s[:3], s[3:])]
+    assume(1e-300 < float(sqrt(S0 / S)) < 1e300 or not any(c[3:]))
+    f = numeric.functions_for(backend)
+    _assert_scale_robust(f.pitch, f.foot, s)
+    # batched: the same values, the rescaled elements among plain ones
+    batch = np.stack([s, [1.0, 2, 3, 4, 5, 6], s])
+    assert f.pitch(batch)[[0, 2]].tolist() == [f.pitch(s)] * 2
+    np.testing.assert_array_equal(f.foot(batch)[[0, 2]], [f.foot(s)] * 2)
+
+
+def test_the_scale_check_rejects_the_plain_formula():
+    # the checker above fails the book's formulas evaluated as they stand in floats: at 1e-160
+    # S . S is subnormal (a few digits left), at 1e-200 it is 0, at 1e200 it overflows
+    s = Screw(screwsym.vector("S"), screwsym.vector("S0"))
+    plain = screwsym.lambdify([s], (screwsym.pitch(s), screwsym.foot(s)), "numpy")
+    for k in (1e-160, 1e-200, 1e200):
+        x = np.array([1.0, 2, 0, 3, 0, 1]) * k
+        with pytest.raises(AssertionError):
+            _assert_scale_robust(lambda v: plain(v)[0], lambda v: plain(v)[1], x)
+        f = numeric.functions_for("numpy")
+        _assert_scale_robust(f.pitch, f.foot, x)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_only_the_out_of_range_elements_are_recomputed(backend, monkeypatch):
+    # the kernel's guard (one branch per element) marks what it cannot compute in range with
+    # nan; the wrapper rescales those rows, and only those: no pass over the array before
+    f = numeric.functions_for(backend)
+    raw = f.pitch.__wrapped__  # the generated kernel with its guard
+    assert np.isnan(raw(np.array([1.0, 1, 0, 1, 0, 0]) * 1e-200))
+    assert raw(np.array([1.0, 1, 0, 1, 0, 0])) == 0.5
+    seen = []
+    real = numeric.screws._rescaled
+
+    def spy(fn, a, name):
+        seen.append(a.shape)
+        return real(fn, a, name)
+
+    monkeypatch.setattr(numeric.screws, "_rescaled", spy)
+    rng = np.random.default_rng(3)
+    batch = rng.standard_normal((1000, 6))
+    batch[[5, 500]] *= 1e-200
+    batch[999] *= 1e200
+    want = numeric.functions_for("numpy").pitch.__wrapped__(batch / np.array([1.0]))
+    got = f.pitch(batch)
+    assert seen == [(3, 6)]
+    normal = np.ones(1000, bool)
+    normal[[5, 500, 999]] = False
+    np.testing.assert_allclose(got[normal], want[normal], rtol=1e-15)
+    np.testing.assert_allclose(got[~normal], [
+        numeric.functions_for("numpy").pitch(batch[k] / (1e-200 if k < 999 else 1e200))
+        for k in (5, 500, 999)], rtol=1e-14)
+    seen.clear()
+    foot = f.foot(batch)
+    assert seen == [(3, 6)] and foot.shape == (1000, 3) and np.isfinite(foot).all()
+    seen.clear()
+    out = np.empty(1000)
+    assert f.pitch(batch, out=out) is not None and seen == [(3, 6)]
+    np.testing.assert_array_equal(out, got)
+    # one screw, rescaled, into a 0-d out= (its result is a copy of out: the new value)
+    one, foot3 = np.empty(()), np.empty(3)
+    assert f.pitch(np.array([1.0, 1, 0, 1, 0, 0]) * 1e-200, out=one) == 0.5 and one == 0.5
+    f.foot(np.array([1.0, 1, 0, 1, 0, 0]) * 1e200, out=foot3)
+    assert foot3.tolist() == [0.0, 0.0, -0.5]
+
+
+def test_the_default_back_end_without_numba_imported(monkeypatch):
+    # compiled loops at memory speed without a numba import (issue 34 item 4): C where a
+    # compiler is found, NumPy without one; numba once the user has imported it
+    monkeypatch.delitem(sys.modules, "numba", raising=False)
+    monkeypatch.setattr(numeric.screws, "compiler", lambda: "cc")
+    assert numeric.screws.default_backend() == "c"
+    monkeypatch.setattr(numeric.screws, "compiler", lambda: None)
+    assert numeric.screws.default_backend() == "numpy"
+    if HAS_NUMBA:
+        monkeypatch.setitem(sys.modules, "numba", __import__("numba"))
+        assert numeric.screws.default_backend() == "numba"
