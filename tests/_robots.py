@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 from sympy import ImmutableMatrix, Rational, pi
 
 from screwsym import Chain, SpatialInertia, Transform
@@ -56,3 +57,39 @@ def panda() -> Chain:
     """The Franka Emika Panda's 7 arm joints with their URDF inertias (exact decimals)."""
     return Chain.from_urdf(DATA / "panda.urdf", "panda_link0", "panda_link8", angles="pi/12",
                            inertias=True)
+
+
+def _frame_on_axis(twist):
+    """A frame (R, p) with z along the joint's axis and origin on it (floats)."""
+    w, v = (np.array(x, dtype=float).ravel() for x in (twist.omega, twist.v_O))
+    revolute = np.linalg.norm(w) > 0
+    u = w if revolute else v
+    u = u / np.linalg.norm(u)
+    a = np.array([1.0, 0, 0]) if abs(u[0]) < 0.9 else np.array([0, 1.0, 0])
+    x = np.cross(a, u)
+    x /= np.linalg.norm(x)
+    R = np.column_stack([x, np.cross(u, x), u])
+    p = np.cross(w, v) / (w @ w) if revolute else np.zeros(3)
+    return R, p, revolute
+
+
+def pin_model(pin, chain, gravity=(0.0, 0.0, -9.81)):
+    """A pinocchio model of ``chain`` (unit-speed revolute and prismatic joints), test-only.
+
+    Each joint gets a frame on its axis with z along it (as tests/crosscheck/test_dynamics_peers.py),
+    and each body is carried into it.
+    """
+    model = pin.Model()
+    parent, Rp, pp = 0, np.eye(3), np.zeros(3)
+    for i, (twist, body) in enumerate(zip(chain.twists, chain.inertias, strict=True)):
+        R, p, revolute = _frame_on_axis(twist)
+        placement = pin.SE3(Rp.T @ R, Rp.T @ (p - pp))
+        joint = pin.JointModelRZ() if revolute else pin.JointModelPZ()
+        jid = model.addJoint(parent, joint, placement, f"j{i}")
+        m = float(body.mass)
+        c = np.array(body.com, dtype=float).ravel()
+        Ic = np.array(body.inertia, dtype=float)
+        model.appendBodyToJoint(jid, pin.Inertia(m, R.T @ (c - p), R.T @ Ic @ R), pin.SE3.Identity())
+        parent, Rp, pp = jid, R, p
+    model.gravity = pin.Motion(np.array(gravity, dtype=float), np.zeros(3))
+    return model

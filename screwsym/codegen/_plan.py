@@ -422,7 +422,8 @@ def build_plan(args: Any, expr: Any, use_cse: bool, name: Any, names: Any, backe
     """Check everything and return the plan (without CSE: see :func:`with_cse`)."""
     program = getattr(type(expr), "_lambdify_program", None)
     if program is not None and not isinstance(expr, type):
-        return program_plan(args, *expr._lambdify_program(), name, names, backend)
+        assigns, outputs = expr._lambdify_program()
+        return program_plan(args, assigns, outputs, name, names, backend)
     if name is not None and not isinstance(name, str):
         raise TypeError(f"name: expected a string, got {type(name).__name__} {name!r}")
     if name is not None and not is_identifier(name):

@@ -8,6 +8,7 @@ from .chain import Chain, ur5
 from .conventions import CONVENTIONS, Convention, convert, convert_from
 from .displacement import exp6, log6, se3_matrix
 from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
+from .newton_euler import Operations, Program, dynamics_program
 from .transform import Transform, adjoint_matrix, skew
 
 __all__ = [
@@ -24,6 +25,9 @@ __all__ = [
     "coriolis_matrix",
     "gravity_torques",
     "regressor",
+    "dynamics_program",
+    "Program",
+    "Operations",
     "convert",
     "convert_from",
     "CONVENTIONS",

@@ -61,6 +61,7 @@ from ..core.tidy import tidy
 from ..core.twist import Twist
 from . import _poe
 from . import dynamics as _dynamics
+from . import newton_euler as _newton_euler
 from .dh import dh_twists_and_home
 from .displacement import exp6
 from .transform import Transform
@@ -374,6 +375,11 @@ class Chain(ScrewsymBasic):
                   gravity: Any = None) -> ImmutableMatrix:
         """The torques' regressor in the inertial parameters: :func:`screwsym.motion.dynamics.regressor`."""
         return _dynamics.regressor(self, q, qd, qdd, gravity)
+
+    def dynamics_program(self, what: str = "inverse_dynamics",
+                         gravity: Any = None) -> _newton_euler.Program:
+        """A straight-line program (customised Newton–Euler): :func:`screwsym.motion.newton_euler.dynamics_program`."""
+        return _newton_euler.dynamics_program(self, what, gravity)
 
     def _sympystr(self, printer: Any) -> str:
         twists = ", ".join(printer._print(t) for t in self.twists)

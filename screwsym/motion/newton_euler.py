@@ -69,6 +69,7 @@ from ..core.checks import check_choice
 from ..core.decide import is_zero_vector
 from ..core.twist import Twist
 from .displacement import exp6
+from .dynamics import _check_chain, _gravity
 
 if TYPE_CHECKING:
     from .chain import Chain
@@ -264,7 +265,7 @@ def _nearest_on(p: Any, u: Any, p2: Any, u2: Any) -> Any:
     return p + t * u
 
 
-def _links(chain: Chain) -> list[_Link]:
+def _links(chain: Chain) -> tuple[list[_Link], list[Any]]:
     """The joints' twists in their frames ``{i}`` and the frames' offsets (module docstring)."""
     axes = []
     for t in chain.twists:
@@ -294,7 +295,7 @@ def _links(chain: Chain) -> list[_Link]:
         v_local = (v + w.cross(o)).applyfunc(lambda x: x.expand() if x.free_symbols else x)
         links.append(_Link(_col(w), _col(v_local), _col(o - prev)))
         prev = o
-    return links, origins  # type: ignore[return-value]
+    return links, origins
 
 
 class _Body(NamedTuple):
@@ -327,8 +328,6 @@ def _joint_pose(W: _Writer, link: _Link, q: Expr, i: int) -> tuple[list[list[Exp
 
 
 def _program(chain: Chain, what: str, gravity: Any) -> Program:
-    from .dynamics import _check_chain, _gravity  # noqa: PLC0415 - dynamics imports chain
-
     _check_chain(chain)
     n = chain.n_joints
     q, qd, qdd = (ImmutableMatrix([Symbol(f"{s}{i + 1}", real=True) for i in range(n)])
@@ -344,6 +343,7 @@ def _program(chain: Chain, what: str, gravity: Any) -> Program:
         H = _crba(W, links, bodies, poses)
         return Program((q,), _live(W.assigns, H), H, "H")
     zero = [S.Zero] * n
+    args: tuple[ImmutableMatrix, ...]
     if what == "gravity":
         args, u, a = (q,), zero, zero
     elif what == "coriolis":
@@ -419,7 +419,7 @@ def _crba(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any])
     for j in reversed(range(n)):
         k = j + 1
         b = bodies[j]
-        I_O = _inertia_about_origin(b)
+        I_O: Any = _inertia_about_origin(b)
         m, h = b.m, b.h
         if comp is not None:
             R, p = poses[j + 1]
@@ -452,7 +452,7 @@ def _crba(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any])
     return ImmutableMatrix(H)
 
 
-def _inertia_about_origin(b: _Body) -> tuple[Vec, Vec, Vec]:
+def _inertia_about_origin(b: _Body) -> Any:
     """``I_c - m [c]x^2 = I_c + m (c.c 1 - c c^T)``."""
     cc = _dot(b.c, b.c)
     return tuple(tuple(b.I[r][c] + b.m * ((cc if r == c else 0) - b.c[r] * b.c[c])  # type: ignore[misc]
