@@ -65,7 +65,7 @@ from sympy import (
     sympify,
 )
 
-from ..core.checks import check_choice
+from ..core.checks import check_choice, check_scalar
 from ..core.decide import is_zero_vector
 from ..core.twist import Twist
 from .displacement import exp6
@@ -170,7 +170,8 @@ class Program:
             val = list(val)
             if len(val) != len(arg):
                 raise ValueError(f"values[{k}]: expected {len(arg)} values, got {len(val)}")
-            env.update(zip(arg, map(sympify, val), strict=True))
+            env.update((x, check_scalar(v, f"values[{k}][{j}]"))
+                       for j, (x, v) in enumerate(zip(arg, val, strict=True)))
         for t, e in self.assignments:
             env[t] = e.xreplace(env)
         return self.outputs.xreplace(env)
@@ -200,7 +201,7 @@ class _Writer:
         self.taken = set(taken)
 
     def let(self, expr: Any, name: str) -> Expr:
-        e = sympify(expr)
+        e = sympify(expr, strict=True)
         if not e.args or (isinstance(e, Mul) and len(e.args) == 2 and e.args[0] == -1
                           and not e.args[1].args):
             return e
