@@ -18,6 +18,16 @@ Measured side by side in one process:
    modern_robotics' ``InverseDynamics`` called in a Python loop (timed on a subset, per
    state).  Target: at least 50x faster per state than ``rnea`` in a Python loop.
 
+3. Operation counts (``--counts-only`` runs this part alone): the inverse dynamics of
+   Corke's PUMA 560, the UR5 and the Panda (7 joints) as the customised Newton–Euler
+   program (``Chain.dynamics_program``, straight-line code) against the closed form
+   ``Chain.inverse_dynamics`` after ``sympy.cse`` (what the generated code computed
+   before), both counted by the same rule (``Program.operations``: a negation is free, a
+   constant coefficient one multiplication), beside the literature: ARM (Murray & Neuman's
+   customised symbolic Newton–Euler) 224 multiplications and 174 additions, the general
+   recursive Newton–Euler 852 / 738 (Corke's comparison table for the PUMA 560).  Target:
+   the PUMA 560 within 1.2x of ARM.  The closed form of the Panda is not built (minutes).
+
 Nothing here is asserted; the figures go to the report and ``benchmarks/README.md``.
 """
 
@@ -34,6 +44,7 @@ from sympy import ImmutableMatrix, Rational, count_ops, symbols
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))  # the UR5 data
 from _dynamics import mr_ur5_chain, mr_ur5_lists  # noqa: E402
+from _robots import panda, puma560  # noqa: E402
 
 from screwsym.numeric.dynamics import dynamics_functions  # noqa: E402
 
@@ -44,11 +55,48 @@ def timed(fn, *args):
     return out, time.perf_counter() - t0
 
 
+def _cse_operations(tau) -> tuple[int, int, int]:
+    from sympy import cse
+
+    from screwsym.motion.newton_euler import Program
+
+    replacements, reduced = cse(list(tau))
+    return Program((), tuple(replacements), ImmutableMatrix(reduced)).operations()
+
+
+def counts() -> None:
+    """The operation-count table (part 3 of the module docstring)."""
+    gravity = [0, 0, -Rational(981, 100)]
+    print("inverse dynamics, operations (multiplications / additions / functions)")
+    print(f"{'arm':<10} {'closed form + cse':>22} {'program':>18} {'build':>8} {'vs ARM 224/174':>16}")
+    for name, make, closed in (("PUMA 560", puma560, True), ("UR5", mr_ur5_chain, True),
+                               ("Panda (7)", panda, False)):
+        arm = make()
+        n = arm.n_joints
+        before = "not built"
+        if closed:
+            q, qd, qdd = (ImmutableMatrix(symbols(f"{s}1:{n + 1}", real=True)) for s in ("q", "qd", "qdd"))
+            t0 = time.process_time()
+            ops = _cse_operations(arm.inverse_dynamics(q, qd, qdd, gravity))
+            before = f"{ops[0]} / {ops[1]} / {ops[2]} ({time.process_time() - t0:.1f} s)"
+        t0 = time.process_time()
+        prog = arm.dynamics_program("inverse_dynamics", gravity)
+        t_prog = time.process_time() - t0
+        ops = prog.operations()
+        ratio = f"{ops[0] / 224:.2f}x / {ops[1] / 174:.2f}x" if name == "PUMA 560" else ""
+        print(f"{name:<10} {before:>22} {f'{ops[0]} / {ops[1]} / {ops[2]}':>18} {t_prog:>7.2f}s {ratio:>16}")
+    print("literature (PUMA 560, Corke's table): ARM 224 / 174; general recursive NE 852 / 738")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--n", type=int, default=100_000, help="states for the numeric part")
     parser.add_argument("--loop", type=int, default=2000, help="states for the Python loops")
+    parser.add_argument("--counts-only", action="store_true", help="the operation counts alone")
     args = parser.parse_args()
+    counts()
+    if args.counts_only:
+        return
 
     arm = mr_ur5_chain()
     q = ImmutableMatrix(symbols("q1:7", real=True))
@@ -75,6 +123,12 @@ def main() -> None:
                  f"first call {t_first:.2f} s"))
     rows.append((f"generated inverse dynamics, {args.n} states", f"{t_batch * 1e3:.1f} ms",
                  f"{per_ours * 1e9:.0f} ns/state"))
+    k1 = min(args.loop, args.n)
+    t0 = time.perf_counter()
+    for i in range(k1):
+        f(Q[i], QD[i], QDD[i])
+    per_call = (time.perf_counter() - t0) / k1
+    rows.append(("generated inverse dynamics, one state per call", f"{per_call * 1e6:.2f} us/call", ""))
 
     Mlist, Glist, Slist = mr_ur5_lists()
     import modern_robotics as mr
@@ -102,7 +156,8 @@ def main() -> None:
         per_pin = (time.perf_counter() - t0) / k
         err = np.abs(np.asarray(out).reshape(args.n, 6)[:k] - np.array(ref)).max()
         rows.append(("pinocchio rnea, Python loop", f"{per_pin * 1e6:.2f} us/state",
-                     f"ours {per_pin / per_ours:.1f}x faster (target >= 50x); max |diff| {err:.1e}"))
+                     f"ours {per_pin / per_ours:.1f}x faster (target >= 50x); max |diff| {err:.1e}; "
+                     f"one call of ours {per_call / per_pin:.1f}x pinocchio's"))
     width = max(len(r[0]) for r in rows)
     print(f"UR5 (Modern Robotics inertias), screwsym {__import__('screwsym').__version__}")
     for name, value, note in rows:

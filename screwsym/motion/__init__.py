@@ -9,6 +9,7 @@ from .conventions import CONVENTIONS, Convention, convert, convert_from
 from .displacement import exp6, log6, se3_matrix
 from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
 from .newton_euler import Operations, Program, dynamics_program
+from .parameters import BaseParameters, base_parameters, base_regressor, parameters, regressor_program
 from .transform import Transform, adjoint_matrix, skew
 
 __all__ = [
@@ -28,6 +29,11 @@ __all__ = [
     "dynamics_program",
     "Program",
     "Operations",
+    "parameters",
+    "base_parameters",
+    "base_regressor",
+    "regressor_program",
+    "BaseParameters",
     "convert",
     "convert_from",
     "CONVENTIONS",

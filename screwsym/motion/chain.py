@@ -62,6 +62,7 @@ from ..core.twist import Twist
 from . import _poe
 from . import dynamics as _dynamics
 from . import newton_euler as _newton_euler
+from . import parameters as _parameters
 from .dh import dh_twists_and_home
 from .displacement import exp6
 from .transform import Transform
@@ -380,6 +381,19 @@ class Chain(ScrewsymBasic):
                          gravity: Any = None) -> _newton_euler.Program:
         """A straight-line program (customised Newton–Euler): :func:`screwsym.motion.newton_euler.dynamics_program`."""
         return _newton_euler.dynamics_program(self, what, gravity)
+
+    def parameters(self, numbers: bool = False) -> ImmutableMatrix:
+        """The 10n standard inertial parameters (symbols, or the chain's numbers): :func:`screwsym.motion.parameters.parameters`."""
+        return _parameters.parameters(self, numbers)
+
+    def base_parameters(self, gravity: Any = None) -> ImmutableMatrix:
+        """The base parameters, exact linear combinations of :meth:`parameters`: :func:`screwsym.motion.parameters.base_parameters`."""
+        return _parameters.base_parameters(self, gravity).parameters
+
+    def base_regressor(self, q: JointValues, qd: JointValues, qdd: JointValues,
+                       gravity: Any = None) -> ImmutableMatrix:
+        """The n x b base regressor, ``base_regressor @ base_parameters == regressor @ parameters``: :func:`screwsym.motion.parameters.base_regressor`."""
+        return _parameters.base_regressor(self, q, qd, qdd, gravity)
 
     def _sympystr(self, printer: Any) -> str:
         twists = ", ".join(printer._print(t) for t in self.twists)

@@ -368,11 +368,9 @@ def _live(assigns: list[tuple[Symbol, Expr]], outputs: ImmutableMatrix) -> tuple
     return tuple(reversed(kept))
 
 
-def _rnea(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any],
-          qd: list[Expr], qdd: list[Expr], a0: Vec) -> ImmutableMatrix:
-    """Newton–Euler with each link's angular velocity ``w``, angular acceleration ``dw`` and
-    the acceleration ``a`` of its origin, in ``{i}`` (module docstring)."""
-    n = len(links)
+def _forward(W: _Writer, links: list[_Link], poses: list[Any], qd: Sequence[Expr],
+             qdd: Sequence[Expr], a0: Vec) -> list[tuple[Vec, Vec, Vec]]:
+    """Each link's ``(w, dw, a)`` in ``{i}``: angular velocity and acceleration, its origin's acceleration."""
     zero = (S.Zero, S.Zero, S.Zero)
     w, dw, a = zero, zero, a0
     motions = []
@@ -389,6 +387,16 @@ def _rnea(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any],
                    f"dw{k}")
         w = W.vec(_add(wr, _scale(qd[i], link.w)), f"w{k}")
         motions.append((w, dw, a))
+    return motions
+
+
+def _rnea(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any],
+          qd: list[Expr], qdd: list[Expr], a0: Vec) -> ImmutableMatrix:
+    """Newton–Euler with each link's angular velocity ``w``, angular acceleration ``dw`` and
+    the acceleration ``a`` of its origin, in ``{i}`` (module docstring)."""
+    n = len(links)
+    zero = (S.Zero, S.Zero, S.Zero)
+    motions = _forward(W, links, poses, qd, qdd, a0)
     tau: list[Expr] = [S.Zero] * n
     f, C = zero, zero
     for i in reversed(range(n)):

@@ -1,0 +1,364 @@
+r"""A chain's inertial parameters: the standard ten per link, and the base parameters, exactly.
+
+The joint torques are linear in the ten parameters of each link,
+``tau = Y(q, qd, qdd) pi`` (:func:`screwsym.motion.dynamics.regressor`, the columns in the
+order ``[m, mc_x, mc_y, mc_z, I_xx, I_xy, I_yy, I_xz, I_yz, I_zz]`` of each link, each in the
+link frame that coincides with the space frame at home, about its origin).  Not all ``10 n``
+are identifiable: some columns of ``Y`` vanish for every motion and others are fixed linear
+combinations of the rest.  The *base parameters* (Khalil & Gautier; Gautier 1991) are a
+smallest set of linear combinations ``beta = B pi`` with ``Y pi = Y_b beta`` for every
+state, ``Y_b`` the columns of ``Y`` at ``B``'s pivots.
+
+How they are found
+==================
+
+``B`` is the reduced row echelon form of ``Y`` stacked at exact random states
+(Gautier 1991's numeric QR, here exact): the states have rational ``cos q_i, sin q_i``
+(points ``((1 - t^2)/(1 + t^2), 2t/(1 + t^2))`` of the unit circle) and rational
+velocities, accelerations and gravity, and ``Y`` at each is computed exactly by the
+regressor's straight-line program (:func:`regressor_program`, Newton–Euler in the frames
+of :mod:`screwsym.motion.newton_euler`), so the arithmetic is over the rationals, or over
+the rational functions of the chain's own symbols where its geometry is symbolic (then
+the result is generic: it holds where the pivots found are not zero).  States are added
+until the rank has not grown for two batches.  A dependency among the columns that holds
+at the states but not identically would need every state to be a root of a non-zero
+polynomial of bounded degree, which random points avoid except with a negligible
+probability (Schwartz–Zippel); the tests check the identity ``Y pi == Y_b beta``
+symbolically on small chains and the number of base parameters against the numeric rank
+of pinocchio's regressor.  The pivots are the first independent columns in the standard
+order, so parameters are grouped onto the links nearer the base.
+
+References
+==========
+
+M. Gautier, "Numerical calculation of the base inertial parameters of robots",
+*J. Robotic Systems* 8(4), 1991.  W. Khalil, F. Bennis, "Symbolic calculation of the base
+inertial parameters of closed-loop robots", *Int. J. Robotics Research* 14(2), 1995.
+W. Khalil, E. Dombre, *Modeling, Identification and Control of Robots*, 2002, Ch. 12.
+"""
+
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+from sympy import Add, ImmutableMatrix, Rational, S, Symbol, cos, sin
+from sympy.polys.domains import GF, QQ
+from sympy.polys.matrices import DomainMatrix
+
+from ..core.checks import check_sequence
+from ..core.inertia import PARAMETER_NAMES
+from .dynamics import _gravity
+from .newton_euler import (
+    Program,
+    _add,
+    _col,
+    _cross,
+    _dot,
+    _forward,
+    _joint_pose,
+    _links,
+    _live,
+    _mat,
+    _Writer,
+)
+
+if TYPE_CHECKING:
+    from .chain import Chain
+
+__all__ = ["parameters", "regressor_program", "BaseParameters", "base_parameters", "base_regressor"]
+
+
+def parameters(chain: Chain, numbers: bool = False) -> ImmutableMatrix:
+    r"""The ``10 n`` standard inertial parameters, a column in the order of the regressor's columns.
+
+    Symbols ``m_i, mc_x_i, mc_y_i, mc_z_i, I_xx_i, I_xy_i, I_yy_i, I_xz_i, I_yz_i, I_zz_i`` for
+    link ``i = 1 .. n`` (real); with ``numbers=True`` the chain's own values
+    (``chain.inertias[i].parameters()``, which needs inertias).
+
+    >>> from screwsym import Chain, SpatialInertia, Twist
+    >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])],
+    ...             inertias=[SpatialInertia.point_mass(2, [1, 0, 0])])
+    >>> parameters(arm).T
+    Matrix([[m_1, mc_x_1, mc_y_1, mc_z_1, I_xx_1, I_xy_1, I_yy_1, I_xz_1, I_yz_1, I_zz_1]])
+    >>> parameters(arm, numbers=True).T
+    Matrix([[2, 2, 0, 0, 0, 0, 2, 0, 0, 2]])
+    """
+    if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
+        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
+    if numbers:
+        if chain.inertias is None:
+            raise ValueError("chain: the chain has no inertias, so no numbers for its parameters")
+        return ImmutableMatrix.vstack(*(b.parameters() for b in chain.inertias))
+    return ImmutableMatrix([Symbol(f"{name}_{i + 1}", real=True)
+                            for i in range(chain.n_joints) for name in PARAMETER_NAMES])
+
+
+def _link_parameters(pi: list[Symbol], o: Any) -> tuple[Any, Any, Any]:
+    """``(m, h, I)`` about ``o`` (frame parallel to the space frame) from the standard ten about the origin.
+
+    ``h' = h - m o``, ``I' = I + [h]x [o]x + [o]x [h]x - m [o]x^2`` (parallel axes, linear).
+    """
+    m, hx, hy, hz, xx, xy, yy, xz, yz, zz = pi
+    h = ImmutableMatrix([hx, hy, hz])
+    I = ImmutableMatrix([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+    o = ImmutableMatrix(o)
+
+    def skew(v: Any) -> ImmutableMatrix:
+        return ImmutableMatrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+
+    H, Oo = skew(h), skew(o)
+    I2 = (I + H * Oo + Oo * H - m * Oo * Oo).applyfunc(lambda x: x.expand())
+    return m, _col((h - m * o).applyfunc(lambda x: x.expand())), tuple(_col(I2[r, :].T) for r in range(3))
+
+
+def regressor_program(chain: Chain, gravity: Any = None) -> Program:
+    r"""The regressor ``Y(q, qd, qdd)`` (n x 10n) as a straight-line program (Newton–Euler).
+
+    The same matrix as :func:`screwsym.motion.dynamics.regressor` (the tests compare them):
+    for each link the wrench of each parameter, written in the frames of
+    :mod:`screwsym.motion.newton_euler` and carried down to the joints.  Only the chain's
+    kinematics enter.  Cached per chain and gravity.
+
+    >>> from sympy import symbols
+    >>> from screwsym import Chain, Twist
+    >>> hinge = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])])
+    >>> regressor_program(hinge, gravity=[0, 0, 0]).expressions()
+    Matrix([[0, 0, 0, 0, 0, 0, 0, 0, 0, qdd1]])
+    """
+    if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
+        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
+    return _regressor_program(chain, _gravity(gravity))
+
+
+@lru_cache(maxsize=32)
+def _regressor_program(chain: Chain, g: ImmutableMatrix) -> Program:
+    n = chain.n_joints
+    q, qd, qdd = (ImmutableMatrix([Symbol(f"{s}{i + 1}", real=True) for i in range(n)])
+                  for s in ("q", "qd", "qdd"))
+    pi = list(parameters(chain))
+    taken = {s.name for s in chain.free_symbols | g.free_symbols} | {
+        x.name for m in (q, qd, qdd) for x in m} | {p.name for p in pi}
+    W = _Writer(taken)
+    links, origins = _links(chain)
+    poses = [_joint_pose(W, link, q[i], i + 1) for i, link in enumerate(links)]
+    motions = _forward(W, links, poses, list(qd), list(qdd), _col(-g))
+    Y: list[list[Any]] = [[S.Zero] * (10 * n) for _ in range(n)]
+    for j in range(n):
+        w, dw, a = motions[j]
+        block = pi[10 * j:10 * j + 10]
+        m, h, I = _link_parameters(block, origins[j])
+        # the origin form: f = m a + dw x h + w x (w x h), C = I dw + w x (I w) + h x a
+        f = _add([m * x for x in a], _cross(dw, h), _cross(w, _cross(w, h)))
+        C = _add(_mat(I, dw), _cross(w, _mat(I, w)), _cross(h, a))
+        for k, p in enumerate(block):
+            col = 10 * j + k
+            fk = W.vec([x.expand().coeff(p) for x in f], f"Yf{j + 1}_{k}_")
+            Ck = W.vec([x.expand().coeff(p) for x in C], f"YC{j + 1}_{k}_")
+            for i in reversed(range(j + 1)):
+                if i < j:
+                    R, pp = poses[i + 1]
+                    fk = W.vec(_mat(R, fk), f"Yf{j + 1}_{k}_{i + 1}")
+                    Ck = W.vec(_add(_mat(R, Ck), _cross(pp, fk)), f"YC{j + 1}_{k}_{i + 1}")
+                Y[i][col] = W.let(_dot(links[i].w, Ck) + _dot(links[i].v, fk), f"Y{i + 1}_{col + 1}")
+    out = ImmutableMatrix(Y)
+    return Program((q, qd, qdd), _live(W.assigns, out), out, "Y")
+
+
+class BaseParameters(NamedTuple):
+    """``beta = B pi``: the base parameters, the pivots (columns of the regressor kept) and ``B``."""
+
+    #: the b base parameters, exact linear combinations of :func:`parameters`
+    parameters: ImmutableMatrix
+    #: the columns of the regressor that form the base regressor
+    columns: tuple[int, ...]
+    #: the b x 10n matrix ``B`` (reduced row echelon form), ``beta = B pi``
+    matrix: ImmutableMatrix
+
+
+def _state(rng: random.Random, program: Program, n: int, gsyms: list[Symbol]) -> dict[Any, Any]:
+    env: dict[Any, Any] = {}
+    q, qd, qdd = program.arguments
+    for i in range(n):
+        t = Rational(rng.randint(-6, 6), rng.randint(1, 4))
+        env[cos(q[i])] = (1 - t**2) / (1 + t**2)
+        env[sin(q[i])] = 2 * t / (1 + t**2)
+        env[q[i]] = Rational(rng.randint(-9, 9), rng.randint(1, 4))  # a prismatic joint's
+        env[qd[i]] = Rational(rng.randint(-9, 9))
+        env[qdd[i]] = Rational(rng.randint(-9, 9))
+    for s in gsyms:
+        env[s] = Rational(rng.randint(1, 40), rng.randint(1, 7))
+    return env
+
+
+def _rows(program: Program, env: dict[Any, Any]) -> list[list[Any]]:
+    """The outputs at ``env`` by substitution, assignment by assignment (any exact values)."""
+    values = dict(env)
+    for t, e in program.assignments:
+        values[t] = e.xreplace(values)
+    Y = program.outputs.xreplace(values)
+    return [list(Y.row(i)) for i in range(Y.rows)]
+
+
+def _rational_runner(program: Program, inputs: list[Any]) -> Any:
+    """The program as a Python function of ``inputs`` over ``Fraction``, or None.
+
+    For a program whose constants are all rational (a chain with rational geometry), this
+    is some hundred times faster than substitution.  Only numbers written as integers and
+    names ``x<k>`` enter the source (no user text): anything else gives None.
+    """
+    index = {s: k for k, s in enumerate(inputs)}
+    lines = []
+
+    def text(e: Any) -> str:
+        if e in index:
+            return f"x[{index[e]}]"
+        if e.is_Integer:
+            return f"({int(e)})"
+        if e.is_Rational:
+            return f"F({int(e.p)}, {int(e.q)})"
+        if isinstance(e, Add):
+            return "(" + " + ".join(text(a) for a in e.args) + ")"
+        if e.is_Mul:
+            return "(" + " * ".join(text(a) for a in e.args) + ")"
+        if e.is_Pow and e.exp.is_Integer and e.exp > 0:
+            return f"({text(e.base)} ** {int(e.exp)})"
+        raise _NotRational
+
+    size = len(inputs)
+    try:
+        for t, e in program.assignments:
+            if e.func in (sin, cos) and e in index:
+                index[t] = index[e]
+                continue
+            lines.append(f"    x.append({text(e)})")
+            index[t] = size
+            size += 1
+        out = ", ".join(text(e) for e in program.outputs)
+    except _NotRational:
+        return None
+    source = "def run(x):\n" + "\n".join(lines) + f"\n    return [{out}]\n"
+    namespace: dict[str, Any] = {"F": Fraction}
+    exec(compile(source, "<screwsym-regressor>", "exec"), namespace)  # noqa: S102 - ours, numbers only
+    return namespace["run"]
+
+
+class _NotRational(Exception):
+    pass
+
+
+def _check_joints(chain: Chain, program: Program) -> None:
+    q = program.arguments[0]
+    for t, e in program.assignments:
+        for f in e.atoms(sin, cos):
+            if f.args[0] not in set(q):
+                raise ValueError(f"chain: base_parameters needs unit-speed joints (|omega| = 1 "
+                                 f"or 0), got the function {f}")
+    for i, twist in enumerate(chain.twists):
+        w, v = twist.matrix[:3, :], twist.matrix[3:, :]
+        if w.dot(v) != 0 and any(x != 0 for x in w):
+            raise ValueError(f"twists[{i}]: base_parameters needs revolute or prismatic joints, "
+                             f"got a helical one ({twist})")
+
+
+#: a prime for the rank of the stacked regressor while states are added (the final
+#: echelon form is exact, over the rationals)
+PRIME = 2**61 - 1
+
+
+@lru_cache(maxsize=32)
+def _base(chain: Chain, gravity: ImmutableMatrix) -> BaseParameters:
+    n = chain.n_joints
+    program = _regressor_program(chain, gravity)
+    _check_joints(chain, program)
+    gsyms = sorted(gravity.free_symbols, key=str)
+    q, qd, qdd = program.arguments
+    inputs = [f(x) for x in q for f in (cos, sin)] + list(q) + list(qd) + list(qdd) + gsyms
+    run = _rational_runner(program, inputs)
+    rng = random.Random(3434)
+    rows: list[list[Any]] = []
+    rank, stable = -1, 0
+    batch = 10 + 2
+    while stable < 2:
+        for _ in range(batch):
+            env = _state(rng, program, n, gsyms)
+            if run is None:
+                rows.extend(_rows(program, env))
+            else:
+                flat = run([Fraction(int(env[x].p), int(env[x].q)) for x in inputs])
+                rows.extend([Rational(v.numerator, v.denominator)
+                             for v in flat[10 * n * i:10 * n * (i + 1)]] for i in range(n))
+        M = DomainMatrix.from_list_sympy(len(rows), 10 * n, rows)
+        if M.domain == QQ:  # the rank modulo a large prime, which is the rank but by chance
+            Mp = DomainMatrix.from_list([[_modp(x) for x in row] for row in rows],
+                                        GF(PRIME))
+            r = Mp.rank()
+        else:
+            r = M.rank()
+        stable = stable + 1 if r == rank else 0
+        rank, batch = r, 4
+    R, pivots = M.rref()
+    B = ImmutableMatrix(R.to_Matrix()[:len(pivots), :])
+    pi = parameters(chain)
+    beta = ImmutableMatrix([Add(*(B[k, j] * pi[j] for j in range(10 * n) if B[k, j] != 0))
+                            for k in range(len(pivots))])
+    return BaseParameters(beta, tuple(pivots), B)
+
+
+def _modp(x: Any) -> int:
+    x = Rational(x)
+    return int(x.p) * pow(int(x.q), -1, PRIME) % PRIME
+
+
+def base_parameters(chain: Chain, gravity: Any = None) -> BaseParameters:
+    r"""The base inertial parameters of the chain, exact (module docstring).
+
+    Returns :class:`BaseParameters` ``(parameters, columns, matrix)``: ``beta = B pi`` with
+    ``pi`` the standard parameters (:func:`parameters`), and ``Y pi = Y[:, columns] beta``
+    for every state.  ``gravity`` as for the regressor (a symbolic default ``(0, 0, -g)``:
+    the base parameters are those of any non-zero gravity along it).  Needs revolute and
+    prismatic joints with unit-speed twists.  Cached per chain and gravity.
+
+    A hinge about z identifies only ``I_zz``:
+
+    >>> from screwsym import Chain, Twist
+    >>> hinge = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])])
+    >>> base_parameters(hinge).parameters.T
+    Matrix([[I_zz_1]])
+
+    The planar 2R arm (hinges about z at ``x = 0`` and ``x = 1``, gravity along the axes) has
+    the four of Khalil & Dombre's grouping, ``ZZ1R``, ``ZZ2``, ``MX2``, ``MY2`` (here the
+    parameters are about the space origin: link 2's about its joint are
+    ``ZZ2 = I_zz_2 - 2 mc_x_2 + m_2`` and ``MX2 = mc_x_2 - m_2``, combinations of these):
+
+    >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+    ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])])
+    >>> base_parameters(arm).parameters.T
+    Matrix([[I_zz_1 + I_zz_2, -I_zz_2 + m_2, -I_zz_2 + mc_x_2, mc_y_2]])
+    """
+    if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
+        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
+    return _base(chain, _gravity(gravity))
+
+
+def base_regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None) -> ImmutableMatrix:
+    r"""The n x b base regressor ``Y_b``: ``Y_b beta == Y pi`` for every state (module docstring).
+
+    The columns of the regressor at :func:`base_parameters`' pivots, from the regressor's
+    program at ``q, qd, qdd`` (numbers or symbols; untidied).
+
+    >>> from sympy import symbols
+    >>> from screwsym import Chain, Twist
+    >>> q, qd, qdd = symbols("q qd qdd", real=True)
+    >>> hinge = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])])
+    >>> base_regressor(hinge, [q], [qd], [qdd])
+    Matrix([[qdd]])
+    """
+    base = base_parameters(chain, gravity)
+    n = chain.n_joints
+    values = [check_sequence(v, name, "joint values", n) for v, name in
+              ((q, "q"), (qd, "qd"), (qdd, "qdd"))]
+    Y = regressor_program(chain, gravity).evaluate(*values)
+    return ImmutableMatrix(Y.extract(list(range(n)), list(base.columns)))
