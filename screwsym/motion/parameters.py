@@ -251,7 +251,7 @@ class _NotRational(Exception):
 
 def _check_joints(chain: Chain, program: Program) -> None:
     q = program.arguments[0]
-    for t, e in program.assignments:
+    for _, e in program.assignments:
         for f in e.atoms(sin, cos):
             if f.args[0] not in set(q):
                 raise ValueError(f"chain: base_parameters needs unit-speed joints (|omega| = 1 "
