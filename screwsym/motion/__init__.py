@@ -8,13 +8,18 @@ from .chain import Chain, ur5
 from .conventions import CONVENTIONS, Convention, convert, convert_from
 from .displacement import exp6, log6, se3_matrix
 from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
-from .newton_euler import Operations, Program, dynamics_program
+from .newton_euler import (
+    Operations,
+    Program,
+    dynamics_program,
+    parameter_symbols,
+    regressor_program,
+)
 from .parameters import (
     BaseParameters,
     base_parameters,
     base_regressor,
     parameters,
-    regressor_program,
 )
 from .transform import Transform, adjoint_matrix, skew
 
@@ -39,6 +44,7 @@ __all__ = [
     "base_parameters",
     "base_regressor",
     "regressor_program",
+    "parameter_symbols",
     "BaseParameters",
     "convert",
     "convert_from",

@@ -48,6 +48,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 from sympy import (
@@ -65,16 +66,17 @@ from sympy import (
     sympify,
 )
 
-from ..core.checks import check_choice, check_scalar
+from ..core.checks import check_choice, check_scalar, check_vector
 from ..core.decide import is_zero_vector
+from ..core.inertia import PARAMETER_NAMES
 from ..core.twist import Twist
 from .displacement import exp6
-from .dynamics import _check_chain, _gravity
+from .dynamics import GRAVITY
 
 if TYPE_CHECKING:
     from .chain import Chain
 
-__all__ = ["Operations", "Program", "dynamics_program"]
+__all__ = ["Operations", "Program", "dynamics_program", "regressor_program", "parameter_symbols"]
 
 Vec = tuple[Expr, Expr, Expr]
 
@@ -328,6 +330,20 @@ def _joint_pose(W: _Writer, link: _Link, q: Expr, i: int) -> tuple[list[list[Exp
     return R, p
 
 
+def _gravity(gravity: Any) -> ImmutableMatrix:
+    return check_vector(GRAVITY if gravity is None else gravity, "gravity")
+
+
+def _check_chain(chain: Any) -> None:
+    if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
+        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
+    if chain.inertias is None:
+        raise ValueError(
+            "chain: the chain has no inertias; build it with Chain(twists, home, "
+            "inertias=[SpatialInertia(...), ...]) (one per link, in the space frame at home)"
+        )
+
+
 def _program(chain: Chain, what: str, gravity: Any) -> Program:
     _check_chain(chain)
     n = chain.n_joints
@@ -494,4 +510,82 @@ def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any 
     """
     what = check_choice(what, "what", WHAT)
     return _program(chain, what, gravity)
+
+
+def parameter_symbols(n: int) -> ImmutableMatrix:
+    """The symbols ``m_i, mc_x_i, ..., I_zz_i`` of links ``1 .. n``, a column (the regressor's order)."""
+    return ImmutableMatrix([Symbol(f"{name}_{i + 1}", real=True)
+                            for i in range(n) for name in PARAMETER_NAMES])
+
+
+def _link_parameters(pi: list[Symbol], o: Any) -> tuple[Any, Any, Any]:
+    """``(m, h, I)`` about ``o`` (frame parallel to the space frame) from the standard ten about the origin.
+
+    ``h' = h - m o``, ``I' = I + [h]x [o]x + [o]x [h]x - m [o]x^2`` (parallel axes, linear).
+    """
+    m, hx, hy, hz, xx, xy, yy, xz, yz, zz = pi
+    h = ImmutableMatrix([hx, hy, hz])
+    I = ImmutableMatrix([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+    o = ImmutableMatrix(o)
+
+    def skew(v: Any) -> ImmutableMatrix:
+        return ImmutableMatrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+
+    H, Oo = skew(h), skew(o)
+    I2 = (I + H * Oo + Oo * H - m * Oo * Oo).applyfunc(lambda x: x.expand())
+    return m, _col((h - m * o).applyfunc(lambda x: x.expand())), tuple(_col(I2[r, :].T) for r in range(3))
+
+
+def regressor_program(chain: Chain, gravity: Any = None) -> Program:
+    r"""The regressor ``Y(q, qd, qdd)`` (n x 10n) as a straight-line program (Newton–Euler).
+
+    The same matrix as :func:`screwsym.motion.dynamics.regressor` (the tests compare them):
+    for each link the wrench of each parameter, written in the frames of
+    :mod:`screwsym.motion.newton_euler` and carried down to the joints.  Only the chain's
+    kinematics enter.  Cached per chain and gravity.
+
+    >>> from sympy import symbols
+    >>> from screwsym import Chain, Twist
+    >>> hinge = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])])
+    >>> regressor_program(hinge, gravity=[0, 0, 0]).expressions()
+    Matrix([[0, 0, 0, 0, 0, 0, 0, 0, 0, qdd1]])
+    """
+    if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
+        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
+    return _regressor_program(chain, _gravity(gravity))
+
+
+@lru_cache(maxsize=32)
+def _regressor_program(chain: Chain, g: ImmutableMatrix) -> Program:
+    n = chain.n_joints
+    q, qd, qdd = (ImmutableMatrix([Symbol(f"{s}{i + 1}", real=True) for i in range(n)])
+                  for s in ("q", "qd", "qdd"))
+    pi = list(parameter_symbols(n))
+    taken = {s.name for s in chain.free_symbols | g.free_symbols} | {
+        x.name for m in (q, qd, qdd) for x in m} | {p.name for p in pi}
+    W = _Writer(taken)
+    links, origins = _links(chain)
+    poses = [_joint_pose(W, link, q[i], i + 1) for i, link in enumerate(links)]
+    motions = _forward(W, links, poses, list(qd), list(qdd), _col(-g))
+    Y: list[list[Any]] = [[S.Zero] * (10 * n) for _ in range(n)]
+    for j in range(n):
+        w, dw, a = motions[j]
+        block = pi[10 * j:10 * j + 10]
+        m, h, I = _link_parameters(block, origins[j])
+        # the origin form: f = m a + dw x h + w x (w x h), C = I dw + w x (I w) + h x a
+        f = _add([m * x for x in a], _cross(dw, h), _cross(w, _cross(w, h)))
+        C = _add(_mat(I, dw), _cross(w, _mat(I, w)), _cross(h, a))
+        for k, p in enumerate(block):
+            col = 10 * j + k
+            fk = W.vec([x.expand().coeff(p) for x in f], f"Yf{j + 1}_{k}_")
+            Ck = W.vec([x.expand().coeff(p) for x in C], f"YC{j + 1}_{k}_")
+            for i in reversed(range(j + 1)):
+                if i < j:
+                    R, pp = poses[i + 1]
+                    fk = W.vec(_mat(R, fk), f"Yf{j + 1}_{k}_{i + 1}")
+                    Ck = W.vec(_add(_mat(R, Ck), _cross(pp, fk)), f"YC{j + 1}_{k}_{i + 1}")
+                Y[i][col] = W.let(_dot(links[i].w, Ck) + _dot(links[i].v, fk), f"Y{i + 1}_{col + 1}")
+    out = ImmutableMatrix(Y)
+    return Program((q, qd, qdd), _live(W.assigns, out), out, "Y")
+
 

@@ -44,31 +44,18 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from sympy import Add, ImmutableMatrix, Rational, S, Symbol, cos, sin
+from sympy import Add, ImmutableMatrix, Rational, Symbol, cos, sin
 from sympy.polys.domains import GF, QQ
 from sympy.polys.matrices import DomainMatrix
 
-from ..core.checks import check_sequence
-from ..core.inertia import PARAMETER_NAMES
-from .dynamics import _gravity
-from .newton_euler import (
-    Program,
-    _add,
-    _col,
-    _cross,
-    _dot,
-    _forward,
-    _joint_pose,
-    _links,
-    _live,
-    _mat,
-    _Writer,
-)
+from ..core.checks import check_sequence, check_vector
+from .dynamics import GRAVITY
+from .newton_euler import Program, parameter_symbols, regressor_program
 
 if TYPE_CHECKING:
     from .chain import Chain
 
-__all__ = ["parameters", "regressor_program", "BaseParameters", "base_parameters", "base_regressor"]
+__all__ = ["parameters", "BaseParameters", "base_parameters", "base_regressor"]
 
 
 def parameters(chain: Chain, numbers: bool = False) -> ImmutableMatrix:
@@ -92,79 +79,7 @@ def parameters(chain: Chain, numbers: bool = False) -> ImmutableMatrix:
         if chain.inertias is None:
             raise ValueError("chain: the chain has no inertias, so no numbers for its parameters")
         return ImmutableMatrix.vstack(*(b.parameters() for b in chain.inertias))
-    return ImmutableMatrix([Symbol(f"{name}_{i + 1}", real=True)
-                            for i in range(chain.n_joints) for name in PARAMETER_NAMES])
-
-
-def _link_parameters(pi: list[Symbol], o: Any) -> tuple[Any, Any, Any]:
-    """``(m, h, I)`` about ``o`` (frame parallel to the space frame) from the standard ten about the origin.
-
-    ``h' = h - m o``, ``I' = I + [h]x [o]x + [o]x [h]x - m [o]x^2`` (parallel axes, linear).
-    """
-    m, hx, hy, hz, xx, xy, yy, xz, yz, zz = pi
-    h = ImmutableMatrix([hx, hy, hz])
-    I = ImmutableMatrix([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
-    o = ImmutableMatrix(o)
-
-    def skew(v: Any) -> ImmutableMatrix:
-        return ImmutableMatrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
-
-    H, Oo = skew(h), skew(o)
-    I2 = (I + H * Oo + Oo * H - m * Oo * Oo).applyfunc(lambda x: x.expand())
-    return m, _col((h - m * o).applyfunc(lambda x: x.expand())), tuple(_col(I2[r, :].T) for r in range(3))
-
-
-def regressor_program(chain: Chain, gravity: Any = None) -> Program:
-    r"""The regressor ``Y(q, qd, qdd)`` (n x 10n) as a straight-line program (Newton–Euler).
-
-    The same matrix as :func:`screwsym.motion.dynamics.regressor` (the tests compare them):
-    for each link the wrench of each parameter, written in the frames of
-    :mod:`screwsym.motion.newton_euler` and carried down to the joints.  Only the chain's
-    kinematics enter.  Cached per chain and gravity.
-
-    >>> from sympy import symbols
-    >>> from screwsym import Chain, Twist
-    >>> hinge = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])])
-    >>> regressor_program(hinge, gravity=[0, 0, 0]).expressions()
-    Matrix([[0, 0, 0, 0, 0, 0, 0, 0, 0, qdd1]])
-    """
-    if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
-        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
-    return _regressor_program(chain, _gravity(gravity))
-
-
-@lru_cache(maxsize=32)
-def _regressor_program(chain: Chain, g: ImmutableMatrix) -> Program:
-    n = chain.n_joints
-    q, qd, qdd = (ImmutableMatrix([Symbol(f"{s}{i + 1}", real=True) for i in range(n)])
-                  for s in ("q", "qd", "qdd"))
-    pi = list(parameters(chain))
-    taken = {s.name for s in chain.free_symbols | g.free_symbols} | {
-        x.name for m in (q, qd, qdd) for x in m} | {p.name for p in pi}
-    W = _Writer(taken)
-    links, origins = _links(chain)
-    poses = [_joint_pose(W, link, q[i], i + 1) for i, link in enumerate(links)]
-    motions = _forward(W, links, poses, list(qd), list(qdd), _col(-g))
-    Y: list[list[Any]] = [[S.Zero] * (10 * n) for _ in range(n)]
-    for j in range(n):
-        w, dw, a = motions[j]
-        block = pi[10 * j:10 * j + 10]
-        m, h, I = _link_parameters(block, origins[j])
-        # the origin form: f = m a + dw x h + w x (w x h), C = I dw + w x (I w) + h x a
-        f = _add([m * x for x in a], _cross(dw, h), _cross(w, _cross(w, h)))
-        C = _add(_mat(I, dw), _cross(w, _mat(I, w)), _cross(h, a))
-        for k, p in enumerate(block):
-            col = 10 * j + k
-            fk = W.vec([x.expand().coeff(p) for x in f], f"Yf{j + 1}_{k}_")
-            Ck = W.vec([x.expand().coeff(p) for x in C], f"YC{j + 1}_{k}_")
-            for i in reversed(range(j + 1)):
-                if i < j:
-                    R, pp = poses[i + 1]
-                    fk = W.vec(_mat(R, fk), f"Yf{j + 1}_{k}_{i + 1}")
-                    Ck = W.vec(_add(_mat(R, Ck), _cross(pp, fk)), f"YC{j + 1}_{k}_{i + 1}")
-                Y[i][col] = W.let(_dot(links[i].w, Ck) + _dot(links[i].v, fk), f"Y{i + 1}_{col + 1}")
-    out = ImmutableMatrix(Y)
-    return Program((q, qd, qdd), _live(W.assigns, out), out, "Y")
+    return parameter_symbols(chain.n_joints)
 
 
 class BaseParameters(NamedTuple):
@@ -205,44 +120,56 @@ def _rows(program: Program, env: dict[Any, Any]) -> list[list[Any]]:
 def _rational_runner(program: Program, inputs: list[Any]) -> Any:
     """The program as a Python function of ``inputs`` over ``Fraction``, or None.
 
-    For a program whose constants are all rational (a chain with rational geometry), this
-    is some hundred times faster than substitution.  Only numbers written as integers and
-    names ``x<k>`` enter the source (no user text): anything else gives None.
+    For a program whose constants are all rational (a chain with rational geometry), each
+    expression becomes a closure over ``Fraction`` arithmetic: some hundred times faster
+    than substitution.  Anything but sums, products, integer powers, rationals and the
+    inputs gives None (then substitution is used).
     """
     index = {s: k for k, s in enumerate(inputs)}
-    lines = []
 
-    def text(e: Any) -> str:
+    def build(e: Any) -> Any:
         if e in index:
-            return f"x[{index[e]}]"
-        if e.is_Integer:
-            return f"({int(e)})"
+            k = index[e]
+            return lambda x: x[k]
         if e.is_Rational:
-            return f"F({int(e.p)}, {int(e.q)})"
-        if isinstance(e, Add):
-            return "(" + " + ".join(text(a) for a in e.args) + ")"
-        if e.is_Mul:
-            return "(" + " * ".join(text(a) for a in e.args) + ")"
+            c = Fraction(int(e.p), int(e.q))
+            return lambda x: c
+        if isinstance(e, Add) or e.is_Mul:
+            fs = [build(a) for a in e.args]
+            if isinstance(e, Add):
+                return lambda x: sum(f(x) for f in fs)
+
+            def product(x: Any) -> Any:
+                v = fs[0](x)
+                for f in fs[1:]:
+                    v = v * f(x)
+                return v
+            return product
         if e.is_Pow and e.exp.is_Integer and e.exp > 0:
-            return f"({text(e.base)} ** {int(e.exp)})"
+            f, k = build(e.base), int(e.exp)
+            return lambda x: f(x) ** k
         raise _NotRational
 
     size = len(inputs)
+    steps = []
     try:
         for t, e in program.assignments:
             if e.func in (sin, cos) and e in index:
                 index[t] = index[e]
                 continue
-            lines.append(f"    x.append({text(e)})")
+            steps.append(build(e))
             index[t] = size
             size += 1
-        out = ", ".join(text(e) for e in program.outputs)
+        outs = [build(e) for e in program.outputs]
     except _NotRational:
         return None
-    source = "def run(x):\n" + "\n".join(lines) + f"\n    return [{out}]\n"
-    namespace: dict[str, Any] = {"F": Fraction}
-    exec(compile(source, "<screwsym-regressor>", "exec"), namespace)  # noqa: S102 - ours, numbers only
-    return namespace["run"]
+
+    def run(x: list[Any]) -> list[Any]:
+        x = list(x)
+        for f in steps:
+            x.append(f(x))
+        return [f(x) for f in outs]
+    return run
 
 
 class _NotRational(Exception):
@@ -271,7 +198,7 @@ PRIME = 2**61 - 1
 @lru_cache(maxsize=32)
 def _base(chain: Chain, gravity: ImmutableMatrix) -> BaseParameters:
     n = chain.n_joints
-    program = _regressor_program(chain, gravity)
+    program = regressor_program(chain, gravity)
     _check_joints(chain, program)
     gsyms = sorted(gravity.free_symbols, key=str)
     q, qd, qdd = program.arguments
@@ -340,7 +267,7 @@ def base_parameters(chain: Chain, gravity: Any = None) -> BaseParameters:
     """
     if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
         raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
-    return _base(chain, _gravity(gravity))
+    return _base(chain, check_vector(GRAVITY if gravity is None else gravity, "gravity"))
 
 
 def base_regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None) -> ImmutableMatrix:
