@@ -382,18 +382,18 @@ class Chain(ScrewsymBasic):
         """A straight-line program (customised Newton–Euler): :func:`screwsym.motion.newton_euler.dynamics_program`."""
         return _newton_euler.dynamics_program(self, what, gravity)
 
-    def parameters(self, numbers: bool = False) -> ImmutableMatrix:
+    def parameters(self, numbers: bool = False, extras: Sequence[str] = ()) -> ImmutableMatrix:
         """The 10n standard inertial parameters (symbols, or the chain's numbers): :func:`screwsym.motion.parameters.parameters`."""
-        return _parameters.parameters(self, numbers)
+        return _parameters.parameters(self, numbers, extras)
 
-    def base_parameters(self, gravity: Any = None) -> ImmutableMatrix:
+    def base_parameters(self, gravity: Any = None, extras: Sequence[str] = ()) -> ImmutableMatrix:
         """The base parameters, exact linear combinations of :meth:`parameters`: :func:`screwsym.motion.parameters.base_parameters`."""
-        return _parameters.base_parameters(self, gravity).parameters
+        return _parameters.base_parameters(self, gravity, extras).parameters
 
     def base_regressor(self, q: JointValues, qd: JointValues, qdd: JointValues,
-                       gravity: Any = None) -> ImmutableMatrix:
+                       gravity: Any = None, extras: Sequence[str] = ()) -> ImmutableMatrix:
         """The n x b base regressor, ``base_regressor @ base_parameters == regressor @ parameters``: :func:`screwsym.motion.parameters.base_regressor`."""
-        return _parameters.base_regressor(self, q, qd, qdd, gravity)
+        return _parameters.base_regressor(self, q, qd, qdd, gravity, extras)
 
     def _sympystr(self, printer: Any) -> str:
         twists = ", ".join(printer._print(t) for t in self.twists)

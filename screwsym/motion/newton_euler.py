@@ -62,11 +62,12 @@ from sympy import (
     S,
     Symbol,
     cos,
+    sign,
     sin,
     sympify,
 )
 
-from ..core.checks import check_choice, check_scalar, check_vector
+from ..core.checks import check_choice, check_scalar, check_sequence, check_vector
 from ..core.decide import is_zero_vector
 from ..core.inertia import PARAMETER_NAMES
 from ..core.twist import Twist
@@ -487,7 +488,8 @@ def _inertia_about_origin(b: _Body) -> Any:
 WHAT = ("inverse_dynamics", "mass_matrix", "gravity", "coriolis", "bias")
 
 
-def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any = None) -> Program:
+def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any = None, *,
+                     armature: Any = None, viscous: Any = None, coulomb: Any = None) -> Program:
     r"""The chain's dynamics as a straight-line :class:`Program` (customised Newton–Euler).
 
     ``what`` is ``"inverse_dynamics"`` (``tau(q, qd, qdd)``, arguments ``q, qd, qdd``),
@@ -509,13 +511,57 @@ def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any 
     [  cos(q2) + 1,           1]])
     """
     what = check_choice(what, "what", WHAT)
-    return _program(chain, what, gravity)
+    p = _program(chain, what, gravity)
+    n = chain.n_joints
+    terms = {name: None if v is None else [check_scalar(x, f"{name}[{i}]") for i, x in
+                                           enumerate(check_sequence(v, name, "joint values", n))]
+             for name, v in (("armature", armature), ("viscous", viscous), ("coulomb", coulomb))}
+    if all(v is None for v in terms.values()):
+        return p
+    out = p.outputs.as_mutable()
+    if what == "mass_matrix":
+        for i in range(n):
+            out[i, i] += (terms["armature"] or [0] * n)[i]
+        return Program(p.arguments, p.assignments, ImmutableMatrix(out), p.name)
+    if what in ("inverse_dynamics", "bias"):
+        qd = p.arguments[1]
+        for i in range(n):
+            if terms["armature"] and what == "inverse_dynamics":
+                out[i] += terms["armature"][i] * p.arguments[2][i]
+            if terms["viscous"]:
+                out[i] += terms["viscous"][i] * qd[i]
+            if terms["coulomb"]:
+                out[i] += terms["coulomb"][i] * sign(qd[i])
+    return Program(p.arguments, p.assignments, ImmutableMatrix(out), p.name)
 
 
-def parameter_symbols(n: int) -> ImmutableMatrix:
-    """The symbols ``m_i, mc_x_i, ..., I_zz_i`` of links ``1 .. n``, a column (the regressor's order)."""
+#: the optional joint terms: rotor inertia ``Ia qdd``, viscous ``Fv qd`` and Coulomb ``Fc sign(qd)``
+#: friction (SYMORO's ``IA``, ``FV``, ``FS``; pinocchio's ``armature`` and friction)
+EXTRAS = {"armature": "Ia", "viscous": "Fv", "coulomb": "Fc"}
+
+
+def _extras(extras: Any) -> tuple[str, ...]:
+    if isinstance(extras, str) or not isinstance(extras, (list, tuple)):
+        raise TypeError(f"extras: expected a list of names among {list(EXTRAS)}, got {extras!r}")
+    for e in extras:
+        check_choice(e, "extras", tuple(EXTRAS))
+    return tuple(e for e in EXTRAS if e in extras)
+
+
+def parameter_symbols(n: int, extras: Sequence[str] = ()) -> ImmutableMatrix:
+    """The symbols ``m_i, mc_x_i, ..., I_zz_i`` of links ``1 .. n``, a column (the regressor's order).
+
+    With ``extras`` (names among ``"armature", "viscous", "coulomb"``), then ``Ia_i``,
+    ``Fv_i``, ``Fc_i`` of each joint in turn, after the ``10 n``.
+
+    >>> parameter_symbols(1, ["viscous"]).T
+    Matrix([[m_1, mc_x_1, mc_y_1, mc_z_1, I_xx_1, I_xy_1, I_yy_1, I_xz_1, I_yz_1, I_zz_1, Fv_1]])
+    """
+    chosen = _extras(extras)
     return ImmutableMatrix([Symbol(f"{name}_{i + 1}", real=True)
-                            for i in range(n) for name in PARAMETER_NAMES])
+                            for i in range(n) for name in PARAMETER_NAMES]
+                           + [Symbol(f"{EXTRAS[e]}_{i + 1}", real=True)
+                              for i in range(n) for e in chosen])
 
 
 def _link_parameters(pi: list[Symbol], o: Any) -> tuple[Any, Any, Any]:
@@ -536,13 +582,15 @@ def _link_parameters(pi: list[Symbol], o: Any) -> tuple[Any, Any, Any]:
     return m, _col((h - m * o).applyfunc(lambda x: x.expand())), tuple(_col(I2[r, :].T) for r in range(3))
 
 
-def regressor_program(chain: Chain, gravity: Any = None) -> Program:
+def regressor_program(chain: Chain, gravity: Any = None, extras: Sequence[str] = ()) -> Program:
     r"""The regressor ``Y(q, qd, qdd)`` (n x 10n) as a straight-line program (Newton–Euler).
 
     The same matrix as :func:`screwsym.motion.dynamics.regressor` (the tests compare them):
     for each link the wrench of each parameter, written in the frames of
     :mod:`screwsym.motion.newton_euler` and carried down to the joints.  Only the chain's
-    kinematics enter.  Cached per chain and gravity.
+    kinematics enter.  With ``extras`` (among ``"armature", "viscous", "coulomb"``), the
+    columns ``qdd_i``, ``qd_i``, ``sign(qd_i)`` of the joints' rotor inertia and friction
+    follow, in the order of :func:`parameter_symbols`.  Cached per chain, gravity and extras.
 
     >>> from sympy import symbols
     >>> from screwsym import Chain, Twist
@@ -552,15 +600,15 @@ def regressor_program(chain: Chain, gravity: Any = None) -> Program:
     """
     if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
         raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
-    return _regressor_program(chain, _gravity(gravity))
+    return _regressor_program(chain, _gravity(gravity), _extras(extras))
 
 
 @lru_cache(maxsize=32)
-def _regressor_program(chain: Chain, g: ImmutableMatrix) -> Program:
+def _regressor_program(chain: Chain, g: ImmutableMatrix, extras: tuple[str, ...]) -> Program:
     n = chain.n_joints
     q, qd, qdd = (ImmutableMatrix([Symbol(f"{s}{i + 1}", real=True) for i in range(n)])
                   for s in ("q", "qd", "qdd"))
-    pi = list(parameter_symbols(n))
+    pi = list(parameter_symbols(n, extras))
     taken = {s.name for s in chain.free_symbols | g.free_symbols} | {
         x.name for m in (q, qd, qdd) for x in m} | {p.name for p in pi}
     W = _Writer(taken)
@@ -585,6 +633,9 @@ def _regressor_program(chain: Chain, g: ImmutableMatrix) -> Program:
                     fk = W.vec(_mat(R, fk), f"Yf{j + 1}_{k}_{i + 1}")
                     Ck = W.vec(_add(_mat(R, Ck), _cross(pp, fk)), f"YC{j + 1}_{k}_{i + 1}")
                 Y[i][col] = W.let(_dot(links[i].w, Ck) + _dot(links[i].v, fk), f"Y{i + 1}_{col + 1}")
+    term = {"armature": lambda i: qdd[i], "viscous": lambda i: qd[i], "coulomb": lambda i: sign(qd[i])}
+    for i in range(n):
+        Y[i].extend(term[e](i) if j == i else S.Zero for j in range(n) for e in extras)
     out = ImmutableMatrix(Y)
     return Program((q, qd, qdd), _live(W.assigns, out), out, "Y")
 

@@ -44,13 +44,13 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from sympy import Add, ImmutableMatrix, Rational, Symbol, cos, sin
+from sympy import Add, ImmutableMatrix, Rational, Symbol, cos, sign, sin
 from sympy.polys.domains import GF, QQ
 from sympy.polys.matrices import DomainMatrix
 
 from ..core.checks import check_sequence, check_vector
 from .dynamics import GRAVITY
-from .newton_euler import Program, parameter_symbols, regressor_program
+from .newton_euler import EXTRAS, Program, parameter_symbols, regressor_program
 
 if TYPE_CHECKING:
     from .chain import Chain
@@ -58,12 +58,14 @@ if TYPE_CHECKING:
 __all__ = ["parameters", "BaseParameters", "base_parameters", "base_regressor"]
 
 
-def parameters(chain: Chain, numbers: bool = False) -> ImmutableMatrix:
+def parameters(chain: Chain, numbers: bool = False, extras: Any = ()) -> ImmutableMatrix:
     r"""The ``10 n`` standard inertial parameters, a column in the order of the regressor's columns.
 
     Symbols ``m_i, mc_x_i, mc_y_i, mc_z_i, I_xx_i, I_xy_i, I_yy_i, I_xz_i, I_yz_i, I_zz_i`` for
     link ``i = 1 .. n`` (real); with ``numbers=True`` the chain's own values
-    (``chain.inertias[i].parameters()``, which needs inertias).
+    (``chain.inertias[i].parameters()``, which needs inertias).  ``extras`` (names among
+    ``"armature", "viscous", "coulomb"``) appends the joints' ``Ia_i, Fv_i, Fc_i``
+    (:func:`screwsym.motion.newton_euler.parameter_symbols`; symbols only).
 
     >>> from screwsym import Chain, SpatialInertia, Twist
     >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])],
@@ -76,10 +78,12 @@ def parameters(chain: Chain, numbers: bool = False) -> ImmutableMatrix:
     if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
         raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
     if numbers:
+        if extras:
+            raise ValueError("extras: the chain has no numbers for its joints' friction and rotor inertia")
         if chain.inertias is None:
             raise ValueError("chain: the chain has no inertias, so no numbers for its parameters")
         return ImmutableMatrix.vstack(*(b.parameters() for b in chain.inertias))
-    return parameter_symbols(chain.n_joints)
+    return parameter_symbols(chain.n_joints, extras)
 
 
 class BaseParameters(NamedTuple):
@@ -145,6 +149,9 @@ def _rational_runner(program: Program, inputs: list[Any]) -> Any:
                     v = v * f(x)
                 return v
             return product
+        if e.func is sign:
+            g = build(e.args[0])
+            return lambda x: (g(x) > 0) - (g(x) < 0)
         if e.is_Pow and e.exp.is_Integer and e.exp > 0:
             f, k = build(e.base), int(e.exp)
             return lambda x: f(x) ** k
@@ -196,9 +203,10 @@ PRIME = 2**61 - 1
 
 
 @lru_cache(maxsize=32)
-def _base(chain: Chain, gravity: ImmutableMatrix) -> BaseParameters:
+def _base(chain: Chain, gravity: ImmutableMatrix, extras: tuple[str, ...]) -> BaseParameters:
     n = chain.n_joints
-    program = regressor_program(chain, gravity)
+    program = regressor_program(chain, gravity, extras)
+    cols = program.outputs.cols
     _check_joints(chain, program)
     gsyms = sorted(gravity.free_symbols, key=str)
     q, qd, qdd = program.arguments
@@ -216,8 +224,8 @@ def _base(chain: Chain, gravity: ImmutableMatrix) -> BaseParameters:
             else:
                 flat = run([Fraction(int(env[x].p), int(env[x].q)) for x in inputs])
                 rows.extend([Rational(v.numerator, v.denominator)
-                             for v in flat[10 * n * i:10 * n * (i + 1)]] for i in range(n))
-        M = DomainMatrix.from_list_sympy(len(rows), 10 * n, rows)
+                             for v in flat[cols * i:cols * (i + 1)]] for i in range(n))
+        M = DomainMatrix.from_list_sympy(len(rows), cols, rows)
         if M.domain == QQ:  # the rank modulo a large prime, which is the rank but by chance
             Mp = DomainMatrix.from_list([[_modp(x) for x in row] for row in rows],
                                         GF(PRIME))
@@ -228,8 +236,8 @@ def _base(chain: Chain, gravity: ImmutableMatrix) -> BaseParameters:
         rank, batch = r, 4
     R, pivots = M.rref()
     B = ImmutableMatrix(R.to_Matrix()[:len(pivots), :])
-    pi = parameters(chain)
-    beta = ImmutableMatrix([Add(*(B[k, j] * pi[j] for j in range(10 * n) if B[k, j] != 0))
+    pi = parameters(chain, extras=extras)
+    beta = ImmutableMatrix([Add(*(B[k, j] * pi[j] for j in range(cols) if B[k, j] != 0))
                             for k in range(len(pivots))])
     return BaseParameters(beta, tuple(pivots), B)
 
@@ -239,12 +247,13 @@ def _modp(x: Any) -> int:
     return int(x.p) * pow(int(x.q), -1, PRIME) % PRIME
 
 
-def base_parameters(chain: Chain, gravity: Any = None) -> BaseParameters:
+def base_parameters(chain: Chain, gravity: Any = None, extras: Any = ()) -> BaseParameters:
     r"""The base inertial parameters of the chain, exact (module docstring).
 
     Returns :class:`BaseParameters` ``(parameters, columns, matrix)``: ``beta = B pi`` with
     ``pi`` the standard parameters (:func:`parameters`), and ``Y pi = Y[:, columns] beta``
-    for every state.  ``gravity`` as for the regressor (a symbolic default ``(0, 0, -g)``:
+    for every state (with ``extras``, the joints' rotor inertia and friction parameters
+    too: :func:`screwsym.motion.newton_euler.regressor_program`).  ``gravity`` as for the regressor (a symbolic default ``(0, 0, -g)``:
     the base parameters are those of any non-zero gravity along it).  Needs revolute and
     prismatic joints with unit-speed twists.  Cached per chain and gravity.
 
@@ -267,10 +276,13 @@ def base_parameters(chain: Chain, gravity: Any = None) -> BaseParameters:
     """
     if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
         raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
-    return _base(chain, check_vector(GRAVITY if gravity is None else gravity, "gravity"))
+    parameter_symbols(0, extras)  # checks the names
+    chosen = tuple(e for e in EXTRAS if e in extras)
+    return _base(chain, check_vector(GRAVITY if gravity is None else gravity, "gravity"), chosen)
 
 
-def base_regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None) -> ImmutableMatrix:
+def base_regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None,
+                   extras: Any = ()) -> ImmutableMatrix:
     r"""The n x b base regressor ``Y_b``: ``Y_b beta == Y pi`` for every state (module docstring).
 
     The columns of the regressor at :func:`base_parameters`' pivots, from the regressor's
@@ -283,9 +295,9 @@ def base_regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None)
     >>> base_regressor(hinge, [q], [qd], [qdd])
     Matrix([[qdd]])
     """
-    base = base_parameters(chain, gravity)
+    base = base_parameters(chain, gravity, extras)
     n = chain.n_joints
     values = [check_sequence(v, name, "joint values", n) for v, name in
               ((q, "q"), (qd, "qd"), (qdd, "qdd"))]
-    Y = regressor_program(chain, gravity).evaluate(*values)
+    Y = regressor_program(chain, gravity, extras).evaluate(*values)
     return ImmutableMatrix(Y.extract(list(range(n)), list(base.columns)))

@@ -156,3 +156,27 @@ def test_generated_code_follows_the_program():
     p = dynamics_program(mr_ur5_chain(), gravity=G)
     src = c_source(list(p.arguments), p, names=["q", "qd", "qdd"])
     assert "fb6" not in src and src.count("= ") >= len(p.assignments)
+
+
+def test_armature_and_friction_terms_against_pinocchio():
+    pin = pytest.importorskip("pinocchio")
+    chain = mr_ur5_chain()
+    Ia = [Rational(k, 10) for k in range(1, 7)]
+    Fv, Fc = [Rational(1, 2)] * 6, [Rational(1, 3)] * 6
+    model = pin_model(pin, chain, G)
+    model.armature = np.array([float(x) for x in Ia])
+    data = model.createData()
+    tau = lambdify(list(dynamics_program(chain).arguments[:3]),
+                   dynamics_program(chain, gravity=G, armature=Ia, viscous=Fv, coulomb=Fc), "numpy")
+    H = lambdify(list(dynamics_program(chain, "mass_matrix").arguments),
+                 dynamics_program(chain, "mass_matrix", armature=Ia), "numpy")
+    rng = np.random.default_rng(35)
+    q, qd, qdd = rng.uniform(-2, 2, size=(3, 6))
+    friction = 0.5 * qd + np.sign(qd) / 3
+    np.testing.assert_allclose(tau(q, qd, qdd), pin.rnea(model, data, q, qd, qdd) + friction,
+                               rtol=1e-9, atol=1e-9)
+    M = np.triu(pin.crba(model, data, q))
+    np.testing.assert_allclose(H(q), M + np.triu(M, 1).T, rtol=1e-9, atol=1e-9)
+    assert not np.allclose(tau(q, qd, qdd), pin.rnea(model, data, q, qd, qdd), rtol=1e-6)
+    with pytest.raises(ValueError, match="viscous"):
+        dynamics_program(chain, viscous=[1, 2])

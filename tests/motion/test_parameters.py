@@ -133,3 +133,26 @@ def test_base_parameter_count_is_pinocchios_rank(name):
         # and the torques are pinocchio's
         tau = pin.rnea(model, data, *s)
         assert np.allclose(Y @ pi, tau, rtol=1e-8, atol=1e-8)
+
+
+def test_rotor_inertia_and_friction_as_parameters():
+    """SYMORO's IA, FV, FS: the armature of joint 1 (axis fixed) groups with its I_zz."""
+    arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+                 Twist.rotation([0, 0, 1], point=[1, 0, 0])])
+    beta = arm.base_parameters(extras=["armature", "viscous", "coulomb"])
+    Ia1, Fv1, Fc1, Ia2, Fv2, Fc2, zz1, zz2 = symbols("Ia_1 Fv_1 Fc_1 Ia_2 Fv_2 Fc_2 I_zz_1 I_zz_2",
+                                                      real=True)
+    assert beta[0] == zz1 + zz2 + Ia1
+    assert {Fv1, Fc1, Ia2, Fv2, Fc2} <= set(beta)
+    assert len(beta) == 4 + 5
+    assert _identity_holds_with(arm, ["armature", "viscous", "coulomb"])
+    with pytest.raises(ValueError, match="extras"):
+        arm.base_parameters(extras=["damping"])
+
+
+def _identity_holds_with(chain, extras) -> bool:
+    n = chain.n_joints
+    q, qd, qdd = (ImmutableMatrix(symbols(f"{s}1:{n + 1}", real=True)) for s in ("q", "qd", "qdd"))
+    lhs = chain.base_regressor(q, qd, qdd, extras=extras) * chain.base_parameters(extras=extras)
+    rhs = regressor_program(chain, extras=extras).expressions() * chain.parameters(extras=extras)
+    return all(trigsimp((x - y).expand()) == 0 for x, y in zip(lhs, rhs, strict=True))
