@@ -443,6 +443,10 @@ def key_of(specs, symbols, outs, is_tuple, use_cse, name, backend) -> tuple[str,
 
 def build_plan(args: Any, expr: Any, use_cse: bool, name: Any, names: Any, backend: str) -> Plan:
     """Check everything and return the plan (without CSE: see :func:`with_cse`)."""
+    program = getattr(type(expr), "_lambdify_program", None)
+    if program is not None and not isinstance(expr, type):
+        assigns, outputs = expr._lambdify_program()
+        return program_plan(args, assigns, outputs, name, names, backend)
     if name is not None and not isinstance(name, str):
         raise TypeError(f"name: expected a string, got {type(name).__name__} {name!r}")
     if name is not None and not is_identifier(name):
@@ -476,6 +480,56 @@ def build_plan(args: Any, expr: Any, use_cse: bool, name: Any, names: Any, backe
         tuple(specs), tuple(out for out, _ in outs), is_tuple, tuple(unpack), (),
         tuple(stores), name or f"lambdified_{key[:10]}", key,
     )  # fmt: skip
+
+
+def program_plan(args: Any, assigns: Sequence[tuple[Symbol, Expr]], expr: Any, name: Any,
+                 names: Any, backend: str) -> Plan:
+    """The plan of a straight-line program: ``assigns`` ``(symbol, expr)`` in order, then ``expr``.
+
+    The program's assignments become the plan's common subexpressions as given (not
+    searched again; see :func:`prepared`), each symbol renamed ``_c<m>`` and each
+    argument ``_x<k>``, so that no name of the program reaches generated source.  Each
+    right-hand side may use the arguments and the symbols assigned before it.
+    """
+    if name is not None and not is_identifier(name):
+        raise ValueError(f"name: expected a Python identifier not starting with '_', got {name!r}")
+    specs, symbols = normalise_args(args, names)
+    outs, is_tuple = normalise_expr(expr)
+    mapping: dict[Symbol, Symbol] = {}
+    for syms in symbols:
+        for sym in syms:
+            mapping[sym] = Symbol(f"_x{len(mapping)}", real=True)
+    allowed = set(mapping)
+    for m, (t, e) in enumerate(assigns):
+        check_supported(e, backend)
+        missing = _free_symbols([e]) - allowed
+        if not isinstance(t, Symbol) or t in allowed or missing:
+            raise ValueError(f"expr: assignment {m} ({t}) uses symbols that are not defined "
+                             f"before it, or defines one twice: {sorted(map(str, missing))}")
+        allowed.add(t)
+        mapping[t] = Symbol(f"_c{m}", real=True)
+    flat = [x for _, exprs in outs for x in exprs]
+    for x in flat:
+        check_supported(x, backend)
+    missing = _free_symbols(flat) - allowed
+    if missing:
+        raise ValueError(f"expr: the symbols {sorted(map(str, missing))} are not among args")
+    renamed, _ = _rename([e for _, e in assigns] + flat, mapping)
+    text = srepr((
+        tuple((s.name, s.trailing, s.what) for s in specs),
+        tuple(out.trailing for out, _ in outs), is_tuple, "program", name, backend, code_digest(),
+    )) + "\n" + _serial(renamed)  # fmt: skip
+    key = hashlib.sha256(text.encode()).hexdigest()[:24]
+    unpack = [(i, c, mapping[sym]) for i, syms in enumerate(symbols) for c, sym in enumerate(syms)]
+    k = len(assigns)
+    new_assigns = tuple((mapping[t], e) for (t, _), e in zip(assigns, renamed[:k], strict=True))
+    stores, m = [], k
+    for j, (_, exprs) in enumerate(outs):
+        for c in range(len(exprs)):
+            stores.append((j, c, renamed[m]))
+            m += 1
+    return Plan(tuple(specs), tuple(out for out, _ in outs), is_tuple, tuple(unpack), new_assigns,
+                tuple(stores), name or f"lambdified_{key[:10]}", key)
 
 
 def with_cse(plan: Plan) -> Plan:
@@ -621,7 +675,7 @@ def prepared(plan: Plan, use_cse: bool) -> Plan:
     ``sympy.cse`` for trees up to :data:`CSE_DEPTH` levels deep; deeper ones
     share their repeated subexpressions through :func:`straight_line`.
     """
-    if not use_cse:
+    if not use_cse or plan.assigns:  # a program's own assignments are its CSE
         return straight_line(plan)
     roots = [e for _, _, e in plan.stores]
     large = _depth(roots) > CSE_DEPTH or sum(1 for _ in _postorder(roots)) > CSE_NODES

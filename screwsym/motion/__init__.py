@@ -8,6 +8,19 @@ from .chain import Chain, ur5
 from .conventions import CONVENTIONS, Convention, convert, convert_from
 from .displacement import exp6, log6, se3_matrix
 from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
+from .newton_euler import (
+    Operations,
+    Program,
+    dynamics_program,
+    parameter_symbols,
+    regressor_program,
+)
+from .parameters import (
+    BaseParameters,
+    base_parameters,
+    base_regressor,
+    parameters,
+)
 from .transform import Transform, adjoint_matrix, skew
 
 __all__ = [
@@ -24,6 +37,15 @@ __all__ = [
     "coriolis_matrix",
     "gravity_torques",
     "regressor",
+    "dynamics_program",
+    "Program",
+    "Operations",
+    "parameters",
+    "base_parameters",
+    "base_regressor",
+    "regressor_program",
+    "parameter_symbols",
+    "BaseParameters",
     "convert",
     "convert_from",
     "CONVENTIONS",

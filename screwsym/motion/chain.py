@@ -61,6 +61,8 @@ from ..core.tidy import tidy
 from ..core.twist import Twist
 from . import _poe
 from . import dynamics as _dynamics
+from . import newton_euler as _newton_euler
+from . import parameters as _parameters
 from .dh import dh_twists_and_home
 from .displacement import exp6
 from .transform import Transform
@@ -374,6 +376,24 @@ class Chain(ScrewsymBasic):
                   gravity: Any = None) -> ImmutableMatrix:
         """The torques' regressor in the inertial parameters: :func:`screwsym.motion.dynamics.regressor`."""
         return _dynamics.regressor(self, q, qd, qdd, gravity)
+
+    def dynamics_program(self, what: str = "inverse_dynamics",
+                         gravity: Any = None) -> _newton_euler.Program:
+        """A straight-line program (customised Newton–Euler): :func:`screwsym.motion.newton_euler.dynamics_program`."""
+        return _newton_euler.dynamics_program(self, what, gravity)
+
+    def parameters(self, numbers: bool = False, extras: Sequence[str] = ()) -> ImmutableMatrix:
+        """The 10n standard inertial parameters (symbols, or the chain's numbers): :func:`screwsym.motion.parameters.parameters`."""
+        return _parameters.parameters(self, numbers, extras)
+
+    def base_parameters(self, gravity: Any = None, extras: Sequence[str] = ()) -> ImmutableMatrix:
+        """The base parameters, exact linear combinations of :meth:`parameters`: :func:`screwsym.motion.parameters.base_parameters`."""
+        return _parameters.base_parameters(self, gravity, extras).parameters
+
+    def base_regressor(self, q: JointValues, qd: JointValues, qdd: JointValues,
+                       gravity: Any = None, extras: Sequence[str] = ()) -> ImmutableMatrix:
+        """The n x b base regressor, ``base_regressor @ base_parameters == regressor @ parameters``: :func:`screwsym.motion.parameters.base_regressor`."""
+        return _parameters.base_regressor(self, q, qd, qdd, gravity, extras)
 
     def _sympystr(self, printer: Any) -> str:
         twists = ", ".join(printer._print(t) for t in self.twists)

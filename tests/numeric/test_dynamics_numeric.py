@@ -62,3 +62,23 @@ def test_refuses_what_it_cannot_generate(chain):
 
     with pytest.raises(ValueError, match="gravity: expected numbers"):
         dynamics_functions(chain, gravity=(0, 0, -Symbol("g", positive=True)))
+
+
+def test_generated_from_the_programs_agrees_with_pinocchio_on_the_puma_560():
+    """dynamics_functions compiles the Newton–Euler programs (issue 34): tau, H and the bias."""
+    pin = pytest.importorskip("pinocchio")
+    from _robots import pin_model, puma560
+
+    arm = puma560()
+    f = dynamics_functions(arm, backend="numpy")
+    model = pin_model(pin, arm, (0, 0, -9.81))
+    data = model.createData()
+    rng = np.random.default_rng(560)
+    Q, QD, QDD = rng.uniform(-2, 2, size=(3, 4, 6))
+    tau, H, bias = f.inverse_dynamics(Q, QD, QDD), f.mass_matrix(Q), f.bias(Q, QD)
+    for k in range(4):
+        np.testing.assert_allclose(tau[k], pin.rnea(model, data, Q[k], QD[k], QDD[k]), atol=1e-9)
+        np.testing.assert_allclose(bias[k], pin.rnea(model, data, Q[k], QD[k], 0 * QD[k]), atol=1e-9)
+        M = np.triu(pin.crba(model, data, Q[k]))
+        np.testing.assert_allclose(H[k], M + np.triu(M, 1).T, atol=1e-9)
+    assert not np.allclose(tau[0], pin.rnea(model, data, Q[1], QD[1], QDD[1]), atol=1e-6)
