@@ -320,7 +320,7 @@ class Mechanism(ScrewsymBasic):
         return ImmutableMatrix(network(self).A)
 
     # -------------------------------------------------------- first order
-    def mobility(self) -> MechanismMobility:
+    def mobility(self, *, budget: int = BUDGET) -> MechanismMobility:
         r"""The **instantaneous** mobility and its parts, at the configuration given.
 
         Explanation
@@ -334,7 +334,9 @@ class Mechanism(ScrewsymBasic):
         ``sin(q)``, ``cos(q)``: exact on the circle), with no case split
         (:meth:`mobility_cases` gives the exhaustive split), and
         many symbols make it slow (the 3-RPS with six symbols and ``sqrt(3)``
-        takes minutes): give the symbols values where you can.
+        takes minutes): give the symbols values where you can.  The work is
+        bounded by ``budget`` (:data:`~screwsym.algebra.budget.BUDGET`), past
+        which a ``ValueError`` names ``mobility``.
 
         - ``mobility``: ``M = F - rank``, the dimension of the null space of the
           network matrix (the independent joint rates), found exactly;
@@ -366,6 +368,10 @@ class Mechanism(ScrewsymBasic):
         >>> m.mobility, m.passive, m.orders
         (1, 1, (6,))
         """
+        with case_budget(budget, "mobility"):
+            return self._mobility()
+
+    def _mobility(self) -> MechanismMobility:
         net = network(self)
         g = net.graph
         orders, commons = [], []

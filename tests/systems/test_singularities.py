@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from sympy import Matrix, Min, Rational, cos, nan, sin, symbols, true
 
-from screwsym.systems.joints import R
+from screwsym.systems.joints import P, R
 from screwsym.systems.parallel import Limb, ParallelMechanism
 from tests._actuated import (
     HEXAGON,
@@ -109,7 +109,7 @@ def test_similar_hexagons_are_an_architecture_singularity():
                     np.array([a[0] / 2 + 1, a[1] / 2 + 2, 3]) - [a[0], a[1], 0])]
          for a in HEXAGON])) == 3
     legs = list(gough_stewart_66(1, 2, 3, HEXAGON).limbs)
-    from screwsym.systems.joints import P, S
+    from screwsym.systems.joints import S
     b, top = Matrix([*other[5], 0]), Matrix([Rational(7, 3), Rational(5, 4), 3])
     legs[5] = Limb(S(b), P(top - b), S(top), actuated=1)
     assert ParallelMechanism(*legs).singularities().actuation != [(True, 3)]
@@ -180,3 +180,18 @@ def test_budget_stops_singularities_with_a_clear_error():
         m.singularities(budget=1000)
     with pytest.raises(ValueError, match="budget"):
         m.singularities(budget=0)
+
+
+def test_graph_mobility_is_bounded_by_its_budget():
+    # issue 32, item 3: the graph Mechanism.mobility() charges its elimination to a budget
+    from screwsym.systems.joints import S
+    from screwsym.systems.linkage import Mechanism
+
+    from screwsym.systems._rank_cases import clear_caches
+
+    m = Mechanism([("base", "lower", S([0, 0, 0])), ("lower", "upper", P([0, 0, 1])),
+                   ("upper", "base", S([0, 0, 2]))], base="base")
+    clear_caches()  # the network is cached: a cached one costs nothing
+    with pytest.raises(ValueError, match="mobility: the case split needs more work than budget=10 "):
+        m.mobility(budget=10)
+    assert (m.mobility().mobility, m.mobility().passive) == (1, 1)  # within the default
