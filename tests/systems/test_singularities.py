@@ -184,10 +184,9 @@ def test_budget_stops_singularities_with_a_clear_error():
 
 def test_graph_mobility_is_bounded_by_its_budget():
     # issue 32, item 3: the graph Mechanism.mobility() charges its elimination to a budget
+    from screwsym.systems._rank_cases import clear_caches
     from screwsym.systems.joints import S
     from screwsym.systems.linkage import Mechanism
-
-    from screwsym.systems._rank_cases import clear_caches
 
     m = Mechanism([("base", "lower", S([0, 0, 0])), ("lower", "upper", P([0, 0, 1])),
                    ("upper", "base", S([0, 0, 2]))], base="base")
@@ -195,3 +194,26 @@ def test_graph_mobility_is_bounded_by_its_budget():
     with pytest.raises(ValueError, match="mobility: the case split needs more work than budget=10 "):
         m.mobility(budget=10)
     assert (m.mobility().mobility, m.mobility().passive) == (1, 1)  # within the default
+
+
+@pytest.mark.slow
+def test_three_rps_has_no_limb_singularity_the_benchmark_readme_was_wrong():
+    # issue 32, item 6: benchmarks/README.md (measured on a branch before the merge) gave the
+    # 3-RPS at the pose (p, q, z) 6 limb cases; bench_actuation.py now gives 0, and 0 is right
+    # (pinned exactly by test_actuation's test_three_rps_at_a_symbolic_pose...): an R-P-S leg
+    # keeps its 5 freedoms wherever its length is not zero (R horizontal, P along the leg and
+    # normal to it, three rotations at the sphere), and its actuation force along the leg
+    # never falls into its constraint (a force along the R axis), which the old split left
+    # undecided (None) where two curves met.  Independently, at exact poses:
+    from tests._actuated import three_rps_pose
+
+    for pose in ((0, 0, 1), (Rational(1, 2), Rational(-1, 3), 2), (1, 2, Rational(3, 2)),
+                 (Rational(-2, 5), 0, Rational(1, 7))):
+        m = three_rps_pose(*(Rational(v) for v in pose))
+        assert [limb.twists.rank for limb in m.limbs] == [5, 5, 5]
+        assert all(Jq != 0 for Jq in m.jacobian()[1].diagonal())
+        assert m.singularities().limb == []
+    # the checker rejects a limb singularity: a leg of zero length (its P axis zero) would
+    # not be built at all, and a leg made to lose a freedom is seen
+    z3 = [0, 0, 1]
+    assert Limb(R([0, 0, 0], z3), R([1, 0, 0], z3), R([2, 0, 0], z3)).twists.rank == 2
