@@ -513,7 +513,7 @@ class Mechanism(ScrewsymBasic):
         members = [Twist(c[:3], c[3:]) for c in cols if any(e != 0 for e in c)]
         if not members:
             return ScrewSystem(kind=Twist)
-        return ScrewSystem(*members).basis()
+        return _reduced(ScrewSystem(*members).basis())
 
     def motion(self, link: Any, relative_to: Any = None) -> str | None:
         """The motion type of ``link`` relative to ``relative_to``: ``"3T"``, ``"1R"``, ``"1H"``, ...
@@ -847,3 +847,15 @@ def _from_parallel(pm: ParallelMechanism) -> Mechanism:
         for k, j in enumerate(limb.joints):
             triples.append((chain[k], chain[k + 1], j))
     return Mechanism(triples, base="base")
+
+
+def _reduced(system: ScrewSystem) -> ScrewSystem:
+    """A basis of rational twists in reduced echelon form, each member primitive (small
+    integers): a null space taken link by link has entries of 1e17 where the span is
+    the identity's (issue 32).  A basis with symbols or surds is kept as it is."""
+    rows = [list(t.matrix) for t in system.screws]
+    if not rows or not all(e.is_Rational for r in rows for e in r):
+        return system
+    E = Matrix(rows).rref()[0]
+    out = [clean_vector(list(E.row(i))) for i in range(E.rows) if any(e != 0 for e in E.row(i))]
+    return ScrewSystem(*(Twist(c[:3], c[3:]) for c in out))

@@ -217,3 +217,29 @@ def test_three_rps_has_no_limb_singularity_the_benchmark_readme_was_wrong():
     # not be built at all, and a leg made to lose a freedom is seen
     z3 = [0, 0, 1]
     assert Limb(R([0, 0, 0], z3), R([1, 0, 0], z3), R([2, 0, 0], z3)).twists.rank == 2
+
+
+def test_graph_twists_of_tsai_three_upu_are_a_reduced_basis():
+    # issue 32, item 2: Tsai's 3-UPU (Tsai 1996: a pure translator) as a graph, link by
+    # link: the platform's twists are the three translations as the identity basis (reduced
+    # echelon, primitive), the same span as ParallelMechanism.twists, not columns of 1e17
+    from screwsym import ScrewSystem
+    from screwsym.systems.joints import U
+    from screwsym.systems.linkage import Mechanism
+
+    def leg(b, a1, top):
+        b, a1, top = Matrix(b), Matrix(a1), Matrix(top)
+        a2 = a1.cross(top - b)
+        return Limb(U(b, a1, a2), P(top - b), U(top, a2, a1), actuated=1)
+
+    pm = ParallelMechanism(leg([2, 0, 0], [0, 1, 0], [1, 0, 3]),
+                           leg([-1, 2, 0], [-2, -1, 0], [0, 1, 3]),
+                           leg([-1, -2, 0], [2, -1, 0], [0, -1, 3]))
+    got = Mechanism.from_parallel(pm).relative_twists("platform")
+    assert [list(t.matrix) for t in got.screws] == [list(r) for r in Matrix.eye(6)[3:, :].tolist()]
+    assert max(abs(e) for t in got.screws for e in t.matrix) == 1
+    assert (got | pm.twists).rank == 3 == got.rank
+    # the checker rejects a wrong span: a rotation in place of a translation
+    from screwsym import Twist
+    wrong = ScrewSystem(*got.screws[:2], Twist([0, 0, 1], [0, 0, 0]))
+    assert (wrong | pm.twists).rank == 4
