@@ -462,13 +462,21 @@ def _index_in_ring(f: Any, m: Any, omega: Any, v: Any, P: Any) -> Any:
     # the gcd below, about 16 microseconds per pair of terms of E and |f|^2 (measured: 1 s
     # for the 5546 and 11 terms of a 3-RPR at the pose (x, y, phi))
     charge(16 * len(E.terms()) * len(ff.terms()))
+    # |omega|^2 / sqrt(E): where |omega|^4 divides E (a planar mechanism: b = 0 and Q a
+    # multiple of omega), it cancels, so the formula stays finite where omega vanishes (the
+    # output twist a translation there: two legs of a 3-RPR parallel), not 0/0 (issue 32)
+    outside = ww
+    if not ww.is_ground:
+        q, r = E.div(ww**2)
+        if not r:
+            E, outside = q, R.one
     try:
         g = ff.gcd(E)
     except (NotImplementedError, DomainError):  # pragma: no cover - a domain without gcd
         g = R.one
     num, den = ff.exquo(g), E.exquo(g)
     power = dot(F, V) + dot(Mo, W)
-    return (Abs(power.as_expr()) * ww.as_expr() * sqrt(num.as_expr())
+    return (Abs(power.as_expr()) * outside.as_expr() * sqrt(num.as_expr())
             / sqrt(den.as_expr()))
 
 
