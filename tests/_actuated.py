@@ -79,3 +79,43 @@ def gough_stewart_33(tau, h=1, rb=2, rp=1, trig=False):
             b, p = base[i], top[j]
             legs.append(Limb(S(b), P(p - b), S(p), actuated=1))
     return ParallelMechanism(*legs)
+
+
+def three_rpr(x, y, c, s, base, platform):
+    """A planar 3-RPR: legs from the base points ``base`` (R) to the platform points (R),
+    their prismatic joints actuated; ``platform`` in the platform's frame, placed by the
+    pose ``(x, y)`` turned by the angle of cosine ``c`` and sine ``s`` (Gosselin & Angeles
+    1990, Fig. 4)."""
+    legs = []
+    for a, b in zip(base, platform, strict=True):
+        a = Matrix([a[0], a[1], 0])
+        top = Matrix([c * b[0] - s * b[1] + x, s * b[0] + c * b[1] + y, 0])
+        legs.append(Limb(R(a, Z), P(top - a), R(top, Z), actuated=1))
+    return ParallelMechanism(*legs)
+
+
+#: a platform triangle, and two bases: at the pose (0, 0, 0) the legs of the first meet at
+#: the origin (concurrent), those of the second are all parallel (Gosselin & Angeles 1990)
+RPR_PLATFORM = [(1, 0), (0, 1), (-1, -1)]
+RPR_CONCURRENT = [(2, 0), (0, 2), (-2, -2)]
+RPR_PARALLEL = [(1, -2), (0, -1), (-1, -3)]
+#: a base on which no pose near (0, 0, 0) is singular
+RPR_BASE = [(3, -1), (-1, 3), (-2, -3)]
+
+
+def gough_stewart_66(x, y, z, base, k=None):
+    """A 6-6 Gough-Stewart platform (S-P-S legs, P actuated) whose platform hexagon is the
+    base hexagon ``base`` (six points of the plane) scaled by ``k``: similar hexagons, at zero
+    orientation, translated by ``(x, y, z)`` (Ma & Angeles 1991: an architecture
+    singularity, singular at every translation)."""
+    k = Rational(1, 2) if k is None else k
+    legs = []
+    for a in base:
+        b = Matrix([a[0], a[1], 0])
+        top = Matrix([k * a[0] + x, k * a[1] + y, z])
+        legs.append(Limb(S(b), P(top - b), S(top), actuated=1))
+    return ParallelMechanism(*legs)
+
+
+#: a semi-regular base hexagon (not regular: a regular one gives another degeneracy)
+HEXAGON = [(4, 1), (-1, 4), (-3, 3), (-3, -3), (-1, -4), (4, -1)]

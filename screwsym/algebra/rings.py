@@ -27,6 +27,7 @@ from sympy import (
     CRootOf,
     Dummy,
     ImmutableMatrix,
+    Mul,
     Pow,
     Rational,
     Symbol,
@@ -85,8 +86,23 @@ def field_element(K, c):
     total = K.zero
     for term in Add.make_args(c):
         q, rest = term.as_coeff_Mul()
-        total += K.convert(QQ.from_sympy(q)) * (K.one if rest == 1 else _algebraic(K, rest))
+        total += K.convert(QQ.from_sympy(q)) * (K.one if rest == 1 else _product(K, rest))
     return total
+
+
+def _product(K, rest):
+    """A product of algebraic numbers in ``K``: each base converted once (cached), its integer
+    power taken inside ``K`` (``K.from_sympy(r**11)`` of a degree-11 ``CRootOf`` computes a
+    minimal polynomial of the power: minutes, issue 32)."""
+    out = K.one
+    for f in Mul.make_args(rest):
+        b, e = f.as_base_exp()
+        if e.is_Integer and e != 1 and not b.is_Rational:
+            x = _algebraic(K, b)
+            out *= x ** int(e) if e > 0 else K.quo(K.one, x ** int(-e))
+        else:
+            out *= _algebraic(K, f)
+    return out
 
 
 @lru_cache(maxsize=1024)

@@ -68,7 +68,11 @@ def transmission_map(mech: ParallelMechanism, symbols: Any, *,
 
     ``symbols`` are the symbols of the geometry, in the order of the columns.
     The function returns a :class:`TransmissionMap`; where a formula divides
-    by zero (a singular configuration) the indices are NaN.
+    by zero (a singular configuration) the indices are NaN.  The formulas are
+    polynomials of high degree in the configuration: values beyond about
+    ``1e150`` overflow (NaN), so scale such inputs first.  The exact local
+    index (an unevaluated ``Min`` at a symbolic pose) is not used: the least
+    index is taken in NumPy.
 
     >>> import numpy as np
     >>> from sympy import symbols

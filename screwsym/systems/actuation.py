@@ -62,31 +62,33 @@ from typing import Any, NamedTuple
 
 from sympy import (
     Abs,
-    And,
-    Eq,
+    Dummy,
     ImmutableMatrix,
     Integer,
     Matrix,
     Min,
-    Ne,
-    Not,
-    Or,
     Poly,
     Rational,
     cancel,
+    cos,
     expand,
     eye,
     fraction,
+    nan,
+    sin,
     sqrt,
-    true,
+    sring,
 )
-from sympy.logic.boolalg import simplify_logic
+from sympy.polys.polyerrors import DomainError
 
+from ..algebra.budget import BUDGET, charge
+from ..algebra.circle import trig_substitute
 from ..algebra.linalg import primitive_entries
 from ..core.decide import is_zero_vector
 from ..core.formulas import cross_matrix, reciprocal_form
 from ..core.twist import Twist
 from ..core.wrench import Wrench
+from ._rank_cases import case_budget
 from .joints import (
     Cylindrical,
     Helical,
@@ -106,14 +108,13 @@ _Mechanism = Any
 __all__ = [
     "actuation_wrenches",
     "jacobian",
-    "mechanism_singularities",
-    "Singularities",
     "transmission",
     "Transmission",
     "transmission_index",
     "generic_limb_rank",
     "limb_actuation_wrench",
     "check_actuated",
+    "generic_values",
 ]
 
 
@@ -176,7 +177,11 @@ def _point_of(j: Joint) -> ImmutableMatrix | None:
 
 
 def _last_point(limb: _Limb) -> ImmutableMatrix:
-    for j in reversed(limb.joints):
+    return _last_point_of(list(limb.joints))
+
+
+def _last_point_of(joints: list[Joint]) -> ImmutableMatrix:
+    for j in reversed(joints):
         p = _point_of(j)
         if p is not None:
             return p
@@ -198,29 +203,87 @@ def limb_actuation_wrench(limb: _Limb, k: int) -> Wrench:
     >>> leg = Limb(R([2, 0, 0], [0, 1, 0]), P([-1, 0, 2]), S([1, 0, 2]), actuated=1)
     >>> limb_actuation_wrench(leg, 1)       # the force along the leg, through the sphere
     Wrench([-1, 0, 2], [0, -4, 0])
+
+    Where joint ``k`` adds no freedom to the others (a type I, limb singularity:
+    the crank of a stretched R-R-R leg), every wrench reciprocal to the others
+    is reciprocal to it too, and the actuation wrench is the *limit* of the
+    one of the nearby configurations: the limb moved through one of its joints
+    by ``s`` (the first joint whose motion takes the limb out of the
+    singularity), the wrench found exactly in ``s`` and taken at ``s = 0``.
+    Its product with the actuated joint's twist is then zero (``Jq`` singular,
+    Gosselin & Angeles 1990; Bonev, Zlatanov & Gosselin 2003):
+
+    >>> z = [0, 0, 1]
+    >>> stretched = Limb(R([0, 0, 0], z), R([1, 0, 0], z), R([2, 0, 0], z), actuated=0)
+    >>> limb_actuation_wrench(stretched, 0)  # the force along the leg's line
+    Wrench([-1, 0, 0], [0, 0, 0])
     """
     _check_actuated_joint(limb, k, f"joints[{k}]")
-    groups = _joint_twist_groups(limb)
-    others = [t for i, g in enumerate(groups) if i != k for t in g]
+    twist = limb.joints[k]._twists()[0]
+    w = _wrench_of(list(limb.joints), k)
+    if w is None:
+        w = _limit_wrench(list(limb.joints), k)
+    return _signed(_wrench_from(w), twist)
+
+
+def _wrench_of(joints: list[Joint], k: int) -> ImmutableMatrix | None:
+    """The actuation wrench's column (not yet signed), None where joint ``k`` adds no freedom."""
+    others = [t for i, j in enumerate(joints) if i != k for t in j._twists()]
     passive_r = ScrewSystem(*others, kind=Twist).reciprocal().basis()
-    constraints = limb.constraints.basis()
+    every = [t for j in joints for t in j._twists()]
+    constraints = ScrewSystem(*every, kind=Twist).reciprocal().basis()
     B, C = list(passive_r), list(constraints)
     if len(B) != len(C) + 1:
-        raise ValueError(
-            f"actuated: joint {k} of the limb adds no freedom to its other joints "
-            "(its twist lies in theirs), so it transmits no actuation wrench"
-        )
-    twist = limb.joints[k]._twists()[0]
+        return None
     if not C:
-        return _signed(_wrench_from(B[0].matrix), twist)
-    X = _last_point(limb)
+        return B[0].matrix
+    X = _last_point_of(joints)
     G = Matrix([[_euclid(c, b, X) for b in B] for c in C])
     null = G.nullspace(simplify=False)
     if len(null) != 1:  # pragma: no cover - the product is definite on forces and couples
         raise ValueError("actuated: the actuation wrench is not unique here")
     beta = primitive_entries(list(null[0]))
-    w = sum((beta[j] * B[j].matrix for j in range(len(B))), ImmutableMatrix.zeros(6, 1))
-    return _signed(_wrench_from(w), twist)
+    return sum((beta[j] * B[j].matrix for j in range(len(B))), ImmutableMatrix.zeros(6, 1))
+
+
+def _limit_wrench(joints: list[Joint], k: int) -> ImmutableMatrix:
+    """The actuation wrench at a limb singularity: the limit along a motion of one joint."""
+    s = Dummy("s", real=True)
+    for m in range(len(joints)):
+        for moved in _moved_by(joints, m, s):
+            w = _wrench_of(moved, k)
+            if w is None:
+                continue
+            entries = primitive_entries([w[i] for i in range(6)])  # polynomial, no common s
+            limit = [cancel(e.subs(s, 0)) for e in entries]
+            if any(e != 0 for e in limit):
+                return ImmutableMatrix(limit)
+    raise ValueError(  # pragma: no cover - every joint moved and none left the singularity
+        f"actuated: joint {k} of the limb adds no freedom to its other joints at any "
+        "configuration near this one, so it transmits no actuation wrench")
+
+
+def _moved_by(joints: list[Joint], m: int, s: Any) -> list[list[Joint]]:
+    """The limb with joint ``m`` moved by ``s`` (each of its motions in turn; PoE)."""
+    j = joints[m]
+    zero = ImmutableMatrix([0, 0, 0])
+    I3 = ImmutableMatrix(eye(3))
+    motions: list[tuple[ImmutableMatrix, ImmutableMatrix, ImmutableMatrix]] = []
+    if isinstance(j, (Revolute, Helical, Cylindrical)):
+        motions.append((_cayley(j.args[1], s), j.args[0], zero))
+        if isinstance(j, Cylindrical):
+            motions.append((I3, zero, ImmutableMatrix(s * j.args[1])))
+    elif isinstance(j, Prismatic):
+        motions.append((I3, zero, ImmutableMatrix(s * j.args[0])))
+    elif isinstance(j, Spherical):
+        motions.extend((_cayley(ImmutableMatrix(e), s), j.args[0], zero)
+                       for e in ([1, 0, 0], [0, 1, 0], [0, 0, 1]))
+    elif isinstance(j, Universal):
+        motions.extend((_cayley(u, s), j.args[0], zero) for u in (j.args[2], j.args[1]))
+    out = []
+    for Rm, c, shift in motions:
+        out.append(joints[:m + 1] + [_moved(x, Rm, c, shift) for x in joints[m + 1:]])
+    return out
 
 
 def _wrench_from(column: Any) -> Wrench:
@@ -314,113 +377,6 @@ def _axis_row(w: Any) -> ImmutableMatrix:
     return ImmutableMatrix([[*w.S0, *w.S]])
 
 
-# ------------------------------------------------------------------ singularities
-def _union(a: Any, b: Any) -> Any:
-    """``a | b``, minimised by SymPy's ``simplify_logic`` with ``Ne`` read as ``~Eq`` (at most
-    6 equations; beyond, the plain ``Or``)."""
-    expr = Or(a, b).replace(lambda x: isinstance(x, Ne), lambda x: Not(Eq(*x.args)))
-    if len(expr.atoms(Eq)) > 6:
-        return Or(a, b)
-    expr = simplify_logic(expr)
-    return expr.replace(lambda x: isinstance(x, Not) and isinstance(x.args[0], Eq),
-                        lambda x: Ne(*x.args[0].args))
-
-
-class Singularities(NamedTuple):
-    """The result of :func:`mechanism_singularities`: three lists of ``(condition, rank)`` pairs.
-
-    Each pair is a case of a :meth:`ScrewSystem.rank_conditions` where the
-    system concerned has less than its generic rank (``rank`` ``None``: not
-    decided there).  Their ``Or`` is the singular set of the kind.
-    """
-
-    limb: list  #: a limb loses a freedom or an actuation wrench falls into its constraints
-    actuation: list  #: Jx loses rank while the constraints keep theirs (type II)
-    constraint: list  #: the constraint system loses rank (Zlatanov, Bonev & Gosselin 2002)
-
-
-def _drops(system: ScrewSystem, also: Any = true) -> list:
-    """The cases where ``system`` has less than its generic rank; those of one rank merged."""
-    cases = system.rank_conditions()
-    generic = cases[0][1]
-    out: list = []
-    for cond, rank in cases[1:]:
-        if rank is not None and generic is not None and rank >= generic:
-            continue
-        cond = And(cond, also) if also is not true else cond
-        same = [i for i, (_, r) in enumerate(out) if r == rank and rank is not None]
-        if same:
-            out[same[0]] = (_union(out[same[0]][0], cond), rank)
-        else:
-            out.append((cond, rank))
-    return out
-
-
-def mechanism_singularities(mech: _Mechanism) -> Singularities:
-    r"""The three kinds of singularity, as exhaustive conditions on the symbols.
-
-    Explanation
-    ===========
-
-    ``limb``: for each limb, the cases where its twist system loses rank (it
-    loses a freedom: an R-R leg stretched), then for each of its actuated
-    joints the cases where the system of its constraints and its actuation
-    wrench loses rank (the actuation wrench falls into the constraints, so the
-    actuator transmits nothing: ``w_a o $_a = 0``).  ``actuation``: the cases
-    where the rows of ``Jx`` lose rank, each conjoined with the generic
-    condition of the constraint system (so the constraints keep their rank
-    there).  ``constraint``: the cases where the mechanism's constraint
-    system loses rank.  The conditions are those of
-    :meth:`ScrewSystem.rank_conditions` on the systems as written: the
-    actuation wrenches are polynomial in the symbols, and where one of them
-    vanishes identically the case is listed too (a superset, never a miss).
-
-    Examples
-    ========
-
-    A five-bar with its elbows at ``(0, 1)`` and ``(3, 1)`` and the end point
-    at ``(x, y)`` (a P-P leg keeps the end link from spinning):
-
-    >>> from sympy import symbols
-    >>> from screwsym.systems.parallel import Limb, ParallelMechanism
-    >>> from screwsym.systems.joints import R, P
-    >>> x, y = symbols("x y", real=True)
-    >>> z, p = [0, 0, 1], [x, y, 0]
-    >>> m = ParallelMechanism(Limb(R([0, 0, 0], z), R([0, 1, 0], z), R(p, z), actuated=0),
-    ...                       Limb(R([3, 0, 0], z), R([3, 1, 0], z), R(p, z), actuated=0),
-    ...                       Limb(P([1, 0, 0]), P([0, 1, 0])))
-    >>> s = mechanism_singularities(m)
-    >>> s.limb
-    [(Eq(x, 0), 2), (Eq(x, 0) & Eq(y - 1, 0), 3), (Eq(x - 3, 0), 2), (Eq(y - 1, 0) & Eq(x - 3*y, 0), 3)]
-
-    Leg 1 is stretched or folded where ``x = 0`` (the end point above its base:
-    its three axes in one plane, rank 2); its actuation wrench degenerates
-    where moreover the end point is its elbow ``(0, 1)``, and leg 2's where the
-    end point is its elbow ``(3, 1)``.
-    >>> [c for c, _ in s.actuation]   # both distal links along one line
-    [Eq(y, 1)]
-    >>> s.constraint
-    []
-    """
-    _actuated(mech)
-    limb_part: list = []
-    wrenches: list = []  # those of actuation_wrenches(mech), each computed once
-    for limb in mech.limbs:
-        limb_part.extend(_drops(limb.twists))
-        constraints = list(limb.constraints.basis())
-        for k in limb.actuated:
-            w = limb_actuation_wrench(limb, int(k))
-            wrenches.append(w)
-            limb_part.extend(_drops(ScrewSystem(*constraints, w, kind=Wrench)))
-    W = mech.constraints
-    w_cases = W.rank_conditions()
-    generic_w = w_cases[0][0]
-    constraint_part = _drops(W)
-    J = ScrewSystem(*wrenches, *W.basis(), kind=Wrench)
-    actuation_part = _drops(J, generic_w)
-    return Singularities(limb=limb_part, actuation=actuation_part, constraint=constraint_part)
-
-
 # ------------------------------------------------------------------ transmission
 def transmission_index(wrench: Any, twist: Any, point: Any) -> Any:
     r"""The normalised power coefficient ``|$_T o $| / |$_T o $|_max`` of Wang et al. (2010).
@@ -463,14 +419,65 @@ def transmission_index(wrench: Any, twist: Any, point: Any) -> Any:
     # |f|^2 |omega|^2 ((h_T + h)^2 + d_max^2) = E / (|f|^2 |omega|^4) with E polynomial:
     # E = |omega|^2 (|omega|^2 a + |f|^2 b)^2 + |Q x omega|^2,
     # Q = |omega|^2 (f x C_O + (P . f) f) - |f|^2 (omega x v_O)
-    ff, ww = expand(f.dot(f)), expand(omega.dot(omega))
-    a, b = expand(f.dot(m)), expand(omega.dot(v))
     P = ImmutableMatrix(point)
-    Q = ww * (f.cross(m) + P.dot(f) * f) - ff * omega.cross(v)
-    arm = Q.cross(omega)
-    E = expand(ww * (ww * a + ff * b) ** 2 + arm.dot(arm))
-    num, den = fraction(cancel(ff / E))  # lowest terms: sqrt(ff/E) with common factors gone
-    return Abs(expand(power)) * ww * sqrt(num) / sqrt(den)
+    found = _index_in_ring(f, m, omega, v, P)
+    if found is not None:
+        return found
+    ff, ww = expand(f.dot(f)), expand(omega.dot(omega))  # pragma: no cover - EX coefficients
+    a, b = expand(f.dot(m)), expand(omega.dot(v))  # pragma: no cover
+    Q = ww * (f.cross(m) + P.dot(f) * f) - ff * omega.cross(v)  # pragma: no cover
+    arm = Q.cross(omega)  # pragma: no cover
+    E = expand(ww * (ww * a + ff * b) ** 2 + arm.dot(arm))  # pragma: no cover
+    num, den = fraction(cancel(ff / E))  # pragma: no cover
+    return Abs(expand(power)) * ww * sqrt(num) / sqrt(den)  # pragma: no cover
+
+
+def _index_in_ring(f: Any, m: Any, omega: Any, v: Any, P: Any) -> Any:
+    """:func:`transmission_index`'s general case computed in a sparse polynomial ring
+    (SymPy's ``sring``): ``expand`` and ``cancel`` of the same polynomials as expressions
+    take minutes at a symbolic pose (a 3-RPR in x, y, sin(phi), cos(phi)); the work is
+    charged to the budget under way.  None where the ring has no exact domain."""
+    entries = [*f, *m, *omega, *v, *P]
+    try:
+        R, els = sring(entries, extension=True)
+    except (ValueError, TypeError, NotImplementedError):  # pragma: no cover
+        return None
+    if R.domain.is_EX or R.domain.is_EXRAW:  # pragma: no cover - not an exact domain
+        return None
+    F, Mo, W, V, Pt = (els[3 * i:3 * i + 3] for i in range(5))
+
+    def dot(p: list, q: list) -> Any:
+        return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]
+
+    def cross(p: list, q: list) -> list:
+        return [p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]]
+
+    ff, ww = dot(F, F), dot(W, W)
+    a, b = dot(F, Mo), dot(W, V)
+    pf = dot(Pt, F)
+    fm, wv = cross(F, Mo), cross(W, V)
+    Q = [ww * (fm[i] + pf * F[i]) - ff * wv[i] for i in range(3)]
+    arm = cross(Q, W)
+    E = ww * (ww * a + ff * b) ** 2 + dot(arm, arm)
+    # the gcd below, about 16 microseconds per pair of terms of E and |f|^2 (measured: 1 s
+    # for the 5546 and 11 terms of a 3-RPR at the pose (x, y, phi))
+    charge(16 * len(E.terms()) * len(ff.terms()))
+    # |omega|^2 / sqrt(E): where |omega|^4 divides E (a planar mechanism: b = 0 and Q a
+    # multiple of omega), it cancels, so the formula stays finite where omega vanishes (the
+    # output twist a translation there: two legs of a 3-RPR parallel), not 0/0 (issue 32)
+    outside = ww
+    if not ww.is_ground:
+        q, r = E.div(ww**2)
+        if not r:
+            E, outside = q, R.one
+    try:
+        g = ff.gcd(E)
+    except (NotImplementedError, DomainError):  # pragma: no cover - a domain without gcd
+        g = R.one
+    num, den = ff.exquo(g), E.exquo(g)
+    power = dot(F, V) + dot(Mo, W)
+    return (Abs(power.as_expr()) * outside.as_expr() * sqrt(num.as_expr())
+            / sqrt(den.as_expr()))
 
 
 class Transmission(NamedTuple):
@@ -481,6 +488,8 @@ class Transmission(NamedTuple):
     local: Any  #: Gamma = min(lambda_i, eta_i)
     wrenches: tuple  #: the transmission (actuation) wrenches
     outputs: tuple  #: the output twists, the platform's twist with the other actuators locked
+    #: the limbs (indices) at a limb (type I) singularity, where the indices are not all defined
+    singular: tuple = ()
 
 
 def _point_after(limb: _Limb, k: int) -> ImmutableMatrix:
@@ -491,7 +500,7 @@ def _point_after(limb: _Limb, k: int) -> ImmutableMatrix:
     return _last_point(limb)
 
 
-def transmission(mech: _Mechanism) -> Transmission:
+def transmission(mech: _Mechanism, *, budget: int = BUDGET) -> Transmission:
     r"""The input, output and local transmission indices of Wang et al. (2010).
 
     Explanation
@@ -505,9 +514,23 @@ def transmission(mech: _Mechanism) -> Transmission:
     constraints and to every other actuation wrench (the other actuators
     locked), and ``eta_i = transmission_index($_T, $_O, X_O)`` with ``X_O``
     the point of the limb's last joint (where the wrench enters the
-    platform).  The local index is ``min(lambda_i, eta_i)``.  Exact
-    (``Abs`` and ``sqrt`` of the symbols); for a grid of configurations see
-    :mod:`screwsym.numeric.transmission`.
+    platform).  The local index is ``min(lambda_i, eta_i)``, evaluated where
+    the indices are numbers and otherwise left as an unevaluated ``Min`` (SymPy
+    compares symbolic square roots for minutes to simplify it; substitute
+    values, or use :mod:`screwsym.numeric.transmission` for many
+    configurations).  Exact (``Abs`` and ``sqrt`` of the symbols).  The work of
+    its screw systems is bounded by ``budget``, past which a ``ValueError``
+    names ``transmission``.
+
+    At a singular configuration nothing is raised.  A limb at a type I
+    (limb) singularity transmits through its limit wrench
+    (:func:`limb_actuation_wrench`), its input index is ``0`` and it is named
+    in ``singular``; where the other actuators locked leave the platform no
+    freedom (such a limb constrains it), the output indices are ``nan`` and
+    their twists ``None``, and the local index is ``0``.  Where they leave it
+    more than one (a type II configuration), the output index is ``0`` (the
+    wrench does no work on a motion the platform keeps) and the twist
+    ``None``.
 
     Examples
     ========
@@ -527,10 +550,20 @@ def transmission(mech: _Mechanism) -> Transmission:
     >>> tr.input, tr.output, tr.local
     ((sqrt(2)/2, sqrt(2)/2), (1, 1), sqrt(2)/2)
     """
+    with case_budget(budget, "transmission"):
+        return _transmission(mech)
+
+
+def _transmission(mech: _Mechanism) -> Transmission:
     pairs = _actuated(mech)
     wrenches = actuation_wrenches(mech)
     constraints = list(mech.constraints.basis())
-    ins, outs, twists = [], [], []
+    constraint_rank = len(constraints)
+    singular = [i for i, limb in enumerate(mech.limbs)
+                if limb.actuated and limb.twists.rank < generic_limb_rank(limb)]
+    ins: list = []
+    outs: list = []
+    twists: list = []
     for n, (i, k) in enumerate(pairs):
         limb = mech.limbs[i]
         w = wrenches[n]
@@ -538,16 +571,31 @@ def transmission(mech: _Mechanism) -> Transmission:
         ins.append(transmission_index(w, t_in, _point_after(limb, k)))
         others = [x for m, x in enumerate(wrenches) if m != n]
         free = ScrewSystem(*others, *constraints, kind=Wrench).reciprocal()
-        if len(free) != 1:
-            raise ValueError(
-                "transmission: with the other actuators locked the platform keeps "
-                f"{len(free)} freedoms (expected 1: as many actuators as freedoms)"
-            )
-        t_out = free.screws[0]
-        twists.append(t_out)
-        outs.append(transmission_index(w, t_out, _last_point(limb)))
-    local = Min(*ins, *outs)
-    return Transmission(tuple(ins), tuple(outs), local, wrenches, tuple(twists))
+        if len(free) == 1:
+            t_out = free.screws[0]
+            twists.append(t_out)
+            outs.append(transmission_index(w, t_out, _last_point(limb)))
+            continue
+        if len(free) == 0 and singular:  # a stretched limb constrains the platform
+            twists.append(None)
+            outs.append(nan)
+            continue
+        if len(free) > 1 and len(pairs) + constraint_rank >= 6:
+            twists.append(None)  # a type II configuration: a motion no actuator resists
+            outs.append(Integer(0))
+            continue
+        raise ValueError(
+            "transmission: with the other actuators locked the platform keeps "
+            f"{len(free)} freedoms (expected 1: as many actuators as freedoms)"
+        )
+    every = [*ins, *outs]
+    if singular and any(o is nan for o in outs):
+        local = Integer(0)
+    elif all(e.is_number for e in every):
+        local = Min(*every)
+    else:
+        local = Min(*every, evaluate=False)
+    return Transmission(tuple(ins), tuple(outs), local, wrenches, tuple(twists), tuple(singular))
 
 
 # ------------------------------------------------------------------ the limb's generic rank
@@ -623,6 +671,29 @@ def _displaced(joints: list[Joint], rnd: random.Random) -> list[Joint]:
     return joints
 
 
+def generic_values(obj: Any, rnd: random.Random) -> dict:
+    """Random rational values of the symbols of ``obj``: ``sin(q)``, ``cos(q)`` at a rational
+    point of the circle, the other symbols at rationals (for :func:`trig_substitute`).
+
+    >>> from sympy import cos, sin, symbols
+    >>> q, x = symbols("q x", real=True)
+    >>> v = generic_values(x * cos(q) + sin(q), random.Random(1))
+    >>> sorted(map(str, v)), v[sin(q)] ** 2 + v[cos(q)] ** 2
+    (['cos(q)', 'q', 'sin(q)', 'x'], 1)
+    """
+    values: dict = {}
+    angles = {a.args[0] for a in obj.atoms(sin, cos) if a.args[0].is_Symbol}
+    for q in sorted(angles, key=str):
+        t = Rational(rnd.randint(-40, 40), rnd.randint(7, 41))
+        values[sin(q)] = 2 * t / (1 + t**2)
+        values[cos(q)] = (1 - t**2) / (1 + t**2)
+    for x in sorted(obj.free_symbols - angles, key=str):
+        values[x] = Rational(rnd.randint(-60, 60), rnd.randint(1, 13))
+    for q in sorted(angles, key=str):  # q itself outside sin and cos
+        values.setdefault(q, Rational(rnd.randint(-60, 60), rnd.randint(1, 13)))
+    return values
+
+
 def generic_limb_rank(limb: _Limb, seeds: tuple[int, ...] = (1, 2)) -> int:
     """The rank of the limb's twist system at a generic configuration of the limb.
 
@@ -660,9 +731,9 @@ def generic_limb_rank(limb: _Limb, seeds: tuple[int, ...] = (1, 2)) -> int:
         rnd = random.Random(seed)
         # the symbols at random rationals too: a rank there is still at most the generic one,
         # and numbers are fast (a value that degenerates a joint is skipped)
-        values = {x: Rational(rnd.randint(-60, 60), rnd.randint(1, 13)) for x in symbols}
+        values = generic_values(limb, rnd) if symbols else {}
         try:
-            joints = [j.xreplace(values) for j in limb.joints] if values else list(limb.joints)
+            joints = [trig_substitute(j, values) for j in limb.joints] if values else list(limb.joints)
             moved = _displaced(joints, rnd)
         except ValueError:
             continue

@@ -320,7 +320,7 @@ class Mechanism(ScrewsymBasic):
         return ImmutableMatrix(network(self).A)
 
     # -------------------------------------------------------- first order
-    def mobility(self) -> MechanismMobility:
+    def mobility(self, *, budget: int = BUDGET) -> MechanismMobility:
         r"""The **instantaneous** mobility and its parts, at the configuration given.
 
         Explanation
@@ -334,7 +334,9 @@ class Mechanism(ScrewsymBasic):
         ``sin(q)``, ``cos(q)``: exact on the circle), with no case split
         (:meth:`mobility_cases` gives the exhaustive split), and
         many symbols make it slow (the 3-RPS with six symbols and ``sqrt(3)``
-        takes minutes): give the symbols values where you can.
+        takes minutes): give the symbols values where you can.  The work is
+        bounded by ``budget`` (:data:`~screwsym.algebra.budget.BUDGET`), past
+        which a ``ValueError`` names ``mobility``.
 
         - ``mobility``: ``M = F - rank``, the dimension of the null space of the
           network matrix (the independent joint rates), found exactly;
@@ -366,6 +368,10 @@ class Mechanism(ScrewsymBasic):
         >>> m.mobility, m.passive, m.orders
         (1, 1, (6,))
         """
+        with case_budget(budget, "mobility"):
+            return self._mobility()
+
+    def _mobility(self) -> MechanismMobility:
         net = network(self)
         g = net.graph
         orders, commons = [], []
@@ -507,7 +513,7 @@ class Mechanism(ScrewsymBasic):
         members = [Twist(c[:3], c[3:]) for c in cols if any(e != 0 for e in c)]
         if not members:
             return ScrewSystem(kind=Twist)
-        return ScrewSystem(*members).basis()
+        return _reduced(ScrewSystem(*members).basis())
 
     def motion(self, link: Any, relative_to: Any = None) -> str | None:
         """The motion type of ``link`` relative to ``relative_to``: ``"3T"``, ``"1R"``, ``"1H"``, ...
@@ -841,3 +847,15 @@ def _from_parallel(pm: ParallelMechanism) -> Mechanism:
         for k, j in enumerate(limb.joints):
             triples.append((chain[k], chain[k + 1], j))
     return Mechanism(triples, base="base")
+
+
+def _reduced(system: ScrewSystem) -> ScrewSystem:
+    """A basis of rational twists in reduced echelon form, each member primitive (small
+    integers): a null space taken link by link has entries of 1e17 where the span is
+    the identity's (issue 32).  A basis with symbols or surds is kept as it is."""
+    rows = [list(t.matrix) for t in system.screws]
+    if not rows or not all(e.is_Rational for r in rows for e in r):
+        return system
+    E = Matrix(rows).rref()[0]
+    out = [clean_vector(list(E.row(i))) for i in range(E.rows) if any(e != 0 for e in E.row(i))]
+    return ScrewSystem(*(Twist(c[:3], c[3:]) for c in out))

@@ -68,6 +68,7 @@ from ..core.checks import check_count, check_flag, find_string
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from . import actuation as _actuation
+from . import singularities as _singular
 from ._cases import Answered, Leaf, Stage, merge_cases, split_mechanism
 from ._rank_cases import case_budget, rank_on_surface
 from .actuation import check_actuated, generic_limb_rank
@@ -376,19 +377,19 @@ class ParallelMechanism(ScrewsymBasic):
         """``(Jx, Jq)`` with ``Jx * t = Jq * qdot`` (see :func:`screwsym.systems.actuation.jacobian`)."""
         return _actuation.jacobian(self)
 
-    def singularities(self) -> _actuation.Singularities:
+    def singularities(self, *, budget: int = BUDGET) -> _singular.Singularities:
         """The limb, actuation and constraint singularities as conditions on the symbols.
 
-        See :func:`screwsym.systems.actuation.mechanism_singularities`.
+        See :func:`screwsym.systems.singularities.mechanism_singularities`.
         """
-        return _actuation.mechanism_singularities(self)
+        return _singular.mechanism_singularities(self, budget=budget)
 
-    def transmission(self) -> _actuation.Transmission:
+    def transmission(self, *, budget: int = BUDGET) -> _actuation.Transmission:
         """The input, output and local transmission indices (Wang et al. 2010).
 
         See :func:`screwsym.systems.actuation.transmission`.
         """
-        return _actuation.transmission(self)
+        return _actuation.transmission(self, budget=budget)
 
     def mobility_cases(
         self, *, max_cases: int = MAX_CASES, budget: int = BUDGET, merge: bool = True

@@ -31,6 +31,7 @@ from sympy import (
 )
 from sympy.core.symbol import Str
 
+from ..algebra.budget import charge
 from ..algebra.linalg import nullspace_basis
 
 if TYPE_CHECKING:
@@ -139,6 +140,8 @@ class Network:
 @lru_cache(maxsize=64)
 def network(mech: Mechanism) -> Network:
     net = bare_network(mech)
+    if net.graph.loops:  # elimination: about rows x cols x rank steps, charged to the budget
+        charge(net.A.rows * net.A.cols * min(net.A.rows, net.A.cols))
     null = nullspace_basis(net.A) if net.graph.loops else Matrix.eye(net.A.cols)
     return Network(net.graph, net.twists, net.accel, net.A, net.A.cols - null.cols, null)
 

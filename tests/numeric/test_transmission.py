@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from sympy import Rational, Symbol, symbols
+from sympy import Matrix, Rational, Symbol, symbols
 
 from screwsym.numeric.transmission import jacobian_map, transmission_map
 from tests._actuated import five_bar
@@ -100,3 +100,24 @@ def test_a_dask_transmission_map_runs_chunk_by_chunk_and_agrees_with_numpy(fn):
     # the check sees a wrong map: another chunk's rows in the place of these
     shifted = fn(da.from_array(np.roll(grid, 1, axis=0), chunks=(16, 2)))
     assert not np.array_equal(shifted.local.compute(), want.local)
+
+
+def test_three_rpr_map_is_finite_where_two_legs_are_parallel():
+    # issue 32, item 4: on the line x - 3 y = 5 legs 1 and 3 of this 3-RPR are parallel (not
+    # singular: the third leg is not), and with them locked the platform translates; the map
+    # gave nan there (0/0 of the general formula).  Independent check: the exact indices at
+    # the same rational poses, whose output twist is a translation (Twist([0, 0, 0], ...))
+    from tests._actuated import RPR_BASE, RPR_PLATFORM, three_rpr
+
+    x, y = symbols("x y", real=True)
+    f = transmission_map(three_rpr(x, y, 1, 0, RPR_BASE, RPR_PLATFORM), [x, y])
+    poses = [(5, 0), (8, 1), (Rational(7, 2), Rational(-1, 2))]
+    out = f(np.array(poses, dtype=float))
+    for n, (px, py) in enumerate(poses):
+        exact = three_rpr(px, py, 1, 0, RPR_BASE, RPR_PLATFORM).transmission()
+        assert exact.outputs[1].S == Matrix([0, 0, 0])  # a translation: the case in question
+        want = [float(v) for v in exact.output]
+        assert np.allclose(out.output[:, n], want, rtol=1e-12)
+        assert 0 <= out.local[n] <= 1
+    # the check rejects a wrong answer: nan (what the map gave) is not close to the exact
+    assert not np.allclose(np.nan, float(exact.output[1]))

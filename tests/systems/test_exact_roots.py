@@ -457,3 +457,21 @@ def test_a_joint_unmade_on_a_surface_is_reported():
         with pytest.raises(ValueError):
             pm.xreplace(on)
         assert_cases_at(pm, cases, [on, {t: 0, u: 0}])
+
+
+def test_a_power_of_a_high_degree_root_is_taken_inside_its_field():
+    # issue 32: field_element(K, r**11) of a degree-11 CRootOf went through K.from_sympy of
+    # the power (a minimal polynomial of r**11: minutes, uncharged); now r is converted once
+    # and the power taken in K.  Checked against the identity r**11 = 3 r - 1 (r a root of
+    # x**11 - 3 x + 1), which also rejects a wrong answer
+    from sympy import QQ, CRootOf, symbols
+
+    from screwsym.algebra.rings import field_element
+
+    x = symbols("x")
+    r = CRootOf(x**11 - 3 * x + 1, 0)
+    K = QQ.algebraic_field(r)
+    got = field_element(K, 2 * r**11 + r**-2)
+    inverse_square = K.quo(K.one, field_element(K, r) ** 2)
+    assert got == field_element(K, 6 * r - 2) + inverse_square
+    assert got != field_element(K, 6 * r - 2)
