@@ -10,6 +10,13 @@ counted.  The units are calibrated so that one is about a microsecond: ``k! t_1 
 for a k x k determinant whose rows have at most ``t_i`` terms, ``t**2`` to factor a
 polynomial of ``t`` terms.
 
+Not every step can be priced in advance (SymPy's own arithmetic inside a step: a
+Groebner basis, a factorisation over an extension).  So the budget is also a bound on
+the processor time of the call: ``budget`` units allow ``SLACK`` times as many
+microseconds of CPU time (:data:`SLACK`), checked at every charge.  A call that passes
+it stops with the same error at its next charge; CPU time, not wall time, so that a
+loaded machine does not stop a call that an idle one answers.
+
 SymPy has no such budget (its ``polys`` run to the end), hence this module.
 """
 
@@ -18,6 +25,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
+from time import process_time
 
 __all__ = [
     "TooManyCases",
@@ -28,6 +36,7 @@ __all__ = [
     "CaseList",
     "MAX_CASES",
     "BUDGET",
+    "SLACK",
 ]
 
 
@@ -42,6 +51,11 @@ MAX_CASES = 200
 BUDGET = 20_000_000
 
 
+#: a budget of ``n`` units also bounds the call's CPU time to ``SLACK * n`` microseconds (the
+#: units are calibrated at about a microsecond each; the slack is for the unpriced steps)
+SLACK = 5
+
+
 class TooManyCases(Exception):
     """A split found more cases than its limit (:class:`CaseList`)."""
 
@@ -52,6 +66,8 @@ class OverBudget(Exception):
 
 #: the work left to the case split under way in this thread (a one-item list), or None
 _LEFT: ContextVar[list[int] | None] = ContextVar("screwsym_case_budget", default=None)
+#: the CPU time (``time.process_time``) at which the split under way stops, or None
+_DEADLINE: ContextVar[float | None] = ContextVar("screwsym_case_deadline", default=None)
 #: the name of the method the user called, whose budget holds (for the errors), or None
 _NAME: ContextVar[str | None] = ContextVar("screwsym_case_budget_name", default=None)
 
@@ -63,13 +79,16 @@ def charge(units: int) -> None:
     ...     charge(11)
     Traceback (most recent call last):
     ...
-    ValueError: rank_conditions: the case split needs more work than budget=10 units of polynomial arithmetic; give some symbols values (xreplace) or pass a larger budget
+    ValueError: rank_conditions: the case split needs more work than budget=10 units of polynomial arithmetic (or its CPU time, budget x SLACK microseconds); give some symbols values (xreplace) or pass a larger budget
     >>> charge(11)  # outside a budget nothing is counted
     """
     left = _LEFT.get()
     if left is not None:
         left[0] -= units
         if left[0] < 0:
+            raise OverBudget
+        deadline = _DEADLINE.get()
+        if deadline is not None and process_time() > deadline:
             raise OverBudget
 
 
@@ -98,16 +117,19 @@ def case_budget(budget: int, name: str) -> Iterator[None]:
         return
     token = _LEFT.set([budget])
     name_token = _NAME.set(name)
+    deadline_token = _DEADLINE.set(process_time() + SLACK * budget * 1e-6)
     try:
         yield
     except OverBudget:
         raise ValueError(
             f"{name}: the case split needs more work than budget={budget} units of "
-            "polynomial arithmetic; give some symbols values (xreplace) or pass a larger budget"
+            "polynomial arithmetic (or its CPU time, budget x SLACK microseconds); give some "
+            "symbols values (xreplace) or pass a larger budget"
         ) from None
     finally:
         _LEFT.reset(token)
         _NAME.reset(name_token)
+        _DEADLINE.reset(deadline_token)
 
 
 class CaseList(list):

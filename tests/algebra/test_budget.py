@@ -159,3 +159,26 @@ def test_case_list_refuses_past_its_limit(limit):
     with pytest.raises(TooManyCases):
         out.append(limit)
     assert out == list(range(limit)) and out.limit == limit
+
+
+def test_the_budget_bounds_the_cpu_time_of_unpriced_work():
+    # a step the units do not price (SymPy's own arithmetic) is bounded by the CPU time the
+    # budget allows, SLACK microseconds a unit, checked at the next charge
+    import time
+
+    import pytest
+
+    from screwsym.algebra.budget import SLACK, case_budget, charge
+
+    units = 2_000  # 10 ms of CPU time with SLACK = 5
+    with pytest.raises(ValueError, match="its CPU time"):
+        with case_budget(units, "singularities"):
+            charge(1)  # well within both bounds
+            start = time.process_time()
+            while time.process_time() - start < 2 * SLACK * units * 1e-6:
+                pass
+            charge(1)
+    # the same work within the time passes: the bound is the time, not the units
+    with case_budget(units, "singularities"):
+        charge(1)
+        charge(1)
