@@ -9,8 +9,8 @@ on NumPy blocks, lazily, on whatever scheduler computes the result (the local
 threaded scheduler, processes or a ``dask.distributed`` cluster); nothing runs
 before ``compute()``.  The results of one chunk are packed into one float
 array (so the function runs once per chunk however many results it has) and
-unpacked lazily.  Dask is optional (``pip install "screwsym[dask]"``); it is
-imported only when a Dask array is given.
+unpacked lazily.  Dask is optional (``pip install -e ".[dask]"`` from a clone,
+or ``pip install "dask[array]"``); it is imported only when a Dask array is given.
 
 Used by :func:`screwsym.numeric.mobility.mobility_map`; the other numeric maps
 of the package use it the same way.

@@ -46,8 +46,8 @@ Maps larger than memory
 =======================
 
 The function :func:`mobility_map` returns takes NumPy or Dask arrays.  Given a
-Dask array (``pip install "screwsym[dask]"``), it returns a
-:class:`MobilityMap` of lazy Dask arrays chunked like the configurations:
+Dask array (``pip install -e ".[dask]"`` from a clone, or ``pip install
+"dask[array]"``), it returns a :class:`MobilityMap` of lazy Dask arrays chunked like the configurations:
 each chunk is analysed by the same NumPy (or numba) code when the result is
 computed, on the local scheduler or a cluster (``dask.array.blockwise``;
 see ``screwsym.numeric._chunks``).

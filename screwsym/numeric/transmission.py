@@ -9,8 +9,9 @@ vectorised function of those symbols' values, generated once with
 ``(N, k)`` array of configurations (column ``j`` the values of
 ``symbols[j]``), or ``k`` arrays of one shape, and return arrays of shape
 ``(N,)`` (of the batch shape).  The transmission maps also take Dask arrays
-(``pip install "screwsym[dask]"``) and return lazy Dask arrays computed chunk
-by chunk, on any scheduler (``screwsym.numeric._chunks``).
+(``pip install -e ".[dask]"`` from a clone, or ``pip install "dask[array]"``) and
+return lazy Dask arrays computed chunk by chunk, on any scheduler
+(``screwsym.numeric._chunks``).
 """
 
 from __future__ import annotations
