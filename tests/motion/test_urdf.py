@@ -14,12 +14,15 @@ from screwsym import Chain, Transform, Twist, lambdify
 
 pytest.importorskip("defusedxml")
 
+from screwsym.motion.angles import RecognisedAngle, RecognisedAngleWarning  # noqa: E402
 from screwsym.motion.urdf import (  # noqa: E402
     TWO_LINK_URDF,
     path_joints,
     read_inertials,
     urdf_twists_and_home,
 )
+
+pytestmark = pytest.mark.filterwarnings("ignore::screwsym.motion.angles.RecognisedAngleWarning")
 
 DATA = Path(__file__).parent.parent / "data" / "urdf"
 PANDA = DATA / "panda.urdf"
@@ -75,38 +78,76 @@ def test_origins_rpy_axes_and_joint_kinds():
 
 
 def test_the_angle_policy():
-    """Default exact: 1.5707963267948966 stays that rational.  angles="pi/12" (opt-in) snaps
-    rpy angles within angle_tol (1e-9 rad) of a multiple of pi/12; a near miss (within 1e-3)
-    is kept as written with a warning naming the joint; lengths are never changed."""
+    """Default "pi/12": an rpy decimal that prints a multiple of pi/12 to four or more places is
+    that multiple, reported on the chain and in a RecognisedAngleWarning; "exact" keeps the
+    decimal as written; a near miss (1.57: two places) is kept with a UserWarning naming the
+    joint; lengths are never changed."""
     text = robot(joint("j", "revolute", "a", "b", '<origin xyz="1.5707963267948966 0 0" '
                        'rpy="1.5707963267948966 0.5235987755982988 0.1"/>'))
-    exact = Chain.from_urdf(text)
+    exact = Chain.from_urdf(text, angles="exact")
     assert exact.home.R[2, 2] == cos(Rational("1.5707963267948966")) * cos(Rational("0.5235987755982988"))
-    snapped = Chain.from_urdf(text, angles="pi/12")
+    assert exact.recognised == ()
+    with pytest.warns(RecognisedAngleWarning, match=r"<joint name='j'>: <origin rpy> roll: "
+                      r"1\.5707963267948966 -> pi/2; <joint name='j'>: <origin rpy> pitch: "
+                      r"0\.5235987755982988 -> pi/6 \(angles='exact' keeps"):
+        snapped = Chain.from_urdf(text)
+    assert snapped.recognised == (
+        RecognisedAngle("1.5707963267948966", "<joint name='j'>: <origin rpy> roll", pi / 2),
+        RecognisedAngle("0.5235987755982988", "<joint name='j'>: <origin rpy> pitch", pi / 6))
+    assert isinstance(snapped.recognised, tuple) and issubclass(RecognisedAngleWarning, UserWarning)
+    with pytest.raises(AttributeError):
+        snapped.recognised = ()  # a property: the record cannot be replaced
     x = Rational("1.5707963267948966")
-    assert snapped.home.p == ImmutableMatrix([x, 0, 0])  # a length is never snapped
-    # roll pi/2, pitch pi/6 snapped; yaw 0.1 is not near a multiple of pi/12 and stays 1/10
+    assert snapped.home.p == ImmutableMatrix([x, 0, 0])  # a length is never recognised
+    # roll pi/2, pitch pi/6; yaw 0.1 is not near a multiple of pi/12 and stays 1/10
     expected = Transform.rotation([0, 0, 1], Rational(1, 10)) @ Transform.rotation([0, 1, 0], pi / 6) \
         @ Transform.rotation([1, 0, 0], pi / 2)
     assert (snapped.home.R - expected.R).expand() == Matrix.zeros(3, 3)
-    # 1.5708 is 3.7e-6 from pi/2: outside the tolerance, kept, and said
-    near = robot(joint("j", "revolute", "a", "b", '<origin rpy="1.5708 0 0"/>'))
-    with pytest.warns(UserWarning, match=r"<joint name='j'>: <origin rpy>: the angle 3927/2500 is 3\.7e-06 from pi/2"):
-        kept = Chain.from_urdf(near, angles="pi/12")
-    assert kept.home.R[1, 1] == cos(Rational(3927, 2500))
-    # a looser tolerance, stated, snaps it; pi/2 snaps under pi/4 too, pi/6 does not
+    # 1.5708 (four places: round(pi/2, 4)) and -1.5707963 are pi/2 and -pi/2; 1.5709 is not
+    for written, value in (("1.5708", pi / 2), ("-1.5707963", -pi / 2), ("1.5709", Rational("1.5709")),
+                           ("1.57080", pi / 2), ("1.57070", Rational("1.5707"))):
+        one = robot(joint("j", "revolute", "a", "b", f'<origin rpy="{written} 0 0"/>'))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            chain = Chain.from_urdf(one)
+        assert (chain.home.R[1, 1] - cos(value)).expand() == 0, written
+        assert len(chain.recognised) == (0 if value.is_Rational else 1)
+    # 1.57 is round(pi/2, 2), but two places are too few to tell pi/2 from a designer's 1.57:
+    # kept as written, and said
+    near = robot(joint("j", "revolute", "a", "b", '<origin rpy="1.57 0 0"/>'))
+    with pytest.warns(UserWarning, match=r"<joint name='j'>: <origin rpy> roll: the angle 1\.57 is "
+                      r"8\.0e-04 from pi/2 but is not a printing of it to 4 or more decimal places"):
+        kept = Chain.from_urdf(near)
+    assert kept.home.R[1, 1] == cos(Rational(157, 100)) and kept.recognised == ()
+    # a tolerance, stated, replaces the printed-precision rule: 1.57 within 1e-3 is pi/2
     with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        assert Chain.from_urdf(near, angles="pi/12", angle_tol=Rational(1, 10**5)).home.R[1, 1] == 0
-    assert Chain.from_urdf(text, angles="pi/4").home.R != snapped.home.R
+        warnings.simplefilter("error", UserWarning)
+        warnings.simplefilter("ignore", RecognisedAngleWarning)
+        assert Chain.from_urdf(near, angle_tol=Rational(9, 10**4)).home.R[1, 1] == 0
+        assert Chain.from_urdf(text, angles="pi/4").home.R != snapped.home.R
     for bad, match in [("pi/0", "angles: expected 'exact' or 'pi/N'"), ("round", "angles: expected"),
-                       ("2*pi/12", "angles: expected")]:
+                       ("2*pi/12", "angles: expected"), ("pi/١٢", "angles: expected")]:
         with pytest.raises(ValueError, match=match):
             Chain.from_urdf(text, angles=bad)
     with pytest.raises(TypeError, match="angles: expected 'exact' or 'pi/N'"):
         Chain.from_urdf(text, angles=12)
     with pytest.raises(ValueError, match=r"angle_tol: expected a number in \(0, 1/1000\)"):
         Chain.from_urdf(text, angles="pi/12", angle_tol=Rational(1, 10))
+
+
+def test_one_warning_per_read_and_each_value_once():
+    """read_urdf (what from_urdf uses) parses once and warns once, though the inertials walk the
+    joints' origins again; the warning can be silenced by its class."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        chain = Chain.from_urdf(PANDA, base="panda_link0", tip="panda_link8")
+    assert [w.category for w in caught] == [RecognisedAngleWarning]
+    assert [r.value for r in chain.recognised] == [-pi / 2, pi / 2, pi / 2, -pi / 2, pi / 2, pi / 2]
+    assert {r.text for r in chain.recognised} == {"1.5707963267948966", "-1.5707963267948966"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        warnings.filterwarnings("ignore", category=RecognisedAngleWarning)
+        Chain.from_urdf(PANDA, base="panda_link0", tip="panda_link8")
 
 
 def test_what_is_refused_names_the_element():
@@ -157,7 +198,7 @@ def test_the_panda_urdf_is_franka_s_modified_dh_table():
     """Franka Emika's published modified-DH table (Franka Control Interface documentation,
     "Robot and interface specifications": a, d, alpha; the flange is d = 0.107 along z_7)
     gives exactly the chain of panda.urdf from panda_link0 to panda_link8 (the flange), with
-    the file's rpy decimals of pi/2 read as pi/2 (angles="pi/12").  The base frames agree and
+    the file's rpy decimals of pi/2 read as pi/2 (the default, angles="pi/12").  The base frames agree and
     the flange transform is Tz(0.107): no other constant transform."""
     rows = [(0, 0, "0.333"), (0, "-pi/2", 0), (0, "pi/2", "0.316"), ("0.0825", "pi/2", 0),
             ("-0.0825", "-pi/2", "0.384"), (0, "pi/2", 0), ("0.088", "pi/2", 0)]
@@ -172,7 +213,7 @@ def test_the_panda_urdf_is_franka_s_modified_dh_table():
     urdf = Chain.from_urdf(PANDA, base="panda_link0", tip="panda_link8", angles="pi/12")
     assert urdf == dh
     # and the check can fail: the exact reading of the decimals is close to it but not equal
-    exact = Chain.from_urdf(PANDA, base="panda_link0", tip="panda_link8")
+    exact = Chain.from_urdf(PANDA, base="panda_link0", tip="panda_link8", angles="exact")
     assert exact != dh
     assert max(abs(float(e)) for e in (exact.home.matrix - dh.home.matrix)) < 1e-15
 
