@@ -37,7 +37,10 @@ from typing import TYPE_CHECKING, Any, NoReturn, TypeVar, overload
 
 import numpy as np
 from sympy import Expr, Float, ImmutableMatrix, S, cancel, cos, sin, sqrt, trigsimp, zeros
+from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
+from sympy.polys.rings import sring
 
+from ..algebra.circle import reduce_circle, trig_entries
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_flag,
@@ -131,7 +134,10 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
     :func:`screwsym.core.decide.is_zero` when they are no larger than
     ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
     A matrix rational in its symbols whose determinant cancels to -1 is a
-    reflection for every value of them, and is refused.  A NumPy array of
+    reflection for every value of them, and is refused; so is one rational in
+    ``sin(q)``, ``cos(q)`` whose determinant is -1 on the circle
+    ``sin(q)**2 + cos(q)**2 = 1`` (decided exactly by reduction modulo the
+    circle, :mod:`screwsym.algebra.circle`).  A NumPy array of
     singles is judged at a single's precision: the float policy's tolerance
     ``2**(13 - 24) = 2**-11`` on the entries of ``R^T R - I`` (doubles:
     ``2**-40``).
@@ -169,7 +175,37 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
                 f"{name}: expected a rotation (det R = 1), got det R = -1 (a reflection for "
                 "every value of its symbols)"
             )
+    elif sum(e.count_ops() for e in R) <= ROTATION_CHECK_OPS and _reflection_on_circle(R):
+        raise ValueError(
+            f"{name}: expected a rotation (det R = 1), got det R = -1 (a reflection for every "
+            "value of its angles, on the circle sin**2 + cos**2 = 1)"
+        )
     return R
+
+
+def _reflection_on_circle(R: ImmutableMatrix) -> bool:
+    """Whether ``det R + 1`` is provably zero with ``sin(q)``, ``cos(q)`` on the unit circle.
+
+    The entries rational in symbols and in ``sin(q)``, ``cos(q)`` of symbols
+    ``q`` (sums and multiples expanded): the numerator of ``det R + 1`` is
+    reduced modulo ``sin(q)**2 + cos(q)**2 - 1`` (its normal form,
+    :func:`screwsym.algebra.circle.reduce_circle`), and is zero exactly when it
+    vanishes on the circles.  Anything else (other functions) is not decided: False.
+    """
+    entries = trig_entries(list(R))
+    if any(e.has(sin, cos) or not e.is_rational_function() for e in entries):
+        return False
+    num, _ = cancel(ImmutableMatrix(3, 3, entries).det(method="berkowitz") + 1).as_numer_denom()
+    if num == 0:
+        return True
+    symbols = sorted(num.free_symbols, key=str)
+    if not symbols:
+        return False
+    try:
+        ring, P = sring(num, *symbols, extension=True)
+    except (CoercionFailed, GeneratorsError, PolynomialError):
+        return False
+    return not reduce_circle(P, ring)
 
 
 def rodrigues(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One) -> ImmutableMatrix:

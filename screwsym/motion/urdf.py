@@ -89,6 +89,8 @@ _DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", 
 #: ``1e99999999`` would otherwise be a 100-million-digit integer
 MAX_NUMBER_CHARS = 100
 MAX_EXPONENT = 300
+#: a larger angle (radians) is kept as written, never compared with multiples of pi/N
+_LARGEST_ANGLE = 10**4
 #: an angle this close to a multiple, but not recognised, is warned about
 _NEAR_MISS = 1e-3
 #: the joint types on a path
@@ -159,8 +161,8 @@ class _AnglePolicy:
 
     def __call__(self, text: str, where: str) -> Expr:
         x = _number(text, where)
-        if self.n is None or x == 0:
-            return x
+        if self.n is None or x == 0 or abs(x) > _LARGEST_ANGLE:
+            return x  # (an angle of 10**4 radians or more is no printing of a multiple of pi)
         if self.tol is None:
             target = recognise_decimal(text, self.n)
         else:
@@ -171,14 +173,13 @@ class _AnglePolicy:
         if target is not None:
             self.recognised.append(RecognisedAngle(text.strip(), where, target))
             return target
-        if abs(x) < 10**4:
-            k = round(float(x) * self.n / math.pi)
-            gap = abs(float((x - k * pi / self.n).evalf(30)))
-            if gap <= _NEAR_MISS and k != 0:
-                warnings.warn(
-                    f"{where}: the angle {text.strip()} is {gap:.1e} from {k * pi / self.n} but is "
-                    f"not a printing of it to {MIN_PLACES} or more decimal places: kept as written",
-                    UserWarning, stacklevel=5)
+        k = round(float(x) * self.n / math.pi)
+        gap = abs(float((x - k * pi / self.n).evalf(30)))
+        if gap <= _NEAR_MISS and k != 0:
+            warnings.warn(
+                f"{where}: the angle {text.strip()} is {gap:.1e} from {k * pi / self.n} but is "
+                f"not a printing of it to {MIN_PLACES} or more decimal places: kept as written",
+                UserWarning, stacklevel=5)
         return x
 
     def report(self) -> tuple[RecognisedAngle, ...]:

@@ -294,3 +294,120 @@ def test_without_defusedxml_the_error_says_how_to_install(monkeypatch):
     monkeypatch.setitem(sys.modules, "defusedxml.ElementTree", None)
     with pytest.raises(ImportError, match=r'pip install -e "\.\[urdf\]"'):
         Chain.from_urdf(TWO_LINK_URDF)
+
+
+# ----------------------------------------------------------- bad files: refused quickly, clearly
+ARM = robot(joint("j", "revolute", "a", "b", '<origin xyz="{xyz}" rpy="{rpy}"/>', '<axis xyz="0 0 1"/>'))
+
+
+def arm(xyz="0 0 0", rpy="0 0 0"):
+    return ARM.replace("{xyz}", xyz).replace("{rpy}", rpy)
+
+
+def test_numbers_have_exponent_and_length_limits():
+    """A 12-character 1e99999999 would be a 100-million-digit integer; a 5000-digit number is
+    no length: both refused at once, naming the element (the limits are shown to let the
+    largest allowed through)."""
+    from screwsym.motion.urdf import MAX_EXPONENT, MAX_NUMBER_CHARS
+
+    for bad, match in [("1e99999999", "exponent of at most 300"), ("1" * 5000, "at most 100 characters"),
+                       ("0.000e400", "exponent"), ("1E-99999999", "exponent")]:
+        with pytest.raises(ValueError, match=rf"<joint name='j'>: <origin xyz>: expected a decimal .*{match}"):
+            Chain.from_urdf(arm(xyz=f"{bad} 0 0"))
+    assert Chain.from_urdf(arm(xyz=f"1e{MAX_EXPONENT} 0 0")).home.p[0] == 10**MAX_EXPONENT
+    assert Chain.from_urdf(arm(xyz=f"{'1' * MAX_NUMBER_CHARS} 0 0")).home.p[0] == int("1" * MAX_NUMBER_CHARS)
+    # an rpy of 1e999 with the default angles: a ValueError (was OverflowError); 1e300 is kept
+    with pytest.raises(ValueError, match=r"<joint name='j'>: <origin rpy> roll: expected a decimal exponent"):
+        Chain.from_urdf(arm(rpy="1e999 0 0"))
+    for tol in (None, Rational(1, 10**6)):
+        assert Chain.from_urdf(arm(rpy="9999999999e300 0 0"), angle_tol=tol).recognised == ()
+
+
+def test_only_ascii_digits():
+    for bad in ("١٢", "１", "1.5٧", "٣e2"):
+        with pytest.raises(ValueError, match=r"<origin xyz>: expected a decimal number, got"):
+            Chain.from_urdf(arm(xyz=f"{bad} 0 0"))
+        with pytest.raises(ValueError, match=r"<origin rpy> pitch: expected a decimal number, got"):
+            Chain.from_urdf(arm(rpy=f"0 {bad} 0"))
+    assert Chain.from_urdf(arm(xyz="12 0 0")).home.p[0] == 12
+
+
+def test_a_cycle_or_a_link_with_two_parents_below_the_path_is_refused():
+    """The cycle of fixed joints that made read_inertials loop forever, and a link with two
+    parents off the path that was counted twice (mass 5 instead of 4), are refused, naming the
+    link (urdfdom refuses such files too); the same file without the second parent reads 4."""
+    mass = '<inertial><mass value="{m}"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
+    links = (f'<link name="a"/><link name="b">{mass.format(m=1)}</link><link name="c">{mass.format(m=1)}</link>'
+             f'<link name="d">{mass.format(m=1)}</link><link name="e">{mass.format(m=1)}</link><link name="t"/>')
+
+    def file(*joints):
+        return f'<robot name="r">{links}{"".join(joints)}</robot>'
+
+    path = [joint("j", "revolute", "a", "b"), joint("k", "revolute", "b", "t")]
+    good = file(*path, joint("f1", "fixed", "b", "c"), joint("f2", "fixed", "c", "d"),
+                joint("f3", "fixed", "b", "e"))
+    assert read_inertials(good, tip="t")[0].mass == 4
+    twice = file(*path, joint("f1", "fixed", "b", "c"), joint("f2", "fixed", "c", "d"),
+                 joint("f3", "fixed", "b", "e"), joint("f4", "fixed", "e", "d"))
+    cycle = file(*path, joint("f1", "fixed", "b", "c"), joint("f2", "fixed", "c", "d"),
+                 joint("f3", "fixed", "d", "c"))
+    for text in (twice, cycle):
+        with pytest.raises(ValueError, match=r"<link name='[cd]'>: the child of 2 joints"):
+            read_inertials(text, base="a", tip="t")
+        with pytest.raises(ValueError, match=r"the child of 2 joints"):
+            Chain.from_urdf(text, base="a", tip="t", inertias=True)
+    # a cycle that returns to the path: refused on the path itself
+    back = file(*path, joint("f1", "fixed", "b", "c"), joint("f2", "fixed", "c", "b"))
+    with pytest.raises(ValueError, match=r"<link name='b'>: the child of 2 joints"):
+        read_inertials(back, base="a", tip="t")
+
+
+def test_a_path_is_a_path_and_xml_text_is_text(tmp_path):
+    import time
+
+    start = time.process_time()
+    for bad, match in [("/dev/zero", "expected a regular file, got '/dev/zero'"),
+                       (str(tmp_path), "expected a regular file"),
+                       ("", "expected a URDF file path or its XML text, got an empty string"),
+                       ("   ", "expected a URDF file path or its XML text, got an empty string"),
+                       (str(tmp_path / "missing.urdf"), "no URDF file at"),
+                       ("robot name='x'><link/>", "expected a URDF file path or XML text starting with '<'")]:
+        with pytest.raises(ValueError, match=rf"source: {match}"):
+            Chain.from_urdf(bad)
+    assert time.process_time() - start < 5  # /dev/zero is never read
+    with pytest.raises(ValueError, match="source: expected a regular file"):
+        Chain.from_urdf(Path("/dev/zero"))
+    with pytest.raises(ValueError, match="source: not well-formed XML"):
+        Chain.from_urdf("<robot")
+    with pytest.raises(TypeError, match="source: expected a URDF file path or its XML text, got int"):
+        Chain.from_urdf(3)
+    big = tmp_path / "big.urdf"
+    with big.open("wb") as f:
+        f.truncate(65 * 2**20)  # sparse: 65 MB of nothing
+    with pytest.raises(ValueError, match=r"has 68157440 bytes, more than 67108864"):
+        Chain.from_urdf(big)
+    # a BOM or white space before the XML is text, not a path
+    want = Chain.from_urdf(TWO_LINK_URDF)
+    for text in ("\ufeff" + TWO_LINK_URDF, "  \n\t" + TWO_LINK_URDF, "\ufeff\n" + TWO_LINK_URDF):
+        assert Chain.from_urdf(text) == want
+        assert Chain.from_urdf(text.encode("utf-8")) == want
+        f = tmp_path / "x.urdf"
+        f.write_text(text, encoding="utf-8")
+        assert Chain.from_urdf(f) == want and Chain.from_urdf(str(f)) == want
+
+
+def test_encodings_from_the_xml_declaration(tmp_path):
+    """UTF-16 and latin-1 files (bytes, or a path) are decoded as their declaration says: a link
+    name with an accent comes through."""
+    text = TWO_LINK_URDF.replace('"upper"', '"épaule"')
+    want = Chain.from_urdf(text)
+    for encoding in ("utf-16", "latin-1", "utf-8"):
+        data = f'<?xml version="1.0" encoding="{encoding}"?>\n{text}'.encode(encoding)
+        assert Chain.from_urdf(data) == want
+        f = tmp_path / f"{encoding}.urdf"
+        f.write_bytes(data)
+        assert Chain.from_urdf(f) == want
+        assert read_inertials(f)[0].links == ("épaule",)
+    # and a wrong declaration is an error, not a silent misreading
+    with pytest.raises(ValueError, match="source: not well-formed XML"):
+        Chain.from_urdf(f'<?xml version="1.0" encoding="utf-8"?>{text}'.encode("utf-16"))
