@@ -28,7 +28,8 @@ probability ``10**-d / (pi/12)``: 3.8% for two places (``1.57`` is
 ``round(pi/2, 2)``, and so is a length-like ``1.57`` a designer meant), 0.4%
 for three, 0.04% for four.  From four places on, a match is the printing of
 the multiple beyond reasonable doubt, so ``1.57`` and ``3.14`` are kept as
-written and ``1.5708`` and ``3.1416`` are recognised; zero is zero.  Each
+written and ``1.5708`` and ``3.1416`` are recognised; an exact zero is zero
+(not reported).  Each
 recognised value is reported (:class:`RecognisedAngle`: the text, where it
 stood, the value used) and a :class:`RecognisedAngleWarning` says so; a user
 who wants every decimal as written asks for ``angles="exact"``.
@@ -53,13 +54,19 @@ from typing import Any, NamedTuple
 
 import mpmath  # type: ignore[import-untyped]  # SymPy's dependency: pi to any precision
 import numpy as np
-from sympy import Expr, Rational, cos, pi, sin
+from sympy import Expr, Rational, S, cos, pi, sin
 
 __all__ = ["RecognisedAngle", "RecognisedAngleWarning", "recognise_decimal", "recognise_float",
-           "recognise_trig_float", "angle_step", "warn_recognised", "MIN_PLACES", "TRIG_TOL"]
+           "recognise_trig_float", "angle_step", "warn_recognised", "MIN_PLACES", "TRIG_TOL", "NOISE"]
 
+#: the noise of double arithmetic on angles up to a turn: 4 units in the last place of a double
+#: at 2 pi (about 3.6e-15); a decimal this close to k pi/N (0 included: ``-5.19179e-17``, as a
+#: CAD exporter writes a zero) is a printing of it
+NOISE = 4 * math.ulp(2 * math.pi)
 #: a decimal text needs at least this many decimal places to be recognised
 MIN_PLACES = 4
+#: the longest text looked at (characters): |x - k pi/N| then needs at most about 400 digits
+_LONGEST = 400
 #: recognise only angles up to this size (in radians); a larger decimal is kept as written
 _LARGEST = 10**4
 #: a float within this many units in the last place of k pi/N is a printing of it: a program
@@ -127,6 +134,18 @@ def _places_and_digits(text: str) -> tuple[int, int] | None:
     return places, significant
 
 
+def _log10_size(text: str) -> int | None:
+    """About log10 |x| of a decimal text (within one), or None for zero; without computing x."""
+    m = _DECIMAL.fullmatch(text.strip())
+    assert m is not None
+    digits = (m.group(2) or "") + (m.group(3) or "")
+    stripped = digits.lstrip("0")
+    if not stripped:
+        return None
+    exponent = int(m.group(4)) if m.group(4) else 0
+    return len(m.group(2) or "") - (len(digits) - len(stripped)) + exponent
+
+
 def _nearest(x: Rational, n: int) -> int:
     """The integer k with k pi/n nearest x (x of size at most _LARGEST)."""
     with mpmath.workdps(40):
@@ -149,7 +168,8 @@ def recognise_decimal(text: str, n: int = 12) -> Expr | None:
 
     See the module docstring for the rule (at least four decimal places, and
     the decimal is ``k pi/n`` rounded to its places, or the double or single
-    nearest it).  Zero is not "recognised": it is exact already (None).
+    nearest it, or within ``NOISE``).  An exact zero is not "recognised": it is
+    exact already (None); ``-5.19179e-17`` is 0.
 
     >>> from screwsym.motion.angles import recognise_decimal
     >>> recognise_decimal("1.5708"), recognise_decimal("-1.5707963"), recognise_decimal("1.5707963267948966")
@@ -158,20 +178,31 @@ def recognise_decimal(text: str, n: int = 12) -> Expr | None:
     (pi/4, pi, pi/2)
     >>> print(recognise_decimal("1.57"), recognise_decimal("1.5709"), recognise_decimal("0.5"))
     None None None
+    >>> recognise_decimal("-5.19179e-17"), recognise_decimal("2.55351e-15"), recognise_decimal("1e-13")
+    (0, 0, None)
     """
+    if len(text) > _LONGEST:
+        return None
     shape = _places_and_digits(text)
     if shape is None:
         return None
     places, significant = shape
     if places < MIN_PLACES:
         return None
+    size = _log10_size(text)
+    if size is None or size > 5:
+        return None  # zero, or more than _LARGEST: not an angle to recognise
+    if size < -20:
+        return S.Zero  # far below NOISE: not built as a Rational (1e-99999999 would be huge)
     x = Rational(text.strip())
     if x == 0 or abs(x) > _LARGEST:
         return None
     k = _nearest(x, n)
+    gap = _gap(x, k, n, min(places, _LONGEST))
+    if gap <= NOISE:
+        return k * pi / n  # float noise of a computation on angles up to a turn (k = 0 too)
     if k == 0:
         return None
-    gap = _gap(x, k, n, places)
     if gap * 2 * mpmath.mpf(10) ** places < 1:
         return k * pi / n
     for digits, single in ((15, False), (7, True)):
@@ -194,9 +225,9 @@ def recognise_float(value: float, n: int = 12) -> Expr | None:
     if x == 0 or not abs(x) <= _LARGEST:
         return None
     k = _nearest(Rational(x), n)
-    if k == 0:
-        return None
     gap = _gap(Rational(x), k, n, 20)
+    if gap <= NOISE:
+        return k * pi / n
     # the single-precision window only for a float that is a single (numpy.float32, or its value)
     single = float(np.float32(x)) == x
     if gap <= _ULPS * _ulp(x, False) or (single and gap <= _ULPS * _ulp(x, True)):

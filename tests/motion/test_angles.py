@@ -76,10 +76,16 @@ def test_what_is_not_recognised():
     """Too few places (1.57 is round(pi/2, 2); 0.5 rounds pi/6 to one place), a near miss at
     four places, zero (exact already), lengths of no angle, non-decimals."""
     for text in ("1.57", "3.14", "0.5", "1", "0.785", "1.5709", "1.5707", "0.0000", "0", "2.0000",
-                 "1.5708x", "", "pi", "1e5", "15708e-4000", "١.٥٧٠٨"):
+                 "1.5708x", "", "pi", "1e5", "١.٥٧٠٨", "1" * 401, "1e-13", "-4e-15", "0.0001"):
         assert recognise_decimal(text) is None, text
+    # float noise around a multiple (an exporter's zero, so101.urdf) is that multiple
+    for text, value in (("-5.19179e-17", 0), ("2.35221e-33", 0), ("-2.55351e-15", 0),
+                        ("3.5e-15", 0), (repr(math.pi / 2 + 2e-15), pi / 2)):
+        assert recognise_decimal(text) == value, text
+    assert recognise_decimal("15708e-4000") == 0 and recognise_decimal("1e-99999999") == 0  # at once
     assert recognise_decimal("15708e-4") == pi / 2 and recognise_decimal("+.7854") == pi / 4
-    for value in (1.5708, 0.0, 1.5707963267948966 + 1e-12, float("nan"), float("inf"), 1e300):
+    assert recognise_float(-5.19179e-17) == 0
+    for value in (1.5708, 0.0, 1.5707963267948966 + 1e-12, float("nan"), float("inf"), 1e300, 1e-13):
         assert recognise_float(value) is None, value
     assert recognise_decimal("0.7854", 4) == pi / 4 and recognise_decimal("0.2618", 4) is None
 
