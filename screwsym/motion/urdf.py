@@ -63,6 +63,7 @@ Section 4.1.3 (the product of exponentials from a robot description).
 from __future__ import annotations
 
 import importlib
+import importlib.resources
 import math
 import os
 import re
@@ -81,7 +82,7 @@ from .angles import MIN_PLACES, RecognisedAngle, angle_step, recognise_decimal, 
 from .transform import Transform
 
 __all__ = ["urdf_twists_and_home", "read_inertials", "read_urdf", "UrdfRobot", "LinkInertial",
-           "path_joints", "MAX_NUMBER_CHARS", "MAX_EXPONENT", "MAX_FILE_BYTES"]
+           "path_joints", "sample_urdf", "SAMPLES", "MAX_NUMBER_CHARS", "MAX_EXPONENT", "MAX_FILE_BYTES"]
 
 #: a decimal number as URDF writes one (ASCII digits only; no expressions, no nan/inf)
 _DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
@@ -686,6 +687,32 @@ def read_urdf(source: Any, base: str | None = None, tip: str | None = None, *,
     bodies = _inertials(robot, joints, policy) if inertials else None
     policy.warn()
     return UrdfRobot(tuple(twists), home, bodies, policy.report())
+
+
+#: the robot files shipped in the package (screwsym/motion/urdf_samples, from example-robot-data)
+SAMPLES = ("panda.urdf", "ur5_robot.urdf")
+
+
+def sample_urdf(name: str) -> Path:
+    """The path of a URDF file shipped with screwsym: ``"panda.urdf"`` or ``"ur5_robot.urdf"``.
+
+    Found through :mod:`importlib.resources` in the installed package, so that it
+    works from any directory (the files' origin and licences:
+    ``screwsym/motion/urdf_samples/README.md``).
+
+    >>> from screwsym import Chain
+    >>> from screwsym.motion.urdf import sample_urdf
+    >>> sample_urdf("ur5_robot.urdf").name
+    'ur5_robot.urdf'
+    >>> Chain.from_urdf(sample_urdf("ur5_robot.urdf"), "base_link", "tool0").n_joints
+    6
+    """
+    if name not in SAMPLES:
+        raise ValueError(f"name: expected one of {SAMPLES}, got {name!r}")
+    path = importlib.resources.files("screwsym.motion") / "urdf_samples" / name
+    if not isinstance(path, Path):  # pragma: no cover - a package imported from a zip file
+        raise ValueError(f"name: {name!r} is not a file on disk here (the package is zipped)")
+    return path
 
 
 #: a small URDF used by the examples (a two-joint arm with a fixed flange)

@@ -411,3 +411,17 @@ def test_encodings_from_the_xml_declaration(tmp_path):
     # and a wrong declaration is an error, not a silent misreading
     with pytest.raises(ValueError, match="source: not well-formed XML"):
         Chain.from_urdf(f'<?xml version="1.0" encoding="utf-8"?>{text}'.encode("utf-16"))
+
+
+def test_the_shipped_robot_files_are_found_from_any_directory(tmp_path, monkeypatch):
+    """sample_urdf reaches the files through the package (importlib.resources), wherever the
+    process runs; they are the files the tests read (tests/data/urdf), byte for byte."""
+    from screwsym.motion.urdf import SAMPLES, sample_urdf
+
+    monkeypatch.chdir(tmp_path)
+    for name in SAMPLES:
+        path = sample_urdf(name)
+        assert path.is_absolute() and path.read_bytes() == (DATA / name).read_bytes()
+    assert Chain.from_urdf(sample_urdf("panda.urdf"), "panda_link0", "panda_link8").n_joints == 7
+    with pytest.raises(ValueError, match=r"name: expected one of \('panda.urdf', 'ur5_robot.urdf'\)"):
+        sample_urdf("../../etc/passwd")
