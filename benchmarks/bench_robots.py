@@ -32,7 +32,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
-from sympy import Float, Rational, symbols
+from sympy import Rational, symbols
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "tests" / "crosscheck"))
@@ -60,13 +60,20 @@ def timed(limit, f, *args, **kwargs):
         signal.alarm(0)
 
 
+def kinematics(chain, q):
+    return chain.forward(q), chain.jacobian(q)
+
+
+def dynamics(chain, q, qd, qdd, gravity):
+    return chain.mass_matrix(q), chain.inverse_dynamics(q, qd, qdd, gravity=gravity)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("arms", nargs="*", help="arms to run (default: all)")
     parser.add_argument("--limit", type=int, default=60, help="seconds per step (default 60)")
     args = parser.parse_args()
     import pinocchio as pin
-
     import test_example_robot_data as erd
 
     warnings.simplefilter("ignore")
@@ -82,7 +89,7 @@ def main() -> None:
         if chain is not None:
             cells[1] = str(chain.n_joints)
             q = list(symbols(f"q1:{chain.n_joints + 1}", real=True))
-            _, t_fkj = timed(args.limit, lambda: (chain.forward(q), chain.jacobian(q)))
+            _, t_fkj = timed(args.limit, kinematics, chain, q)
             cells[2] = f"{t_load:.2f}"
             cells[3] = over if t_fkj is None else f"{t_fkj:.2f}"
             cells[4] = over if t_fkj is None else f"{t_load + t_fkj:.2f}"
@@ -92,8 +99,7 @@ def main() -> None:
                 qs, qd, qdd = erd.states(name, chain.n_joints, 1)[0]
                 F = erd.floats
                 g = [0, 0, Rational(-981, 100)]
-                _, t_dyn = timed(args.limit, lambda: (full.mass_matrix(F(qs)),
-                                                      full.inverse_dynamics(F(qs), F(qd), F(qdd), gravity=g)))
+                _, t_dyn = timed(args.limit, dynamics, full, F(qs), F(qd), F(qdd), g)
                 cells[6] = over if t_dyn is None else f"{t_dyn:.2f}"
                 start = time.process_time()
                 ref = erd.Pinocchio(name, as_written=True)
