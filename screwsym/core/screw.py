@@ -37,6 +37,7 @@ from sympy import Expr, ImmutableMatrix, S, nan, oo, zeros
 from sympy.matrices import MatrixBase
 
 from .basic import ScrewsymBasic
+from .by_parts import is_zero_vector_by_parts
 from .checks import (
     check_choice,
     check_flag,
@@ -568,12 +569,16 @@ def require_axis(s: Screw, what: str, name: str | None = None) -> None:
 
 
 def _pitch(s: Screw, name: str | None = None, tidy: bool = True, conds: str = "none") -> Expr:
-    if not s._pitch_is_zero and is_zero_vector(s.S) is True:
+    if not s._pitch_is_zero and is_zero_vector_by_parts(s.S) is True:
         if is_zero_vector(s.S0) is True:
             raise ValueError(f"{name + ': ' if name else ''}the zero screw (0; 0) has no pitch")
         return oo
     h = finite_pitch(s, tidy)
-    return _where_direction_vanishes(s, h, oo) if conds == "piecewise" else h
+    if conds != "piecewise" or s._pitch_is_zero or not s.free_symbols or is_zero_vector_by_parts(s.S) is not None:
+        return h
+    # _where_direction_vanishes, with the direction's zero decided by its parts above
+    S_zero = vanishes(s.S)
+    return piecewise([(nan, S_zero & vanishes(s.S0)), (oo, S_zero)], h)
 
 
 def finite_pitch(s: Screw, tidy: bool = False) -> Expr:

@@ -63,10 +63,11 @@ from . import _poe
 from . import dynamics as _dynamics
 from . import newton_euler as _newton_euler
 from . import parameters as _parameters
-from .dh import dh_twists_and_home
+from .angles import RecognisedAngle, angle_step, warn_recognised
+from .dh import dh_twists_and_home, recognise_dh_angles
 from .displacement import exp6
 from .transform import Transform
-from .urdf import read_inertials, urdf_twists_and_home
+from .urdf import read_urdf
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -151,7 +152,8 @@ class Chain(ScrewsymBasic):
     screwsym.motion.displacement.exp6, screwsym.motion.transform.Transform.adjoint
     """
 
-    __slots__ = ()
+    # the record of recognised angles (``recognised``), set once by the file readers
+    __slots__ = ("_recognised",)
 
     def __new__(cls, twists: Sequence[ScrewLike], home: Transform | None = None,
                 inertias: Sequence[SpatialInertia] | None = None, *,
@@ -181,7 +183,8 @@ class Chain(ScrewsymBasic):
     @classmethod
     def from_dh(cls, rows: Sequence[Sequence[ScalarLike]], convention: str = "standard",
                 joints: str | Sequence[str] | None = None, *,
-                base: Transform | None = None, tool: Transform | None = None) -> Chain:
+                base: Transform | None = None, tool: Transform | None = None,
+                angles: str = "exact") -> Chain:
         r"""The chain of a Denavit–Hartenberg table of rows ``(a, alpha, d, theta)``.
 
         ``convention`` is ``"standard"`` (Denavit & Hartenberg 1955) or
@@ -190,24 +193,36 @@ class Chain(ScrewsymBasic):
         ``P``: d; default all revolute).  Exact: see
         :func:`screwsym.motion.dh.dh_twists_and_home` for the conventions' table.
 
+        ``angles="pi/12"`` reads float angles (``alpha``, ``theta``) that are
+        multiples of pi/12 as those multiples, as :meth:`from_urdf` does, listed
+        in :attr:`recognised` (:func:`screwsym.motion.dh.recognise_dh_angles`).
+
         >>> from sympy import pi
         >>> Chain.from_dh([(1, 0, 0, 0), (1, 0, 0, 0)]).home.p.T
         Matrix([[2, 0, 0]])
         """
+        rows, found = recognise_dh_angles(rows, angles)
+        warn_recognised(found, angle_step(angles) or 12)
         twists, home = dh_twists_and_home(rows, convention, joints, base=base, tool=tool)
-        return cls(twists, home)
+        return cls(twists, home)._with_recognised(found)
 
     @classmethod
     def from_urdf(cls, source: Any, base: str | None = None, tip: str | None = None, *,
-                  angles: str = "exact", angle_tol: ScalarLike | None = None,
+                  angles: str = "pi/12", angle_tol: ScalarLike | None = None,
                   inertias: bool = False) -> Chain:
         r"""The chain of the serial path from link ``base`` to link ``tip`` of a URDF robot.
 
         ``source`` is a file path or the XML text.  Numbers are read exactly
-        from their decimal text; ``angles="pi/12"`` (opt-in) snaps ``rpy``
-        angles within ``angle_tol`` (default ``10**-9``) of a multiple of pi/12 to that multiple.
-        Needs ``defusedxml`` (``pip install -e ".[urdf]"``).  See
-        :func:`screwsym.motion.urdf.urdf_twists_and_home` for the rules and the errors.
+        from their decimal text, but for the ``rpy`` angles that print a
+        multiple of pi/12 to four or more decimal places (``1.5708``,
+        ``-1.5707963``, ``1.5707963267948966``: pi/2), which are read as that
+        multiple (the rule and why: :mod:`screwsym.motion.angles`); each such
+        value is listed in :attr:`recognised` and in a
+        :class:`~screwsym.motion.angles.RecognisedAngleWarning`.
+        ``angles="exact"`` keeps every decimal as written; ``angles="pi/N"``
+        recognises multiples of pi/N.  Needs ``defusedxml`` (``pip install -e
+        ".[urdf]"``).  See :func:`screwsym.motion.urdf.urdf_twists_and_home`
+        for the rules and the errors.
 
         With ``inertias=True`` the chain also carries each moving body's
         :class:`~screwsym.core.inertia.SpatialInertia`, in the space frame at
@@ -218,18 +233,19 @@ class Chain(ScrewsymBasic):
         files leave links without mass.
 
         >>> from screwsym.motion.urdf import TWO_LINK_URDF
-        >>> Chain.from_urdf(TWO_LINK_URDF, angles="pi/12").n_joints
+        >>> Chain.from_urdf(TWO_LINK_URDF, angles="exact").n_joints
         2
-        >>> Chain.from_urdf(TWO_LINK_URDF, angles="pi/12", inertias=True)
+        >>> Chain.from_urdf(TWO_LINK_URDF, angles="exact", inertias=True)
         Traceback (most recent call last):
         ...
         ValueError: source: the body moved by joint 'shoulder' (upper) has no mass; pass inertias=False to read the kinematics alone
         """
-        twists, home = urdf_twists_and_home(source, base, tip, angles=angles, angle_tol=angle_tol)
-        if not check_flag(inertias, "inertias"):
-            return cls(twists, home)
+        read = read_urdf(source, base, tip, angles=angles, angle_tol=angle_tol,
+                         inertials=check_flag(inertias, "inertias"))
+        if read.inertials is None:
+            return cls(twists=read.twists, home=read.home)._with_recognised(read.recognised)
         bodies = []
-        for body in read_inertials(source, base, tip, angles=angles, angle_tol=angle_tol):
+        for body in read.inertials:
             if body.mass == 0:
                 raise ValueError(
                     f"source: the body moved by joint {body.joint!r} ({', '.join(body.links)}) "
@@ -242,7 +258,23 @@ class Chain(ScrewsymBasic):
                     f"source: the inertia of the body moved by joint {body.joint!r}: {exc} "
                     "(inertias=False reads the kinematics alone)"
                 ) from None
-        return cls(twists, home, bodies)
+        return cls(read.twists, read.home, bodies)._with_recognised(read.recognised)
+
+    def _with_recognised(self, recognised: tuple[RecognisedAngle, ...]) -> Self:
+        """Set the record of recognised angles, once, as the reader builds the chain."""
+        self._recognised = tuple(recognised)
+        return self
+
+    @property
+    def recognised(self) -> tuple[RecognisedAngle, ...]:
+        """The decimal angles the file reader took for multiples of pi/N (``()`` if none).
+
+        Each a :class:`~screwsym.motion.angles.RecognisedAngle` (the text as
+        written, the element where it stood, the value used), in the order read.
+        Set by :meth:`from_urdf` and :meth:`from_dh`; a chain built otherwise,
+        or rebuilt from its ``args`` (``subs``, pickling), has none.
+        """
+        return getattr(self, "_recognised", ())
 
     @property
     def twists(self) -> tuple[Twist, ...]:

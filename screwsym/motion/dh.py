@@ -56,15 +56,16 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, cos, sin
+from sympy import Expr, Float, ImmutableMatrix, cos, sin
 
 from ..core.checks import check_choice, check_instance, check_scalar, check_sequence
 from ..core.screw import ScalarLike
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from .angles import RecognisedAngle, angle_step, recognise_float, warn_recognised
 from .transform import Transform
 
-__all__ = ["dh_twists_and_home", "dh_row_transform"]
+__all__ = ["dh_twists_and_home", "dh_row_transform", "recognise_dh_angles"]
 
 #: the conventions and their aliases
 _CONVENTIONS = ("standard", "modified")
@@ -137,10 +138,52 @@ def _check_joints(joints: Any, n: int) -> tuple[str, ...]:
     return tuple(out)
 
 
+def recognise_dh_angles(rows: Sequence[Sequence[ScalarLike]], angles: str = "pi/12"
+                        ) -> tuple[list[tuple[Any, ...]], tuple[RecognisedAngle, ...]]:
+    r"""The rows with their float angles (``alpha``, ``theta``) that are multiples of pi/N made exact.
+
+    The rule of :func:`screwsym.motion.angles.recognise_float`: a float
+    (Python, NumPy or SymPy ``Float``) within 4 units in its last place of
+    ``k pi/N`` is that multiple (``numpy.pi/2`` is pi/2; ``1.5708`` is not: a
+    float's printed precision is its own).  Exact and symbolic entries, and the
+    lengths ``a`` and ``d``, are kept.  Returns the rows and what was recognised.
+
+    >>> import numpy as np
+    >>> from screwsym.motion.dh import recognise_dh_angles
+    >>> rows, found = recognise_dh_angles([(0.5, np.pi / 2, 0.1, -np.pi / 6)])
+    >>> rows
+    [(0.5, pi/2, 0.1, -pi/6)]
+    >>> found[0]
+    RecognisedAngle(text='1.5707963267948966', element='rows[0][1] (alpha)', value=pi/2)
+    """
+    n = angle_step(angles)
+    rows = check_sequence(rows, "rows", "DH rows (a, alpha, d, theta)")
+    out: list[tuple[Any, ...]] = []
+    found: list[RecognisedAngle] = []
+    for i, row in enumerate(rows):
+        row = list(check_sequence(row, f"rows[{i}]", "entries (a, alpha, d, theta)", 4))
+        for j, label in ((1, "alpha"), (3, "theta")):
+            value = row[j]
+            is_float = isinstance(value, float | Float) or type(value).__module__ == "numpy"
+            if n is None or not is_float or isinstance(value, bool):
+                continue
+            try:
+                x = float(value)
+            except (TypeError, ValueError):
+                continue
+            exact = recognise_float(x, n)
+            if exact is not None:
+                found.append(RecognisedAngle(repr(x), f"rows[{i}][{j}] ({label})", exact))
+                row[j] = exact
+        out.append(tuple(row))
+    return out, tuple(found)
+
+
 def dh_twists_and_home(rows: Sequence[Sequence[ScalarLike]], convention: str = "standard",
                        joints: str | Sequence[str] | None = None, *,
                        base: Transform | None = None,
-                       tool: Transform | None = None) -> tuple[list[Twist], Transform]:
+                       tool: Transform | None = None,
+                       angles: str = "exact") -> tuple[list[Twist], Transform]:
     r"""The joint twists and home pose of a Denavit–Hartenberg table: ``Chain.from_dh``'s work.
 
     Explanation
@@ -182,13 +225,18 @@ def dh_twists_and_home(rows: Sequence[Sequence[ScalarLike]], convention: str = "
     convention : ``"standard"`` (Denavit & Hartenberg 1955) or ``"modified"`` (Craig)
     joints : str or sequence of ``"R"``/``"P"``, optional
     base, tool : Transform, optional
+    angles : ``"exact"`` (default) or ``"pi/N"``
+        With ``"pi/N"``, float angles that are multiples of pi/N are read as
+        those multiples (:func:`recognise_dh_angles`), with a
+        :class:`~screwsym.motion.angles.RecognisedAngleWarning` listing them.
 
     References
     ==========
 
     Denavit & Hartenberg 1955; Craig 2005, (3.6); Lynch & Park 2017, Appendix C.
     """
-    rows = check_sequence(rows, "rows", "DH rows (a, alpha, d, theta)")
+    rows, found = recognise_dh_angles(rows, angles)
+    warn_recognised(found, angle_step(angles) or 12)
     if len(rows) == 0:
         raise ValueError("rows: expected at least one DH row (a, alpha, d, theta), got none")
     convention = check_choice(convention, "convention", _CONVENTIONS)
@@ -197,7 +245,6 @@ def dh_twists_and_home(rows: Sequence[Sequence[ScalarLike]], convention: str = "
     tool = Transform.identity() if tool is None else check_instance(tool, "tool", Transform)
     twists = []
     for i, (row, kind) in enumerate(zip(rows, kinds, strict=True)):
-        row = check_sequence(row, f"rows[{i}]", "entries (a, alpha, d, theta)", 4)
         a, alpha, d, theta = (check_scalar(v, f"rows[{i}][{j}]") for j, v in enumerate(row))
         A = dh_row_transform(a, alpha, d, theta, convention)
         if convention == "modified":

@@ -35,8 +35,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, NoReturn, TypeVar, overload
 
-from sympy import Expr, ImmutableMatrix, S, cancel, cos, sin, sqrt, trigsimp, zeros
+import numpy as np
+from sympy import Expr, Float, ImmutableMatrix, S, cancel, cos, sin, sqrt, trigsimp, zeros
+from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
+from sympy.polys.rings import sring
 
+from ..algebra.circle import reduce_circle, trig_entries
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_flag,
@@ -59,6 +63,7 @@ from ..core.formulas import cross_matrix, moved
 from ..core.inertia import SpatialInertia
 from ..core.screw import MatrixLike, ScalarLike, Screw, VectorLike
 from ..core.tidy import tidy
+from .angles import RecognisedAngle, angle_step, recognise_trig_float, warn_recognised
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -104,6 +109,21 @@ def _decide_small(expr: Expr) -> bool | None:
     return is_zero(expr)
 
 
+def _with_precision(value: Any) -> Any:
+    """A NumPy array of singles (or halves) as nested lists of SymPy Floats of that precision.
+
+    NumPy converts them to doubles, whose float policy (``2**(13 - 53)``) a
+    single's rounding (``2**-24``) fails: ``Float(x, precision=24)`` keeps the
+    precision the data has, and the float policy's tolerance follows it
+    (``2**(13 - 24) = 2**-11`` for a single, 8192 of its units in the last place).
+    """
+    if isinstance(value, np.ndarray) and value.dtype.kind == "f" and value.dtype.itemsize < 8:
+        bits = np.finfo(value.dtype).nmant + 1
+        return [[Float(float(x), precision=bits) for x in row] for row in value.tolist()] \
+            if value.ndim == 2 else value
+    return value
+
+
 def check_rotation(value: Any, name: str) -> ImmutableMatrix:
     """Return ``value`` as a 3x3 rotation matrix, refusing a provably improper one.
 
@@ -114,7 +134,13 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
     :func:`screwsym.core.decide.is_zero` when they are no larger than
     ``ROTATION_CHECK_OPS`` operations; larger ones are accepted undecided.
     A matrix rational in its symbols whose determinant cancels to -1 is a
-    reflection for every value of them, and is refused.
+    reflection for every value of them, and is refused; so is one rational in
+    ``sin(q)``, ``cos(q)`` whose determinant is -1 on the circle
+    ``sin(q)**2 + cos(q)**2 = 1`` (decided exactly by reduction modulo the
+    circle, :mod:`screwsym.algebra.circle`).  A NumPy array of
+    singles is judged at a single's precision: the float policy's tolerance
+    ``2**(13 - 24) = 2**-11`` on the entries of ``R^T R - I`` (doubles:
+    ``2**-40``).
 
     >>> check_rotation([[0, -1, 0], [1, 0, 0], [0, 0, 1]], "R").shape
     (3, 3)
@@ -127,7 +153,7 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
     ...
     ValueError: R: expected an orthonormal matrix (R^T R = I), got R^T R - I = Matrix([[0, 1, 0], [1, 1, 0], [0, 0, 0]])
     """
-    R = check_matrix(value, name, (3, 3))
+    R = check_matrix(_with_precision(value), name, (3, 3))
     gram = R.T * R - ImmutableMatrix.eye(3)
     if any(_decide_small(e) is False for e in gram):
         raise ValueError(
@@ -149,7 +175,37 @@ def check_rotation(value: Any, name: str) -> ImmutableMatrix:
                 f"{name}: expected a rotation (det R = 1), got det R = -1 (a reflection for "
                 "every value of its symbols)"
             )
+    elif sum(e.count_ops() for e in R) <= ROTATION_CHECK_OPS and _reflection_on_circle(R):
+        raise ValueError(
+            f"{name}: expected a rotation (det R = 1), got det R = -1 (a reflection for every "
+            "value of its angles, on the circle sin**2 + cos**2 = 1)"
+        )
     return R
+
+
+def _reflection_on_circle(R: ImmutableMatrix) -> bool:
+    """Whether ``det R + 1`` is provably zero with ``sin(q)``, ``cos(q)`` on the unit circle.
+
+    The entries rational in symbols and in ``sin(q)``, ``cos(q)`` of symbols
+    ``q`` (sums and multiples expanded): the numerator of ``det R + 1`` is
+    reduced modulo ``sin(q)**2 + cos(q)**2 - 1`` (its normal form,
+    :func:`screwsym.algebra.circle.reduce_circle`), and is zero exactly when it
+    vanishes on the circles.  Anything else (other functions) is not decided: False.
+    """
+    entries = trig_entries(list(R))
+    if any(e.has(sin, cos) or not e.is_rational_function() for e in entries):
+        return False
+    num, _ = cancel(ImmutableMatrix(3, 3, entries).det(method="berkowitz") + 1).as_numer_denom()
+    if num == 0:
+        return True
+    symbols = sorted(num.free_symbols, key=str)
+    if not symbols:
+        return False
+    try:
+        ring, P = sring(num, *symbols, extension=True)
+    except (CoercionFailed, GeneratorsError, PolynomialError):
+        return False
+    return not reduce_circle(P, ring)
 
 
 def rodrigues(omega: ImmutableMatrix, theta: Expr, w: Expr = S.One) -> ImmutableMatrix:
@@ -200,6 +256,31 @@ def _both(a: bool | None, b: bool | None) -> bool | None:
 def _tidy(e: Expr) -> Expr:
     """``trigsimp`` where there is trigonometry (``sin^2 + cos^2``), else the entry itself."""
     return trigsimp(e) if e.has(sin, cos) else e
+
+
+def _recognise_rotation(R: ImmutableMatrix, n: int, name: str) -> ImmutableMatrix:
+    """``R`` with float entries that are sines and cosines of multiples of pi/n made exact.
+
+    All or nothing: every float entry must be recognised and the exact matrix
+    must be a rotation exactly (``R^T R = I``, ``det R = 1``); else ``R`` as given.
+    """
+    floats = [(i, e) for i, e in enumerate(R) if isinstance(e, Float)]
+    if not floats or not all(e.is_number for e in R):
+        return R
+    exact = list(R)
+    found = []
+    for i, e in floats:
+        value = recognise_trig_float(float(e), n)
+        if value is None:
+            return R
+        exact[i] = value
+        found.append(RecognisedAngle(repr(float(e)), f"{name}[{i // 3}, {i % 3}]", value))
+    E = ImmutableMatrix(3, 3, exact)
+    gram = (E.T * E - ImmutableMatrix.eye(3)).applyfunc(lambda x: x.expand())
+    if not gram.is_zero_matrix or (E.det(method="berkowitz") - 1).expand() != 0:
+        return R
+    warn_recognised(found, n, stacklevel=3)
+    return E
 
 
 class Transform(ScrewsymBasic):
@@ -319,7 +400,7 @@ class Transform(ScrewsymBasic):
         return cls._new(R, (ImmutableMatrix.eye(3) - R) * point)
 
     @classmethod
-    def from_matrix(cls, M: MatrixLike, *, name: str = "M") -> Self:
+    def from_matrix(cls, M: MatrixLike, *, name: str = "M", angles: str = "exact") -> Self:
         """The transform of the 4x4 homogeneous matrix ``[[R, p], [0, 1]]``.
 
         Errors name the argument ``name`` (as :meth:`Screw.from_matrix
@@ -335,12 +416,35 @@ class Transform(ScrewsymBasic):
         Traceback (most recent call last):
         ...
         ValueError: M: expected the last row [0, 0, 0, 1], got [0, 0, 1, 1]
+
+        ``angles="pi/12"`` (or ``"pi/N"``) reads a rotation written in floats
+        whose every entry is, to a float's precision
+        (:func:`screwsym.motion.angles.recognise_trig_float`), a sine or cosine
+        of a multiple of pi/12 as those exact values, when they make an exact
+        rotation, with a :class:`~screwsym.motion.angles.RecognisedAngleWarning`;
+        the translation is kept as given:
+
+        >>> import warnings, numpy as np
+        >>> c = np.cos(np.pi / 6)
+        >>> with warnings.catch_warnings():
+        ...     warnings.simplefilter("ignore")
+        ...     T = Transform.from_matrix([[c, -0.5, 0, 0.25], [0.5, c, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]],
+        ...                               angles="pi/12")
+        >>> T.R
+        Matrix([
+        [sqrt(3)/2,      -1/2, 0],
+        [      1/2, sqrt(3)/2, 0],
+        [        0,         0, 1]])
         """
-        M = check_matrix(M, name, (4, 4))
+        n = angle_step(angles)
+        M = check_matrix(_with_precision(M), name, (4, 4))
         last = list(M[3, :])
         if any(_decide_small(e - target) is False for e, target in zip(last, (0, 0, 0, 1), strict=True)):
             raise ValueError(f"{name}: expected the last row [0, 0, 0, 1], got {last}")
-        return cls._new(check_rotation(M[:3, :3], f"{name}[:3, :3]"), M[:3, 3])
+        R = check_rotation(M[:3, :3], f"{name}[:3, :3]")
+        if n is not None:
+            R = _recognise_rotation(R, n, f"{name}[:3, :3]")
+        return cls._new(R, M[:3, 3])
 
     # ------------------------------------------------------------------ parts
     @property

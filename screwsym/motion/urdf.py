@@ -63,36 +63,44 @@ Section 4.1.3 (the product of exponentials from a robot description).
 from __future__ import annotations
 
 import importlib
+import importlib.resources
 import math
 import os
 import re
+import stat
 import warnings
 from pathlib import Path
 from typing import Any, NamedTuple
 
-from sympy import Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
+from sympy import QQ, Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, sympify, zeros
+from sympy.polys.matrices import DomainMatrix
+from sympy.polys.polyerrors import CoercionFailed
 
 from ..core.checks import check_scalar
 from ..core.screw import ScalarLike
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from .angles import MIN_PLACES, RecognisedAngle, angle_step, recognise_decimal, warn_recognised
 from .transform import Transform
 
-__all__ = ["urdf_twists_and_home", "read_inertials", "LinkInertial", "path_joints"]
+__all__ = ["urdf_twists_and_home", "read_inertials", "read_urdf", "UrdfRobot", "LinkInertial",
+           "path_joints", "sample_urdf", "SAMPLES", "MAX_NUMBER_CHARS", "MAX_EXPONENT", "MAX_FILE_BYTES"]
 
-#: a decimal number as URDF writes one (no expressions, no nan/inf)
-_DECIMAL = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-#: the angle policies: "exact", or "pi/N"
-_PI_OVER = re.compile(r"pi/([1-9]\d{0,3})")
-#: an angle this close to a multiple, but outside the tolerance, is warned about
+#: a decimal number as URDF writes one (ASCII digits only; no expressions, no nan/inf)
+_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?", re.ASCII)
+#: the longest number text read (characters) and the largest decimal exponent: a 12-character
+#: ``1e99999999`` would otherwise be a 100-million-digit integer
+MAX_NUMBER_CHARS = 100
+MAX_EXPONENT = 300
+#: a larger angle (radians) is kept as written, never compared with multiples of pi/N
+_LARGEST_ANGLE = 10**4
+#: an angle this close to a multiple, but not recognised, is warned about
 _NEAR_MISS = 1e-3
 #: the joint types on a path
 _MOVING = ("revolute", "continuous", "prismatic")
 _SUPPORTED = _MOVING + ("fixed",)
 
 _INSTALL = 'pip install -e ".[urdf]"'
-#: the default tolerance of the angle policy "pi/N", in radians
-ANGLE_TOL = Rational(1, 10**9)
 
 
 def _etree() -> Any:
@@ -106,54 +114,115 @@ def _etree() -> Any:
 
 
 def _number(text: str | None, where: str) -> Rational:
-    """The exact rational of a decimal text such as ``0.089159`` or ``2.7518e-02``."""
+    """The exact rational of a decimal text such as ``0.089159`` or ``2.7518e-02``.
+
+    ASCII digits only, at most ``MAX_NUMBER_CHARS`` characters and a decimal
+    exponent of at most ``MAX_EXPONENT`` in size (the number itself, not the
+    exponent as written: ``0.000e400`` is refused, ``1e-300`` is read).
+    """
     if text is None or not _DECIMAL.fullmatch(text.strip()):
         raise ValueError(f"{where}: expected a decimal number, got {text!r}")
-    return Rational(text.strip())
+    text = text.strip()
+    if len(text) > MAX_NUMBER_CHARS:
+        raise ValueError(f"{where}: expected a decimal number of at most {MAX_NUMBER_CHARS} "
+                         f"characters, got one of {len(text)}")
+    mantissa, _, exponent = text.lower().partition("e")
+    if exponent and abs(int(exponent)) > MAX_EXPONENT:
+        raise ValueError(f"{where}: expected a decimal exponent of at most {MAX_EXPONENT} in size, "
+                         f"got {text!r}")
+    return Rational(text)
 
 
-def _numbers(text: str | None, where: str, count: int, default: str) -> list[Rational]:
+def _texts(text: str | None, where: str, count: int, default: str) -> list[str]:
     if text is None:
         text = default
     parts = text.split()
     if len(parts) != count:
         raise ValueError(f"{where}: expected {count} decimal numbers, got {text!r}")
-    return [_number(p, where) for p in parts]
+    return parts
+
+
+def _numbers(text: str | None, where: str, count: int, default: str) -> list[Rational]:
+    return [_number(p, where) for p in _texts(text, where, count, default)]
 
 
 class _AnglePolicy:
-    """``"exact"``, or snapping to multiples of pi/N within a tolerance."""
+    """``"exact"``, or recognising multiples of pi/N (printed precision, or within ``angle_tol``).
+
+    Keeps the :class:`RecognisedAngle` records of the values it changed, in order.
+    """
 
     def __init__(self, angles: Any, angle_tol: Any) -> None:
-        if not isinstance(angles, str):
-            raise TypeError(f"angles: expected 'exact' or 'pi/N' (a str), got {type(angles).__name__}")
-        self.n: int | None = None
-        if angles != "exact":
-            m = _PI_OVER.fullmatch(angles.replace(" ", ""))
-            if m is None:
-                raise ValueError(f"angles: expected 'exact' or 'pi/N' with N a positive integer, "
-                                 f"e.g. 'pi/12', got {angles!r}")
-            self.n = int(m.group(1))
-        tol = ANGLE_TOL if angle_tol is None else check_scalar(angle_tol, "angle_tol")
-        if not tol.is_number or not (0 < tol < Rational(1, 10**3)):
-            raise ValueError(f"angle_tol: expected a number in (0, 1/1000), got {angle_tol!r}")
-        self.tol = float(tol)
+        self.n = angle_step(angles)
+        self.tol: float | None = None
+        if angle_tol is not None:
+            tol = check_scalar(angle_tol, "angle_tol")
+            if not tol.is_number or not (0 < tol < Rational(1, 10**3)):
+                raise ValueError(f"angle_tol: expected a number in (0, 1/1000), got {angle_tol!r}")
+            self.tol = float(tol)
+        self.recognised: list[RecognisedAngle] = []
 
-    def __call__(self, x: Rational, where: str) -> Expr:
-        if self.n is None or x == 0:
-            return x
-        step = math.pi / self.n
-        k = round(float(x) / step)
-        target = k * pi / self.n
-        # the gap to 30 digits: x is exact, the multiple of pi is evaluated to 30 digits
-        gap = abs(float((x - target).evalf(30)))
-        if gap <= self.tol:
+    def __call__(self, text: str, where: str) -> Expr:
+        x = _number(text, where)
+        if self.n is None or x == 0 or abs(x) > _LARGEST_ANGLE:
+            return x  # (an angle of 10**4 radians or more is no printing of a multiple of pi)
+        if self.tol is None:
+            target = recognise_decimal(text, self.n)
+        else:
+            k = round(float(x) * self.n / math.pi)
+            target = k * pi / self.n
+            if abs(float((x - target).evalf(30))) > self.tol:
+                target = None
+        if target is not None:
+            self.recognised.append(RecognisedAngle(text.strip(), where, target))
             return target
-        if gap <= _NEAR_MISS:
+        k = round(float(x) * self.n / math.pi)
+        gap = abs(float((x - k * pi / self.n).evalf(30)))
+        if gap <= _NEAR_MISS and k != 0:
             warnings.warn(
-                f"{where}: the angle {x} is {gap:.1e} from {target}, outside angle_tol "
-                f"{self.tol:g}: kept as written", UserWarning, stacklevel=4)
+                f"{where}: the angle {text.strip()} is {gap:.1e} from {k * pi / self.n} but is "
+                f"not a printing of it to {MIN_PLACES} or more decimal places: kept as written",
+                UserWarning, stacklevel=5)
         return x
+
+    def report(self) -> tuple[RecognisedAngle, ...]:
+        """The recognised values, each once (the inertials walk the joints' origins again)."""
+        return tuple(dict.fromkeys(self.recognised))
+
+    def warn(self) -> None:
+        """One :class:`RecognisedAngleWarning` listing what was recognised (if anything)."""
+        warn_recognised(self.report(), self.n or 12, stacklevel=4)
+
+
+#: the number field of the sines and cosines of multiples of pi/12
+_FIELD = QQ.algebraic_field(sqrt(2), sqrt(3))
+
+
+def _in_field(M: ImmutableMatrix) -> DomainMatrix | None:
+    """``M`` as a matrix over Q(sqrt 2, sqrt 3), or None when an entry is not in that field."""
+    try:
+        rows = [[_FIELD.from_sympy(sympify(e)) for e in M.row(i)] for i in range(M.rows)]
+    except (CoercionFailed, NotImplementedError, ValueError):
+        return None
+    return DomainMatrix(rows, M.shape, _FIELD)
+
+
+def _product(A: ImmutableMatrix, B: ImmutableMatrix) -> ImmutableMatrix:
+    """``A B``, in Q(sqrt 2, sqrt 3) when both are (entries in lowest form ``a + b sqrt 2 +
+    c sqrt 3 + d sqrt 6``, at once: the frames of a robot at 15-degree multiples), else tidied.
+
+    SymPy's ``tidy`` of nested products of radicals grows with each frame (a 6-joint robot
+    took 12 s to read); the field's arithmetic does not.
+    """
+    a, b = _in_field(A), _in_field(B)
+    if a is None or b is None:
+        return tidy(A * B)
+    return ImmutableMatrix((a * b).to_Matrix())
+
+
+def _compose(A: Transform, B: Transform) -> Transform:
+    """``A @ B`` (first ``B``, then ``A``) with :func:`_product`'s arithmetic."""
+    return Transform._new(_product(A.R, B.R), _product(A.R, B.p) + A.p)
 
 
 def _rpy_matrix(r: Expr, p: Expr, y: Expr) -> ImmutableMatrix:
@@ -171,9 +240,68 @@ def _origin(element: Any, where: str, policy: _AnglePolicy) -> Transform:
     if origin is None:
         return Transform.identity()
     xyz = _numbers(origin.get("xyz"), f"{where}: <origin xyz>", 3, "0 0 0")
-    rpy = _numbers(origin.get("rpy"), f"{where}: <origin rpy>", 3, "0 0 0")
-    rpy = [policy(a, f"{where}: <origin rpy>") for a in rpy]
+    rpy_where = f"{where}: <origin rpy>"
+    texts = _texts(origin.get("rpy"), rpy_where, 3, "0 0 0")
+    rpy = [policy(a, f"{rpy_where} {part}") for a, part in zip(texts, ("roll", "pitch", "yaw"), strict=True)]
     return Transform._new(_rpy_matrix(*rpy), ImmutableMatrix(xyz))
+
+
+#: the largest URDF file read, in bytes (the largest example-robot-data file is under 1 MB)
+MAX_FILE_BYTES = 64 * 2**20
+#: byte-order marks that say the encoding (expat reads them and the XML declaration)
+_BOMS = (b"\xef\xbb\xbf", b"\xff\xfe", b"\xfe\xff")
+
+
+def _file_bytes(path: Path) -> bytes:
+    """The bytes of a regular file of at most MAX_FILE_BYTES, or a ValueError naming the path."""
+    try:
+        info = path.stat()
+    except OSError as error:
+        raise ValueError(f"source: no URDF file at {str(path)!r} ({error.strerror}); "
+                         "XML text must start with '<'") from None
+    if not stat.S_ISREG(info.st_mode):
+        raise ValueError(f"source: expected a regular file, got {str(path)!r} "
+                         "(a directory, device or pipe)")
+    if info.st_size > MAX_FILE_BYTES:
+        raise ValueError(f"source: the file {str(path)!r} has {info.st_size} bytes, more than "
+                         f"{MAX_FILE_BYTES} (MAX_FILE_BYTES)")
+    with path.open("rb") as f:
+        data = f.read(MAX_FILE_BYTES + 1)
+    if len(data) > MAX_FILE_BYTES:
+        raise ValueError(f"source: the file {str(path)!r} grew past {MAX_FILE_BYTES} bytes")
+    return data
+
+
+def _xml_of(source: Any) -> str | bytes:
+    """The XML of ``source`` (a path, the text, or its bytes), as the parser takes it.
+
+    Bytes keep their encoding, read by the parser from a byte-order mark or the
+    XML declaration (UTF-16, latin-1, ...); a leading UTF-8 byte-order mark or
+    white space is allowed before the XML.
+    """
+    if isinstance(source, os.PathLike):
+        data = _file_bytes(Path(source))
+    elif isinstance(source, bytes | bytearray):
+        data = bytes(source)
+    elif isinstance(source, str):
+        text = source.lstrip("\ufeff \t\r\n")
+        if text.startswith("<"):
+            return text
+        if not source.strip():
+            raise ValueError("source: expected a URDF file path or its XML text, got an empty string")
+        if "<" in source or "\n" in source:
+            raise ValueError(f"source: expected a URDF file path or XML text starting with '<', "
+                             f"got {source[:40]!r}...")
+        data = _file_bytes(Path(source))
+    else:
+        raise TypeError(f"source: expected a URDF file path or its XML text, got {type(source).__name__}")
+    if data.startswith(b"\xef\xbb\xbf"):
+        data = data[3:]
+    if not data.startswith(_BOMS[1:]):
+        data = data.lstrip(b" \t\r\n")
+    if not data:
+        raise ValueError("source: the URDF is empty")
+    return data
 
 
 class _Joint(NamedTuple):
@@ -189,15 +317,10 @@ class _Robot:
 
     def __init__(self, source: Any) -> None:
         ElementTree = _etree()
-        if isinstance(source, os.PathLike):
-            text = Path(source).read_text(encoding="utf-8")
-        elif isinstance(source, bytes):
-            text = source.decode("utf-8")
-        elif isinstance(source, str):
-            text = source if source.lstrip().startswith("<") else Path(source).read_text(encoding="utf-8")
-        else:
-            raise TypeError(f"source: expected a URDF file path or its XML text, got {type(source).__name__}")
-        root = ElementTree.fromstring(text)
+        try:
+            root = ElementTree.fromstring(_xml_of(source))
+        except ElementTree.ParseError as error:
+            raise ValueError(f"source: not well-formed XML: {error}") from None
         if root.tag != "robot":
             raise ValueError(f"source: expected a <robot> root element, got <{root.tag}>")
         self.name = root.get("name", "")
@@ -293,7 +416,7 @@ def _walk(robot: _Robot, joints: list[_Joint], policy: _AnglePolicy) -> list[tup
     T = Transform.identity()
     frames = []
     for joint in joints:
-        T = tidy(T @ _origin(joint.element, f"<joint name={joint.name!r}>", policy))
+        T = _compose(T, _origin(joint.element, f"<joint name={joint.name!r}>", policy))
         frames.append((joint, T))
     return frames
 
@@ -311,7 +434,7 @@ def path_joints(source: Any, base: str | None = None, tip: str | None = None) ->
 
 
 def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None = None, *,
-                         angles: str = "exact",
+                         angles: str = "pi/12",
                          angle_tol: ScalarLike | None = None) -> tuple[list[Twist], Transform]:
     r"""The joint twists and home pose of the path from link ``base`` to link ``tip``.
 
@@ -352,7 +475,13 @@ def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None =
         <parent link="fore"/> <child link="hand"/> <origin xyz="0.1 0 0"/>
       </joint>
     </robot>
-    >>> arm = Chain.from_urdf(TWO_LINK_URDF, angles="pi/12")
+    >>> import warnings
+    >>> from screwsym.motion.angles import RecognisedAngleWarning
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore", RecognisedAngleWarning)   # (it lists what .recognised does)
+    ...     arm = Chain.from_urdf(TWO_LINK_URDF)
+    >>> arm.recognised
+    (RecognisedAngle(text='1.5707963267948966', element="<joint name='elbow'>: <origin rpy> yaw", value=pi/2),)
     >>> arm.twists
     (Twist([0, 1, 0], [-89159/1000000, 0, 0]), Twist([0, 0, 1], [0, -17/40, 0]))
     >>> arm.home.matrix
@@ -362,9 +491,9 @@ def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None =
     [0,  0, 1, 89159/1000000],
     [0,  0, 0,           1]])
 
-    By default the angle is the decimal as written, exactly:
+    With ``angles="exact"`` the angle is the decimal as written, exactly:
 
-    >>> Chain.from_urdf(TWO_LINK_URDF).home.R[0, 0]
+    >>> Chain.from_urdf(TWO_LINK_URDF, angles="exact").home.R[0, 0]
     cos(7853981633974483/5000000000000000)
 
     Parameters
@@ -373,9 +502,12 @@ def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None =
     source : str, os.PathLike or bytes
     base, tip : str, optional
         Link names.
-    angles : ``"exact"`` (default) or ``"pi/N"``
+    angles : ``"pi/12"`` (default), ``"pi/N"`` or ``"exact"``
+        Recognise rpy decimals that print a multiple of pi/N (the rule:
+        :mod:`screwsym.motion.angles`), or keep every decimal as written.
     angle_tol : number, optional
-        The snapping tolerance in radians (default ``10**-9``), in (0, 10**-3).
+        Instead of the printed-precision rule, recognise an angle within this
+        many radians of a multiple of pi/N; in (0, 10**-3).
 
     References
     ==========
@@ -384,12 +516,18 @@ def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None =
     """
     policy = _AnglePolicy(angles, angle_tol)
     robot = _Robot(source)
-    base, tip, joints = robot.path(base, tip)
+    twists, home = _twists_and_home(robot, *robot.path(base, tip), policy)
+    policy.warn()
+    return twists, home
+
+
+def _twists_and_home(robot: _Robot, base: str, tip: str, joints: list[_Joint],
+                     policy: _AnglePolicy) -> tuple[list[Twist], Transform]:
     twists = []
     T = Transform.identity()
     for joint, T in _walk(robot, joints, policy):
         if joint.type in _MOVING:
-            direction = tidy(T.R * _axis(joint))
+            direction = _product(T.R, _axis(joint))
             twists.append(Twist.translation(direction) if joint.type == "prismatic"
                           else Twist.rotation(direction, point=T.p))
     if not twists:
@@ -426,7 +564,7 @@ def _link_inertial(robot: _Robot, name: str, T: Transform,
         raise ValueError(f"{where} <mass value>: expected a mass >= 0, got {mass}")
     if mass == 0:
         return None
-    frame = tidy(T @ _origin(inertial, where, policy))
+    frame = _compose(T, _origin(inertial, where, policy))
     el = inertial.find("inertia")
     keys = ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")
     if el is None:
@@ -438,7 +576,7 @@ def _link_inertial(robot: _Robot, name: str, T: Transform,
 
 
 def read_inertials(source: Any, base: str | None = None, tip: str | None = None, *,
-                   angles: str = "exact",
+                   angles: str = "pi/12",
                    angle_tol: ScalarLike | None = None) -> tuple[LinkInertial, ...]:
     r"""The inertia of each moving body on the path from ``base`` to ``tip``, exact, at home.
 
@@ -464,7 +602,10 @@ def read_inertials(source: Any, base: str | None = None, tip: str | None = None,
     ========
 
     >>> from screwsym.motion.urdf import read_inertials
-    >>> body = read_inertials(TWO_LINK_URDF, angles="pi/12")[1]
+    >>> import warnings
+    >>> with warnings.catch_warnings():
+    ...     warnings.simplefilter("ignore")      # the RecognisedAngleWarning of pi/2
+    ...     body = read_inertials(TWO_LINK_URDF)[1]
     >>> body.joint, body.links, body.mass
     ('elbow', ('fore', 'hand'), 2)
     >>> body.com.T
@@ -483,24 +624,50 @@ def read_inertials(source: Any, base: str | None = None, tip: str | None = None,
     """
     policy = _AnglePolicy(angles, angle_tol)
     robot = _Robot(source)
-    base, tip, joints = robot.path(base, tip)
+    _, _, joints = robot.path(base, tip)
+    out = _inertials(robot, joints, policy)
+    policy.warn()
+    return out
+
+
+def _body_parts(robot: _Robot, joint: _Joint, T0: Transform, on_path: set[str],
+                policy: _AnglePolicy) -> list[tuple[str, Transform]]:
+    """The links of the body joint moves with their frames: its child, and every link below it
+    through fixed joints and joints off the path (locked at zero: the Panda's fingers).  Each
+    link is reached once: a link that is the child of two joints, or a cycle, is refused."""
+    parts: list[tuple[str, Transform]] = []
+    seen: set[str] = set()
+    stack = [(joint.child, T0)]
+    while stack:
+        link, T = stack.pop()
+        parents = robot.parent_joint.get(link, [])
+        if len(parents) > 1:
+            names = [j.name for j in parents]
+            raise ValueError(f"<link name={link!r}>: the child of {len(parents)} joints {names} "
+                             "(a closed loop): its inertia cannot be given to one body")
+        if link in seen:  # pragma: no cover - a cycle makes a link the child of two joints
+            raise ValueError(f"<link name={link!r}>: the joints form a cycle")
+        seen.add(link)
+        parts.append((link, T))
+        for j in robot.child_joints.get(link, []):
+            if j.type == "fixed" or j.name not in on_path:
+                if j.child in seen or j.child == joint.parent:
+                    raise ValueError(f"<joint name={j.name!r}>: the joints form a cycle "
+                                     f"(back to the link {j.child!r})")
+                stack.append((j.child, _compose(T, _origin(j.element, f"<joint name={j.name!r}>", policy))))
+    return parts
+
+
+def _inertials(robot: _Robot, joints: list[_Joint], policy: _AnglePolicy) -> tuple[LinkInertial, ...]:
     frames = dict((j.name, T) for j, T in _walk(robot, joints, policy))
     on_path = {j.name for j in joints}
+    order = {name: i for i, name in enumerate(robot.links)}
     out = []
     for joint in joints:
         if joint.type not in _MOVING:
             continue
-        # the body: the child link and every link below it through fixed joints and through
-        # joints off the path (locked at their zero position: the Panda's fingers)
-        parts: list[tuple[str, Transform]] = []
-        stack = [(joint.child, frames[joint.name])]
-        while stack:
-            link, T = stack.pop()
-            parts.append((link, T))
-            for j in robot.child_joints.get(link, []):
-                if j.type == "fixed" or j.name not in on_path:
-                    stack.append((j.child, tidy(T @ _origin(j.element, f"<joint name={j.name!r}>", policy))))
-        parts.sort(key=lambda part: list(robot.links).index(part[0]))
+        parts = _body_parts(robot, joint, frames[joint.name], on_path, policy)
+        parts.sort(key=lambda part: order[part[0]])
         pieces = [p for p in (_link_inertial(robot, link, T, policy) for link, T in parts) if p is not None]
         mass: Expr = sum((m for m, _, _ in pieces), S.Zero)
         if mass == 0:
@@ -515,6 +682,70 @@ def read_inertials(source: Any, base: str | None = None, tip: str | None = None,
         out.append(LinkInertial(joint.name, tuple(link for link, _ in parts), mass,
                                 ImmutableMatrix(com), ImmutableMatrix(inertia)))
     return tuple(out)
+
+
+class UrdfRobot(NamedTuple):
+    """What :func:`read_urdf` reads: ``twists``, ``home``, ``inertials`` (or None) and ``recognised``."""
+
+    twists: tuple[Twist, ...]
+    home: Transform
+    inertials: tuple[LinkInertial, ...] | None
+    recognised: tuple[RecognisedAngle, ...]
+
+
+def read_urdf(source: Any, base: str | None = None, tip: str | None = None, *,
+              angles: str = "pi/12", angle_tol: ScalarLike | None = None,
+              inertials: bool = False) -> UrdfRobot:
+    r"""Read the file once: twists and home, the inertials if asked, and the recognised angles.
+
+    What :meth:`Chain.from_urdf <screwsym.motion.chain.Chain.from_urdf>` uses:
+    :func:`urdf_twists_and_home` and :func:`read_inertials` in one parse, with
+    one :class:`~screwsym.motion.angles.RecognisedAngleWarning` listing every
+    angle recognised (the same angle of a joint is listed once).
+
+    >>> import warnings
+    >>> from screwsym.motion.angles import RecognisedAngleWarning
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     robot = read_urdf(TWO_LINK_URDF, inertials=True)
+    >>> [w.category.__name__ for w in caught], robot.inertials[1].mass
+    (['RecognisedAngleWarning'], 2)
+    >>> [(r.text, r.value) for r in robot.recognised]
+    [('1.5707963267948966', pi/2)]
+    """
+    policy = _AnglePolicy(angles, angle_tol)
+    robot = _Robot(source)
+    base, tip, joints = robot.path(base, tip)
+    twists, home = _twists_and_home(robot, base, tip, joints, policy)
+    bodies = _inertials(robot, joints, policy) if inertials else None
+    policy.warn()
+    return UrdfRobot(tuple(twists), home, bodies, policy.report())
+
+
+#: the robot files shipped in the package (screwsym/motion/urdf_samples, from example-robot-data)
+SAMPLES = ("panda.urdf", "ur5_robot.urdf")
+
+
+def sample_urdf(name: str) -> Path:
+    """The path of a URDF file shipped with screwsym: ``"panda.urdf"`` or ``"ur5_robot.urdf"``.
+
+    Found through :mod:`importlib.resources` in the installed package, so that it
+    works from any directory (the files' origin and licences:
+    ``screwsym/motion/urdf_samples/README.md``).
+
+    >>> from screwsym import Chain
+    >>> from screwsym.motion.urdf import sample_urdf
+    >>> sample_urdf("ur5_robot.urdf").name
+    'ur5_robot.urdf'
+    >>> Chain.from_urdf(sample_urdf("ur5_robot.urdf"), "base_link", "tool0").n_joints
+    6
+    """
+    if name not in SAMPLES:
+        raise ValueError(f"name: expected one of {SAMPLES}, got {name!r}")
+    path = importlib.resources.files("screwsym.motion") / "urdf_samples" / name
+    if not isinstance(path, Path):  # pragma: no cover - a package imported from a zip file
+        raise ValueError(f"name: {name!r} is not a file on disk here (the package is zipped)")
+    return path
 
 
 #: a small URDF used by the examples (a two-joint arm with a fixed flange)

@@ -137,7 +137,7 @@ def test_inertias_against_pinocchio(name):
     pinocchio's model.inertias (per joint, fixed links merged, in the joint frame) moved to the
     world at q = 0.  Read exactly as written (angles="exact"), as pinocchio reads the decimals."""
     path, base, tip = ROBOTS[name]
-    ours = read_inertials(path, base, tip)
+    ours = read_inertials(path, base, tip, angles="exact")
     *_, model, data, ids = pinocchio_batch(name, np.zeros((1, len(ours))))
     pin.forwardKinematics(model, data, pin.neutral(model))
     def below(j, jid):  # is pinocchio's joint j jid itself or behind it, off the path?

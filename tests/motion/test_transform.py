@@ -393,3 +393,47 @@ def test_an_axis_such_as_1_over_y_is_normalised_not_refused_with_an_internal_nam
     # a direction that is not real is refused under the user's name
     with pytest.raises(ValueError, match=r"direction\[0\]: expected a real value, got sqrt\(y\)"):
         Transform.rotation([sqrt(y), 1, 0], t)
+
+
+def test_a_reflection_written_with_sin_and_cos_is_refused():
+    """det R = -(cos t**2 + sin t**2) = -1 for every t: decided exactly on the circle
+    (screwsym.algebra.circle), by Transform and Transform.from_matrix; the rotation with the
+    same entries but +1 is accepted (the check can say yes), and so are angle sums."""
+    from sympy import Matrix, cos, sin, symbols
+
+    t, u = symbols("t u", real=True)
+    reflections = [
+        [[-1, 0, 0], [0, cos(t), -sin(t)], [0, sin(t), cos(t)]],
+        [[cos(t), sin(t), 0], [sin(t), -cos(t), 0], [0, 0, 1]],
+        [[cos(t + u), -sin(t + u), 0], [sin(t + u), cos(t + u), 0], [0, 0, -1]],
+        [[cos(2 * t), sin(2 * t), 0], [sin(2 * t), -cos(2 * t), 0], [0, 0, 1]],
+    ]
+    for R in reflections:
+        with pytest.raises(ValueError, match=r"R: expected a rotation \(det R = 1\), got det R = -1 "
+                           r"\(a reflection for every value of its angles"):
+            Transform(R, [0, 0, 0])
+        M = Matrix(R).row_join(Matrix([1, 2, 3])).col_join(Matrix([[0, 0, 0, 1]]))
+        with pytest.raises(ValueError, match=r"M\[:3, :3\]: expected a rotation \(det R = 1\)"):
+            Transform.from_matrix(M)
+        flipped = Matrix(R)
+        flipped[:, 0] = -flipped[:, 0]  # det +1: a rotation
+        assert Transform(flipped, [0, 0, 0]).R == flipped
+
+
+def test_a_float32_rotation_is_judged_at_its_precision():
+    """A rotation in numpy.float32 is orthonormal to a single's precision (2**-24), which the
+    double's tolerance refused; it is judged with the float policy at 24 bits (2**-11 on the
+    entries of R^T R - I).  A matrix off by 1e-2 is still refused."""
+    import numpy as np
+
+    c, s = np.cos(0.3), np.sin(0.3)
+    R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]], dtype=np.float32)
+    T = Transform(R, [0, 0, 0])
+    assert abs(float(T.R[0, 0]) - c) < 1e-7
+    M = np.eye(4, dtype=np.float32)
+    M[:3, :3] = R
+    assert Transform.from_matrix(M).R == T.R
+    with pytest.raises(ValueError, match="expected an orthonormal matrix"):
+        Transform(R * np.float32(1.01), [0, 0, 0])
+    with pytest.raises(ValueError, match="expected an orthonormal matrix"):
+        Transform(np.array(R, dtype=np.float64), [0, 0, 0])  # as doubles, a single's error is too big
