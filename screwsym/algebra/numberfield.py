@@ -351,7 +351,7 @@ def _surd_terms(e, primes: dict) -> dict | None:
         return total
     if e.is_Mul or e.is_Pow and e.exp.is_Integer and 0 <= e.exp <= SURD_POWER:
         factors = e.args if e.is_Mul else [e.base] * int(e.exp)
-        prod: dict | None = {(): QQ.one}
+        prod: dict = {(): QQ.one}
         for a in factors:
             t = _surd_terms(a, primes)
             if t is None:
