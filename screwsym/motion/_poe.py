@@ -537,10 +537,17 @@ class _Writer:
 
     # --- step 2: the angle-sum formulas and the Pythagorean identity
     def gather(self, D: dict) -> dict:
+        """The angle-sum formulas applied until none applies, then the Pythagorean identity.
+
+        A pass looks only at the terms that are new or whose coefficient changed in the pass
+        before (the formulas pair two terms, and each pair is found from either of them), so
+        a long polynomial is not scanned again for each gathering."""
         changed = True
+        todo = list(D)
         while changed:
             changed = False
-            for m in list(D):
+            before = dict(D)
+            for m in todo:
                 if m not in D:
                     continue
                 trig = [g for g, k in m if k == 1 and g in self.trig]
@@ -548,8 +555,10 @@ class _Writer:
                     if self._gather_pair(D, m, g1, g2):
                         changed = True
                         break
+            todo = [m for m, c in D.items() if before.get(m) != c]
             if not changed:
                 changed = self._pythagoras(D)
+                todo = list(D)
         return D
 
     def _gather_pair(self, D: dict, m: tuple, g1: int, g2: int) -> bool:
