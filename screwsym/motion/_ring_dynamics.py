@@ -17,8 +17,9 @@ formulas gathered and the terms nested by the joints (``_poe``'s writer).
 Every step is an identity of that ring (the Pythagorean relation and ``r^2 = p`` are
 true for the values they stand for), so the results equal those of the recursions of
 :mod:`.dynamics` on expressions.  A chain outside ``_poe``'s class (helical joints,
-non-unit axes, joint values that are not distinct symbols, a joint variable in the
-inertias) gives None here and takes that general path.
+non-unit axes, joint values that are neither distinct symbols nor numbers whose cosine
+and sine are sums of products of square roots, a joint variable in the inertias) gives
+None here and takes that general path.
 
 References
 ==========
@@ -32,8 +33,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from sympy import Expr, ImmutableMatrix, Symbol
+from sympy import Dummy, Expr, Float, ImmutableMatrix, S, Symbol, cos, sin
 
+from ..algebra.numberfield import surd_normal
 from . import _poe
 
 __all__: list[str] = []
@@ -42,7 +44,12 @@ __all__: list[str] = []
 class _Ring:
     """Vector arithmetic of 3- and 6-vectors over one chain's ring, in the normal form."""
 
-    def __init__(self, twists: Sequence[Any], home: Any, q: tuple, extra: list) -> None:
+    def __init__(self, twists: Sequence[Any], home: Any, q: tuple, extra: list,
+                 values: dict | None = None) -> None:
+        """``values``: joint -> ``(q, cos q, sin q)`` for the joints given as numbers (``q`` holds
+        a stand-in symbol there); their motions are built from these numbers."""
+        self.values = values or {}
+        extra = extra + [x for v in self.values.values() for x in v]
         self.engine = engine = _poe._Engine(list(twists), home, q, extra=extra, groups=False)
         # the joints' own circles cos(q_i)^2 + sin(q_i)^2 = 1, reduced with the geometry's
         index = {s: i for i, s in enumerate(engine.symbols)}
@@ -66,13 +73,23 @@ class _Ring:
         """``E_i = exp6($_i, q_i) = (R_i, p_i)`` of each joint, as ring elements."""
         e = self.engine
         out = []
+        one, zero = self.R.one, self.R.zero
         for i in range(e.n):
             w, v = e.twists[i]
+            given = self.values.get(i)
             if e.kinds[i] == "P":
-                qi = e.gen_of[e.q[i]]
+                qi = self.el(given[0]) if given else e.gen_of[e.q[i]]
                 out.append((e._rot(w, None, 1), [x * qi for x in v]))
                 continue
-            R = e._rot(w, e.angle_of[i], 1)
+            if given:  # R = I + s K + (1 - c) K^2 at the numbers cos q, sin q
+                c, s_ = self.el(given[1]), self.el(given[2])
+                Kw = [[zero, -w[2], w[1]], [w[2], zero, -w[0]], [-w[1], w[0], zero]]
+                K2 = [[self.red(sum((Kw[a][b] * Kw[b][d] for b in range(3)), zero)) for d in range(3)]
+                      for a in range(3)]
+                R = [[self.red((one if a == d else zero) + s_ * Kw[a][d] + (one - c) * K2[a][d]) for d in range(3)]
+                     for a in range(3)]
+            else:
+                R = e._rot(w, e.angle_of[i], 1)
             r = self.cross(w, v)  # the axis point nearest the origin
             Rr = self.mv(R, r)
             out.append((R, [r[k] - Rr[k] for k in range(3)]))
@@ -142,11 +159,31 @@ def _params_exprs(params: Sequence[Any]) -> list:
 
 
 def _ring(twists: Sequence[Any], home: Any, q: Sequence[Expr], extra: list) -> _Ring | None:
-    q = tuple(q)
-    if not all(isinstance(x, Symbol) for x in q) or len(set(q)) != len(q):
+    """The ring of the chain, or None.  Joint values are distinct symbols, or numbers whose
+    cosine and sine are sums of products of roots of rationals (``pi/4``, ``pi/12``, 0:
+    :func:`screwsym.algebra.numberfield.surd_normal`); a prismatic joint's number is any
+    such number."""
+    values: dict = {}
+    stand_in = []
+    for i, x in enumerate(q):
+        if isinstance(x, Symbol):
+            stand_in.append(x)
+            continue
+        if not x.is_number or x.has(Float):
+            return None
+        if twists[i].omega.is_zero_matrix:  # a prismatic joint's length
+            values[i] = (x, S.Zero, S.Zero)
+        else:
+            c, s = surd_normal(cos(x)), surd_normal(sin(x))
+            if c is None or s is None:
+                return None
+            values[i] = (x, c, s)
+        stand_in.append(Dummy(f"q{i}"))
+    qs = tuple(stand_in)
+    if len(set(qs)) != len(qs):
         return None
     try:
-        return _Ring(twists, home, q, extra)
+        return _Ring(twists, home, qs, extra, values)
     except _poe._NotPolynomial:
         return None
 

@@ -517,3 +517,25 @@ def test_the_ring_dynamics_leave_other_chains_to_the_general_path(rph):
     line = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])], inertias=[body])
     assert ring_mass_matrix(line.twists, Transform.identity(), params[:1], [Rational(1, 2)]) is None
     assert line.mass_matrix([pi / 3]) == Matrix([[1]])
+
+
+@pytest.mark.slow
+def test_the_ring_dynamics_at_a_pose_of_15_degree_multiples(arm15, monkeypatch):
+    """Numbers for q whose sines and cosines are in Q(sqrt 2, sqrt 3) (the Kinova's poses of
+    issue 33) stay in the ring: the same exact numbers as the recursion on expressions."""
+    from screwsym.motion import _ring_dynamics, dynamics
+
+    pose = [pi / 4, pi / 12, Rational(1, 3)]  # the third joint is prismatic: a length
+    rates = symbols("u1:4", real=True)
+    params = [dynamics._params(b) for b in arm15.inertias]
+    assert _ring_dynamics.ring_mass_matrix(arm15.twists, Transform.identity(), params, pose) is not None
+    assert _ring_dynamics.ring_mass_matrix(arm15.twists, Transform.identity(), params,
+                                           [Rational(1, 2), 0, 0]) is None  # cos(1/2): no root form
+    H, tau = arm15.mass_matrix(pose), arm15.inverse_dynamics(pose, rates, [0, 0, 0])
+    monkeypatch.setattr(dynamics, "ring_mass_matrix", lambda *args: None)
+    monkeypatch.setattr(dynamics, "ring_rnea", lambda *args: None)
+    H2, tau2 = arm15.mass_matrix(pose), arm15.inverse_dynamics(pose, rates, [0, 0, 0])
+    # SymPy merges products of roots, so expand decides equality in Q(sqrt 2, sqrt 3)[u]
+    assert all(expand(a - b) == 0 for a, b in zip(H, H2, strict=True))
+    assert all(expand(a - b) == 0 for a, b in zip(tau, tau2, strict=True))
+    assert expand(H[0, 1] + 2 ** Rational(1, 2) / 10**6 - H2[0, 1]) != 0
