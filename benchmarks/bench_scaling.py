@@ -35,7 +35,8 @@ results are SymPy's ``count_ops`` (the peers' results converted to SymPy to coun
    same algorithm written as plain scalar products, untidied, in plain SymPy, SymEngine and
    SymForce (the composite rigid body method for the mass matrix, ray-order twists and
    inertias as screwsym's).  The last column of each engine is the growth factor per added
-   joint.  Run it with ``PYTHONPATH`` pointing to another checkout to measure that one.
+   joint; then the 6-link chain at a pose of 15-degree multiples (``--pose`` alone).  Run it
+   with ``PYTHONPATH`` pointing to another checkout to measure that one.
 
 Nothing here is asserted; the figures go to ``benchmarks/README.md`` and
 ``notebooks/benchmarks.md``.
@@ -446,14 +447,36 @@ def growth_rows(limit: float) -> None:
         table("mass matrix, URDF at 15-degree multiples", range(2, 6), read_inertias, mass, mass_plain)
 
 
+def pose_rows(limit: float) -> None:
+    """The spatial 6-link chain at a pose of 15-degree multiples (numbers in Q(sqrt 2, sqrt 3),
+    as issue 33's Kinova): mass matrix, and inverse dynamics with symbolic rates."""
+    from sympy import pi
+
+    chain = spatial_chain(6)
+    q = [pi / 4, pi / 6, pi / 12, pi / 3, pi / 4, pi / 6]
+    qd, qdd = symbols("qd1:7", real=True), symbols("qdd1:7", real=True)
+    print("\n| spatial 6-link at q = (45, 30, 15, 60, 45, 30) degrees | CPU s | count_ops |")
+    print("|---|---|---|")
+    for what, fn in (("mass_matrix(q)", lambda: chain.mass_matrix(q)),
+                     ("inverse_dynamics(q, qd, qdd)", lambda: chain.inverse_dynamics(q, qd, qdd))):
+        t, out = cpu_timed(fn, limit)
+        print(f"| {what} | " + (f"> {limit:g} (stopped) | |" if t is None else f"{t:.2f} | {count_ops(out):,} |"))
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="the chains and verify only")
     parser.add_argument("--growth", action="store_true", help="only the growth per added joint (item 5)")
+    parser.add_argument("--pose", action="store_true", help="only the 6-link chain at a 15-degree pose")
     parser.add_argument("--limit", type=float, default=20.0, help="CPU seconds per row of --growth")
     args = parser.parse_args(argv)
+    parser_pose = args.pose
+    if parser_pose:
+        pose_rows(args.limit)
+        return
     if args.growth:
         growth_rows(args.limit)
+        pose_rows(args.limit)
         return
 
     rows: list = []
