@@ -25,6 +25,19 @@ results are SymPy's ``count_ops`` (the peers' results converted to SymPy to coun
    ``mobility_cases()`` (screwsym only: no peer has a mobility analysis).
 4. ``screwsym verify --jobs 1`` against ``benchmarks/plain_sympy_check.py``.
 
+5. Growth per added joint (``--growth``; issues 33 item 2 and 34 item 5), CPU time
+   (``time.process_time``), each row stopped after ``--limit`` CPU seconds:
+   forward kinematics + space Jacobian of a spatial k-joint chain (axes cycling z, y, x
+   through rational points, k = 3 .. 9), the mass matrix of the same chain with a general
+   rational inertia per link (k = 2 .. 7), and a k-joint URDF whose joint origins are turned
+   by multiples of 15 degrees (read with ``angles="pi/12"``: the geometry in Q(sqrt 2, sqrt 3);
+   read, FK + J, mass matrix).  screwsym (the calls a user makes, results tidied) against the
+   same algorithm written as plain scalar products, untidied, in plain SymPy, SymEngine and
+   SymForce (the composite rigid body method for the mass matrix, ray-order twists and
+   inertias as screwsym's).  The last column of each engine is the growth factor per added
+   joint; then the 6-link chain at a pose of 15-degree multiples (``--pose`` alone).  Run it
+   with ``PYTHONPATH`` pointing to another checkout to measure that one.
+
 Nothing here is asserted; the figures go to ``benchmarks/README.md`` and
 ``notebooks/benchmarks.md``.
 """
@@ -239,10 +252,232 @@ def verify_rows() -> None:
           f"SymPy script (the same): CPU {plain:.2f} s; ratio {book / plain:.2f} (target <= 0.5)")
 
 
+# ---------------------------------------------------------------- growth per joint (item 5)
+AXES = [(0, 0, 1), (0, 1, 0), (1, 0, 0)]
+
+
+def spatial_chain(k: int) -> Chain:
+    """k revolute joints, axes cycling z, y, x through rational points; a general inertia per link."""
+    from sympy import ImmutableMatrix, Rational
+
+    from screwsym import SpatialInertia, Twist
+
+    twists, bodies = [], []
+    inertia = ImmutableMatrix([[Rational(1, 5), Rational(1, 100), 0], [Rational(1, 100), Rational(1, 4), Rational(1, 50)],
+                               [0, Rational(1, 50), Rational(3, 10)]])
+    for i in range(k):
+        point = [Rational(i, 2), Rational(i % 2, 3), Rational(i, 5)]
+        twists.append(Twist.rotation(list(AXES[i % 3]), point=point))
+        com = [Rational(i, 2) + Rational(1, 4), Rational(1, 5), Rational(i, 5) + Rational(1, 10)]
+        bodies.append(SpatialInertia(Rational(3 + i, 2), com, inertia))
+    return Chain(twists, inertias=bodies)
+
+
+def urdf_15(k: int) -> str:
+    """A k-joint URDF whose joint origins are turned by multiples of 15 degrees (seeded)."""
+    import math
+    import random
+
+    rnd = random.Random(1)
+    parts = ['<robot name="r15">', '<link name="l0"/>']
+    for i in range(1, k + 1):
+        rpy = " ".join(repr(rnd.choice([1, 2, 3, 4, 5, -1, -2, 6, 0]) * math.pi / 12) for _ in range(3))
+        xyz = " ".join(str(rnd.choice([0, 0.1, 0.25, -0.3, 0.05])) for _ in range(3))
+        parts.append(f'<link name="l{i}"><inertial><origin xyz="0.01 0.02 0.03" rpy="0 {math.pi / 12!r} 0"/>'
+                     '<mass value="1.5"/><inertia ixx="0.1" ixy="0.01" ixz="0" iyy="0.2" iyz="0" izz="0.3"/>'
+                     '</inertial></link>')
+        parts.append(f'<joint name="j{i}" type="revolute"><parent link="l{i - 1}"/><child link="l{i}"/>'
+                     f'<origin xyz="{xyz}" rpy="{rpy}"/><axis xyz="0 0 1"/>'
+                     '<limit lower="-3" upper="3" effort="1" velocity="1"/></joint>')
+    parts.append("</robot>")
+    return "\n".join(parts)
+
+
+def plain_crba(twists: list, inertias: list, q: list, sin: Callable, cos: Callable,
+               num: Callable) -> list:
+    """The mass matrix by composite rigid bodies in an engine's plain scalar arithmetic, untidied.
+
+    Ray order as screwsym's: ``E_i = exp6($_i, q_i)`` as ``Ad`` (6x6), the composite inertia
+    ``M^c_k = M_k + Ad(E_{k+1}) M^c_{k+1} Ad(E_{k+1}^-1)``, ``H_ik = $_i o (Ad(E_{i+1} ... E_k)
+    M^c_k $_k)`` with ``o`` the reciprocal product.  Products by a literal 0 are skipped.
+    """
+    n = len(twists)
+    zero, one = num(0), num(1)
+
+    def mm(A, B):
+        return [[sum((A[i][k] * B[k][j] for k in range(len(B)) if not (A[i][k] == 0 or B[k][j] == 0)), zero)
+                 for j in range(len(B[0]))] for i in range(len(A))]
+
+    def hat(w):
+        return [[zero, -w[2], w[1]], [w[2], zero, -w[0]], [-w[1], w[0], zero]]
+
+    def cross(a, b):
+        return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+    def adjoint(R, p):
+        P = mm(hat(p), R)
+        return [R[i] + [zero] * 3 for i in range(3)] + [P[i] + R[i] for i in range(3)]
+
+    E = []
+    for t, qi in zip(twists, q, strict=True):
+        w, v = [num(e) for e in t.omega], [num(e) for e in t.v_O]
+        K = hat(w)
+        K2 = mm(K, K)
+        s, c = sin(qi), cos(qi)
+        R = [[(one if i == j else zero) + s * K[i][j] + (one - c) * K2[i][j] for j in range(3)] for i in range(3)]
+        r = cross(w, v)
+        p = [r[i] - sum((R[i][j] * r[j] for j in range(3)), zero) for i in range(3)]
+        Rt = [[R[j][i] for j in range(3)] for i in range(3)]
+        E.append((adjoint(R, p), adjoint(Rt, [-sum((Rt[i][j] * p[j] for j in range(3)), zero) for i in range(3)])))
+    xi = [[num(e) for e in t.matrix] for t in twists]
+    H = [[zero] * n for _ in range(n)]
+    Mc: list = []
+    for k in reversed(range(n)):
+        M = [[num(x) for x in row] for row in inertias[k].matrix.tolist()]
+        if Mc:
+            C = mm(mm(E[k + 1][0], Mc), E[k + 1][1])
+            M = [[M[i][j] + C[i][j] for j in range(6)] for i in range(6)]
+        Mc = M
+        W = [sum((Mc[i][j] * xi[k][j] for j in range(6)), zero) for i in range(6)]
+        for i in reversed(range(k + 1)):
+            if i < k:
+                A = E[i + 1][0]
+                W = [sum((A[r][j] * W[j] for j in range(6)), zero) for r in range(6)]
+            x = xi[i]
+            H[i][k] = H[k][i] = x[0] * W[3] + x[1] * W[4] + x[2] * W[5] + x[3] * W[0] + x[4] * W[1] + x[5] * W[2]
+    return [e for row in H for e in row]
+
+
+class _OverLimit(Exception):
+    pass
+
+
+def cpu_timed(fn: Callable, limit: float) -> tuple[float | None, Any]:
+    """``(CPU seconds, result)``, or ``(None, None)`` when ``fn`` used more than ``limit`` CPU s."""
+    import signal
+
+    def stop(signum, frame):
+        raise _OverLimit
+
+    clear_cache()
+    old = signal.signal(signal.SIGPROF, stop)
+    signal.setitimer(signal.ITIMER_PROF, limit)
+    t0 = time.process_time()
+    try:
+        out = fn()
+    except _OverLimit:
+        return None, None
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, old)
+    return time.process_time() - t0, out
+
+
+def growth_rows(limit: float) -> None:
+    """Per added joint: screwsym and the plain products of each engine (module docstring, item 5)."""
+    peers = engines()
+
+    def table(title: str, ks: range, build: Callable, ours: Callable, theirs: Callable | None) -> None:
+        labels = ["screwsym"] + ([name for name in peers] if theirs else [])
+        print(f"\n{title}: CPU s (count_ops of the result) [growth per added joint]\n")
+        print("| joints | " + " | ".join(labels) + " |")
+        print("|---|" + "---|" * len(labels))
+        last: dict = {}
+        for k in ks:
+            _, chain = cpu_timed(lambda k=k: build(k), limit)
+            if chain is None:
+                print(f"| {k} | building the chain: > {limit:g} (stopped) |")
+                continue
+            q = list(symbols(f"q1:{k + 1}", real=True))
+            cells = []
+            for label in labels:
+                if label == "screwsym":
+                    t, out = cpu_timed(lambda chain=chain, q=q: ours(chain, q), limit)
+                else:
+                    engine = peers[label]
+                    if engine is None:
+                        cells.append("not installed")
+                        continue
+                    make, sin, cos, num = engine
+                    qs = list(make(f"q1:{k + 1}"))
+                    t, out = cpu_timed(lambda chain=chain, qs=qs, e=engine: theirs(chain, qs, e[1], e[2], e[3]),
+                                       limit)
+                if t is None:
+                    cells.append(f"> {limit:g} (stopped)")
+                    last[label] = None
+                    continue
+                size = ops(out) if out is not None else 0
+                grow = f" [{t / last[label]:.1f}x]" if last.get(label) else ""
+                cells.append(f"{t:.3f} ({size:,}){grow}")
+                last[label] = t
+            print(f"| {k} | " + " | ".join(cells) + " |")
+
+    def fk_j(chain, q):
+        return list(chain.forward(q).matrix[:3, :]) + list(chain.jacobian(q))
+
+    def fk_j_plain(chain, q, sin, cos, num):
+        T, cols = plain_products(chain.twists, chain.home, q, sin, cos, num)
+        return T + cols
+
+    def mass(chain, q):
+        return list(chain.mass_matrix(q))
+
+    def mass_plain(chain, q, sin, cos, num):
+        return plain_crba(chain.twists, chain.inertias, q, sin, cos, num)
+
+    table("FK + J (space), spatial k-joint chain", range(3, 10), spatial_chain, fk_j, fk_j_plain)
+    table("mass matrix, spatial k-link chain", range(2, 8), spatial_chain, mass, mass_plain)
+    if importlib.util.find_spec("defusedxml"):
+        def read(k):
+            return Chain.from_urdf(urdf_15(k), angles="pi/12")
+
+        def read_inertias(k):
+            return Chain.from_urdf(urdf_15(k), angles="pi/12", inertias=True)
+
+        print("\nURDF at 15-degree multiples (angles='pi/12'): read, CPU s\n")
+        print("| joints | from_urdf | from_urdf(inertias=True) |")
+        print("|---|---|---|")
+        for k in range(3, 8):
+            cells = []
+            for fn in (read, read_inertias):
+                t, _ = cpu_timed(lambda k=k, fn=fn: fn(k), limit)
+                cells.append(f"> {limit:g} (stopped)" if t is None else f"{t:.3f}")
+            print(f"| {k} | " + " | ".join(cells) + " |")
+        table("FK + J (space), URDF at 15-degree multiples", range(3, 7), read, fk_j, fk_j_plain)
+        table("mass matrix, URDF at 15-degree multiples", range(2, 6), read_inertias, mass, mass_plain)
+
+
+def pose_rows(limit: float) -> None:
+    """The spatial 6-link chain at a pose of 15-degree multiples (numbers in Q(sqrt 2, sqrt 3),
+    as issue 33's Kinova): mass matrix, and inverse dynamics with symbolic rates."""
+    from sympy import pi
+
+    chain = spatial_chain(6)
+    q = [pi / 4, pi / 6, pi / 12, pi / 3, pi / 4, pi / 6]
+    qd, qdd = symbols("qd1:7", real=True), symbols("qdd1:7", real=True)
+    print("\n| spatial 6-link at q = (45, 30, 15, 60, 45, 30) degrees | CPU s | count_ops |")
+    print("|---|---|---|")
+    for what, fn in (("mass_matrix(q)", lambda: chain.mass_matrix(q)),
+                     ("inverse_dynamics(q, qd, qdd)", lambda: chain.inverse_dynamics(q, qd, qdd))):
+        t, out = cpu_timed(fn, limit)
+        print(f"| {what} | " + (f"> {limit:g} (stopped) | |" if t is None else f"{t:.2f} | {count_ops(out):,} |"))
+
+
 def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="the chains and verify only")
+    parser.add_argument("--growth", action="store_true", help="only the growth per added joint (item 5)")
+    parser.add_argument("--pose", action="store_true", help="only the 6-link chain at a 15-degree pose")
+    parser.add_argument("--limit", type=float, default=20.0, help="CPU seconds per row of --growth")
     args = parser.parse_args(argv)
+    parser_pose = args.pose
+    if parser_pose:
+        pose_rows(args.limit)
+        return
+    if args.growth:
+        growth_rows(args.limit)
+        pose_rows(args.limit)
+        return
 
     rows: list = []
     chain_rows("UR5", ur5(), rows)

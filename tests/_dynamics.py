@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 from _motions import random_transform
-from sympy import ImmutableMatrix, Rational, cos, sin, symbols
+from sympy import ImmutableMatrix, Rational, cos, expand_trig, sin, symbols
 from sympy.polys.domains import QQ
 from sympy.polys.rings import ring
 
@@ -111,10 +111,19 @@ def ur5_torque_expanded(joint: int = 3):
     terms, about 127,000 operations: the "expanded UR5 inverse dynamics" of issue 23.
     Returns ``(expr, (q, qd, qdd))``.
     """
+    from screwsym.motion import dynamics
+
     q, qd, qdd = (symbols(f"{n}1:7", real=True) for n in ("q", "qd", "qdd"))
-    tau = mr_ur5_chain().inverse_dynamics(q, qd, qdd, [0, 0, -Rational(981, 100)])
+    # the recursion on expressions (not reduced on the circles): the large expanded form that
+    # issue 23 lambdified; the ring path's torque, reduced modulo cos^2 + sin^2 = 1, expands
+    # to about 2,000 operations only
+    ring_rnea, dynamics.ring_rnea = dynamics.ring_rnea, lambda *args: None
+    try:
+        tau = mr_ur5_chain().inverse_dynamics(q, qd, qdd, [0, 0, -Rational(981, 100)])
+    finally:
+        dynamics.ring_rnea = ring_rnea
     s, c = symbols("s1:7"), symbols("c1:7")
     to_ring = {**{sin(a): x for a, x in zip(q, s, strict=True)}, **{cos(a): x for a, x in zip(q, c, strict=True)}}
     R, *_ = ring([*s, *c, *qd, *qdd], QQ)
-    e = R.from_expr(tau[joint].xreplace(to_ring)).as_expr()
+    e = R.from_expr(expand_trig(tau[joint]).xreplace(to_ring)).as_expr()
     return e.xreplace({x: a for a, x in to_ring.items()}), (q, qd, qdd)

@@ -18,8 +18,14 @@ from functools import lru_cache
 
 from sympy import (
     QQ,
+    Add,
     Dummy,
+    Integer,
     Poly,
+    Rational,
+    S,
+    factorint,
+    sqrt,
 )
 from sympy.polys.densearith import dup_rem
 from sympy.polys.polyutils import _sort_factors
@@ -35,6 +41,9 @@ __all__ = [
     "ring_gcd",
     "irreducible_over_field",
     "field_factor_list",
+    "surd_split",
+    "reduce_surds",
+    "surd_normal",
 ]
 
 
@@ -225,3 +234,149 @@ def field_factor_list(p, R) -> list:
     ring = R.ring
     dense = [(f.to_dense(), k) for f, k in out]
     return [(ring.from_dense(f), k) for f, k in _sort_factors(dense)]
+
+
+# --------------------------------------------------------------------------
+# Square roots of rationals: Q(sqrt p_1, ..., sqrt p_k) as Q[r_1, ..., r_k] / (r_i**2 - p_i)
+# --------------------------------------------------------------------------
+
+#: integer powers above this are not expanded (a number's normal form, :func:`surd_normal`)
+SURD_POWER = 32
+#: square roots of numbers with more digits than this are not split into primes (factoring)
+SURD_DIGITS = 30
+
+
+def surd_split(n: Rational) -> tuple[Rational, tuple[int, ...]] | None:
+    """``sqrt(n) = k * sqrt(p_1) ... sqrt(p_j)`` for a positive rational ``n``: ``(k, (p_1, ...))``.
+
+    The primes are distinct and increasing; None for a number too large to factor cheaply
+    (more than ``SURD_DIGITS`` digits).
+
+    >>> from sympy import Rational
+    >>> surd_split(Rational(3, 8))            # sqrt(3/8) = sqrt(6)/4 = 1/4 sqrt(2) sqrt(3)
+    (1/4, (2, 3))
+    >>> surd_split(Rational(12))
+    (2, (3,))
+    """
+    n = Rational(n)
+    if n <= 0:
+        raise ValueError(f"n: expected a positive rational, got {n}")
+    top = n.p * n.q  # sqrt(p/q) = sqrt(p q) / q
+    if len(str(top)) > SURD_DIGITS:
+        return None
+    k, primes = Integer(1), []
+    for prime, e in sorted(factorint(top).items()):
+        k *= Integer(prime) ** (e // 2)
+        if e % 2:
+            primes.append(int(prime))
+    return k / n.q, tuple(primes)
+
+
+def reduce_surds(P, surds) -> object:
+    """``P`` modulo ``r**2 - p`` for each ``(r, p)`` pair (generator index, prime):
+    every ``r**k`` made ``p**(k // 2) r**(k mod 2)``.
+
+    The normal form in ``Q(sqrt p_1, ..., sqrt p_k)[x]``: the leading terms ``r**2`` are
+    coprime (a Groebner basis), and the square roots of distinct primes are linearly
+    independent over Q (Besicovitch 1940), so ``P`` is zero there exactly when this is 0.
+
+    >>> from sympy import QQ
+    >>> from sympy.polys.rings import ring
+    >>> R, x, r2, r3 = ring("x r2 r3", QQ)
+    >>> reduce_surds((x + r2 * r3) ** 2, [(1, 2), (2, 3)])   # (x + sqrt 6)**2
+    x**2 + 2*x*r2*r3 + 6
+    """
+    ring = P.ring
+    if not any(m[r] >= 2 for m in P.itermonoms() for r, _ in surds):
+        return P
+    out: dict = {}
+    zero = ring.domain.zero
+    for m, c in P.iterterms():
+        ml = list(m)
+        for r, p in surds:
+            j, ml[r] = divmod(ml[r], 2)
+            if j:
+                c = c * ring.domain(p) ** j
+        mt = tuple(ml)
+        out[mt] = out.get(mt, zero) + c
+    return ring.from_dict({m: c for m, c in out.items() if c})
+
+
+def surd_normal(e) -> object:
+    """A number built from rationals and square roots of positive rationals by sums and
+    products, as its normal form ``sum c_i sqrt(m_i)`` (rational ``c_i``, distinct square-free
+    ``m_i``); None for any other number (a quotient by a root, a cube root, ``pi``, ...).
+
+    SymPy merges ``sqrt(2)*sqrt(3)`` into ``sqrt(6)`` but does not expand products of
+    sums, so an entry of a product of rotations at 15 degrees grows with every factor.
+
+    >>> from sympy import sqrt
+    >>> surd_normal((sqrt(2)/4 + sqrt(6)/4) * (sqrt(6)/4 - sqrt(2)/4))   # cos 15 sin 15 = sin 30 / 2
+    1/4
+    >>> surd_normal(sqrt(2) / (1 + sqrt(3))) is None
+    True
+    """
+    primes: dict = {}
+    terms = _surd_terms(e, primes)
+    if terms is None:
+        return None
+    out = []
+    for mono, c in sorted(terms.items()):
+        root = 1
+        for p in mono:
+            root *= p
+        out.append(Rational(c) * sqrt(Integer(root)) if root != 1 else Rational(c))
+    return Add(*out)
+
+
+def _surd_terms(e, primes: dict) -> dict | None:
+    """``e`` as ``{(p_1, ..., p_j): rational}`` (a product of distinct primes' roots), or None."""
+    if e.is_Rational:
+        return {(): QQ(e.p, e.q)} if e else {}
+    if e.is_Pow and e.exp == S.Half and e.base.is_Rational and e.base > 0:
+        split = surd_split(e.base)
+        if split is None:
+            return None
+        k, ps = split
+        for p in ps:
+            primes[p] = True
+        return {ps: QQ(k.p, k.q)}
+    if e.is_Add:
+        total: dict = {}
+        for a in e.args:
+            t = _surd_terms(a, primes)
+            if t is None:
+                return None
+            _merge(total, t)
+        return total
+    if e.is_Mul or e.is_Pow and e.exp.is_Integer and 0 <= e.exp <= SURD_POWER:
+        factors = e.args if e.is_Mul else [e.base] * int(e.exp)
+        prod: dict = {(): QQ.one}
+        for a in factors:
+            t = _surd_terms(a, primes)
+            if t is None:
+                return None
+            prod = _multiply(prod, t)
+        return prod
+    return None
+
+
+def _merge(total: dict, t: dict) -> None:
+    for m, c in t.items():
+        v = total.get(m, QQ.zero) + c
+        if v:
+            total[m] = v
+        else:
+            total.pop(m, None)
+
+
+def _multiply(a: dict, b: dict) -> dict:
+    out: dict = {}
+    for ma, ca in a.items():
+        for mb, cb in b.items():
+            both = set(ma) & set(mb)
+            c = ca * cb
+            for p in both:
+                c *= p
+            _merge(out, {tuple(sorted(set(ma) ^ set(mb))): c})
+    return out

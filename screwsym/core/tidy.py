@@ -75,6 +75,7 @@ from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialEr
 from sympy.polys.rings import ring
 from sympy.simplify.fu import TR10i
 
+from ..algebra.numberfield import surd_normal
 from ..algebra.rings import NotInRing, tree_to_ring
 from .basic import ScrewsymBasic
 from .checks import check_count, check_tidy_input
@@ -194,9 +195,24 @@ def _tidy_expr(e: Expr, limit: int, angles: bool = True) -> Expr:
     # the size first: it stops counting at the limit, where free_symbols and has walk it all
     if e.is_Atom or _size(e, limit) > limit:
         return e
-    if _expanded_terms(e, limit) > limit or not e.free_symbols or e.has(Float):
+    if _expanded_terms(e, limit) > limit or e.has(Float):
         return e
+    if not e.free_symbols:
+        return _number(e)
     return _rewrite(e, angles)
+
+
+@cacheit
+def _number(e: Expr) -> Expr:
+    """A number in ``Q(sqrt p_1, ..., sqrt p_k)`` (sums and products of rationals and square
+    roots of rationals) in its normal form ``sum c_i sqrt(m_i)`` when that is not larger: the
+    entries of products of rotations at 15 degrees stay four terms instead of growing with
+    every factor (:func:`screwsym.algebra.numberfield.surd_normal`).  Other numbers as given.
+    """
+    normal = surd_normal(e)
+    if normal is None or normal == e:
+        return e
+    return normal if _count_ops(normal) <= _count_ops(e) else e
 
 
 def _expanded_terms(e: Basic, limit: int) -> int:

@@ -70,6 +70,8 @@ from sympy import (
     Expr,
     ImmutableMatrix,
     Mul,
+    Pow,
+    S,
     Symbol,
     cos,
     count_ops,
@@ -83,6 +85,7 @@ from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialEr
 from sympy.polys.rings import ring
 
 from ..algebra.circle import reduce_powers
+from ..algebra.numberfield import reduce_surds, surd_split
 
 __all__: list[str] = []
 
@@ -106,7 +109,10 @@ def _joint_kind(omega: Any, v: Any) -> str | None:
 class _Engine:
     """One chain's ring: the geometry's symbols, the prismatic lengths, the angles' sines and cosines."""
 
-    def __init__(self, twists: list, home: Any, q: tuple, sign: int = 1) -> None:
+    def __init__(self, twists: list, home: Any, q: tuple, sign: int = 1, extra: Sequence[Expr] = (),
+                 groups: bool = True) -> None:
+        """``extra``: more expressions whose symbols and roots join the ring (the dynamics' inertias
+        and joint rates); ``groups=False``: a generator pair per joint, no cumulative angles."""
         self.n = len(twists)
         self.q = q
         self.sign = sign
@@ -127,7 +133,7 @@ class _Engine:
         # groups of consecutive revolute joints about parallel axes: joint -> (group start, sign)
         self.group: list[tuple[int, int]] = []
         for i, t in enumerate(twists):
-            if i and kinds[i] == "R" and kinds[i - 1] == "R" and not self.bases:
+            if groups and i and kinds[i] == "R" and kinds[i - 1] == "R" and not self.bases:
                 g, _ = self.group[i - 1]
                 w0 = twists[g].omega
                 if t.omega == w0:
@@ -151,11 +157,13 @@ class _Engine:
             coeffs[i] = s * sign
             self.angle_of.append(tuple(coeffs))
         angles = sorted({_canonical(a)[0] for a in self.angle_of if a is not None})
-        if set(q) & set().union(*(t.matrix.free_symbols for t in twists), home.matrix.free_symbols):
+        extra = [x.xreplace(forms) for x in extra]
+        if set(q) & set().union(*(t.matrix.free_symbols for t in twists), home.matrix.free_symbols,
+                                *(x.free_symbols for x in extra)):
             raise _NotPolynomial("a joint variable occurs in the geometry")
         # roots and functions of the geometry (sqrt(2)/2 in a rotation) become generators
         self.frozen: dict = {}
-        exprs = [e for w, v in twist_parts for e in (*w, *v)] + [*home_parts[0], *home_parts[1]]
+        exprs = [e for w, v in twist_parts for e in (*w, *v)] + [*home_parts[0], *home_parts[1]] + extra
         exprs = [_frozen(e, self.frozen) for e in exprs]
         trig_gens = {d for pair in self.circle.values() for d in pair}
         geometry = set().union(*(e.free_symbols for e in exprs)) - set(self.frozen.values()) - trig_gens
@@ -178,6 +186,9 @@ class _Engine:
         self.symbols = gens
         # the circle relations c^2 + s^2 = 1, as generator indices (cos, sin)
         self.pairs = [(gens.index(self.circle[b][0]), gens.index(self.circle[b][1])) for b in self.bases]
+        # the square roots of primes in the geometry (15 degrees: sqrt 2, sqrt 3), r^2 = p
+        self.surds = [(gens.index(d), int(f.base)) for f, d in self.frozen.items()
+                      if f.is_Pow and f.exp == S.Half and f.base.is_Integer and f.base.is_prime]
         self.level: dict[int, int] = {}  # generator -> its level in the written form (by _walk)
         try:
             self.twists = [(self._vec(w), self._vec(v)) for w, v in twist_parts]
@@ -196,8 +207,13 @@ class _Engine:
 
     def _reduce(self, P: Any) -> Any:
         """``P`` modulo ``c^2 + s^2 - 1`` of each geometry base: every ``s^k`` with ``k >= 2`` made
-        ``s^(k mod 2) (1 - c^2)^(k // 2)`` (:func:`screwsym.algebra.circle.reduce_powers`)."""
-        return reduce_powers(P, self.pairs)
+        ``s^(k mod 2) (1 - c^2)^(k // 2)`` (:func:`screwsym.algebra.circle.reduce_powers`), and
+        modulo ``r^2 - p`` for each square root of a prime ``p`` in the geometry
+        (:func:`screwsym.algebra.numberfield.reduce_surds`): the normal form over
+        ``Q(sqrt 2, sqrt 3, ...)``, so that entries at 15 degrees do not grow."""
+        if self.surds:
+            P = reduce_surds(P, self.surds)
+        return reduce_powers(P, self.pairs) if self.pairs else P
 
     def _vec(self, v: Any) -> list:
         return [self._el(e) for e in v]
@@ -434,6 +450,12 @@ def _frozen(e: Expr, parts: dict) -> Expr:
         return e.func(*(_frozen(a, parts) for a in e.args))
     if e.is_Float or not e.is_finite and e.is_number:
         raise _NotPolynomial("a float or an infinity in the geometry")
+    if e.is_Pow and e.exp == S.Half and e.base.is_Rational and e.base > 0:
+        split = surd_split(e.base)  # sqrt(3/8) = 1/4 sqrt(2) sqrt(3): one generator per prime
+        if split is not None:
+            k, primes = split
+            roots = [parts.setdefault(Pow(p, S.Half), Dummy("r")) for p in primes]
+            return Mul(k, *roots)
     if e not in parts:
         parts[e] = Dummy("g")
     return parts[e]
@@ -515,10 +537,17 @@ class _Writer:
 
     # --- step 2: the angle-sum formulas and the Pythagorean identity
     def gather(self, D: dict) -> dict:
+        """The angle-sum formulas applied until none applies, then the Pythagorean identity.
+
+        A pass looks only at the terms that are new or whose coefficient changed in the pass
+        before (the formulas pair two terms, and each pair is found from either of them), so
+        a long polynomial is not scanned again for each gathering."""
         changed = True
+        todo = list(D)
         while changed:
             changed = False
-            for m in list(D):
+            before = dict(D)
+            for m in todo:
                 if m not in D:
                     continue
                 trig = [g for g, k in m if k == 1 and g in self.trig]
@@ -526,8 +555,10 @@ class _Writer:
                     if self._gather_pair(D, m, g1, g2):
                         changed = True
                         break
+            todo = [m for m, c in D.items() if before.get(m) != c]
             if not changed:
                 changed = self._pythagoras(D)
+                todo = list(D)
         return D
 
     def _gather_pair(self, D: dict, m: tuple, g1: int, g2: int) -> bool:

@@ -75,6 +75,7 @@ from ..core.checks import check_scalar, check_sequence, check_vector
 from ..core.formulas import bracket, cross_matrix, moved, reciprocal_form
 from ..core.inertia import PARAMETER_NAMES, SpatialInertia, spatial_matrix
 from ..core.tidy import tidy
+from ._ring_dynamics import ring_mass_matrix, ring_rnea
 from .displacement import exp6
 from .transform import Transform
 
@@ -167,7 +168,13 @@ def _joint_motions(twists: Sequence[Any], q: Sequence[Expr]) -> list[Transform]:
 
 def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
           qd: Sequence[Expr], qdd: Sequence[Expr], gravity: ImmutableMatrix) -> ImmutableMatrix:
-    """The Newton–Euler recursion of the module docstring, in the link frames ``{i}``."""
+    """The Newton–Euler recursion of the module docstring, in the link frames ``{i}``.
+
+    In the ring of the chain (:mod:`._ring_dynamics`) where the chain is in its class, else
+    on expressions, each intermediate result tidied."""
+    fast = ring_rnea(twists, Transform.identity(), params, q, qd, qdd, gravity)
+    if fast is not None:
+        return fast
     E = _joint_motions(twists, q)
     xi = [t.matrix for t in twists]
     n = len(twists)
@@ -259,6 +266,9 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
     inertias = _check_chain(chain)
     n = chain.n_joints
     q = _values(q, "q", n)
+    fast = ring_mass_matrix(chain.twists, Transform.identity(), [_params(b) for b in inertias], q)
+    if fast is not None:  # in the ring of the chain (module docstring)
+        return fast
     E = [tidy(exp6(t, qi)) for t, qi in zip(chain.twists, q, strict=True)]
     xi = [t.matrix for t in chain.twists]
     H = [[S.Zero] * n for _ in range(n)]

@@ -267,3 +267,82 @@ def test_irreducibility_is_never_claimed_for_a_product_with_content():
     X, Y, _ = lifted_ring(R).gens
     assert irreducible_over_field(X * (X + Y**3), R) is False  # y has degree 3: the main symbol
 
+
+
+# ---------------------------------------------------------------- square roots of primes (surds)
+from screwsym.algebra.numberfield import reduce_surds, surd_normal, surd_split  # noqa: E402
+
+
+@pytest.mark.parametrize("n", [2, 3, 12, 18, 72, QQ(3, 8), QQ(50, 27), 2 * 3 * 5 * 7 * 11, 1, QQ(1, 4)])
+def test_surd_split_is_the_square_root(n):
+    from sympy import Rational
+
+    n = Rational(n.numerator, n.denominator) if hasattr(n, "denominator") else Rational(n)
+    k, primes = surd_split(n)
+    assert list(primes) == sorted(set(primes)) and all(Poly(x - p, x).is_irreducible for p in primes)
+    assert k * Mul(*(sqrt(p) for p in primes)) == sqrt(n)  # SymPy's own root of n
+    with pytest.raises(ValueError, match="positive rational"):
+        surd_split(-n)
+
+
+def random_surd_number(rng: random.Random, depth: int):
+    """Products of sums of rationals times square roots of small rationals (seeded)."""
+    from sympy import Rational
+
+    if depth == 0:
+        return sum((Rational(rng.randint(-5, 5), rng.randint(1, 4)) * sqrt(Rational(rng.choice([2, 3, 6, 8, 12, 5, 1]),
+                                                                                    rng.choice([1, 2, 3])))
+                    for _ in range(rng.randint(1, 3))), Rational(0))
+    return random_surd_number(rng, depth - 1) * random_surd_number(rng, depth - 1) + random_surd_number(rng, 0)
+
+
+@pytest.mark.parametrize("case", range(12))
+def test_surd_normal_is_sympys_expansion_and_no_other_number(case):
+    rng = random.Random(case)
+    e = random_surd_number(rng, 2)
+    normal = surd_normal(e)
+    # SymPy merges products of square roots of integers, so its expansion is the normal form too
+    assert expand(normal - e) == 0
+    # each term a rational times the root of a square-free integer, no two alike
+    from sympy import Add, factorint
+
+    roots = [t.as_coeff_Mul()[1] for t in Add.make_args(normal)]
+    assert len(set(roots)) == len(roots)
+    for r in roots:
+        assert r == 1 or r.is_Pow and r.exp == QQ(1, 2) and r.base.is_Integer \
+            and all(k == 1 for k in factorint(r.base).values())
+    # a perturbed value is told apart
+    assert expand(surd_normal(e + sqrt(2) / 1000) - e) != 0
+
+
+def test_surd_normal_refuses_what_is_not_a_sum_of_products_of_roots():
+    assert surd_normal(1 / (1 + sqrt(3))) is None
+    assert surd_normal(cbrt(2) + 1) is None
+    assert surd_normal(sqrt(2) ** 40 - 2**20) == 0
+    from sympy import pi
+    assert surd_normal(pi * sqrt(2)) is None
+
+
+@pytest.mark.parametrize("case", range(8))
+def test_reduce_surds_is_the_normal_form_over_the_field(case):
+    """Zero exactly when the value at r_p = sqrt(p) is zero: SymPy's expansion as the oracle."""
+    from sympy.polys.rings import ring as make_ring
+
+    rng = random.Random(100 + case)
+    R, t, r2, r3, r5 = make_ring("t r2 r3 r5", QQ)
+    gens = [t, r2, r3, r5]
+    P = R.zero
+    for _ in range(6):
+        term = R(QQ(rng.randint(-4, 4), rng.randint(1, 3)))
+        for g in gens:
+            term *= g ** rng.randint(0, 3)
+        P += term
+    reduced = reduce_surds(P, [(1, 2), (2, 3), (3, 5)])
+    assert all(m[i] <= 1 for m in reduced.itermonoms() for i in (1, 2, 3))
+    T = symbols("t")
+    value = {R.symbols[0]: T, R.symbols[1]: sqrt(2), R.symbols[2]: sqrt(3), R.symbols[3]: sqrt(5)}
+    assert expand(P.as_expr().xreplace(value) - reduced.as_expr().xreplace(value)) == 0
+    # r2 r3 - sqrt 6 reduces to nothing only with the right primes: a wrong relation is caught
+    wrong = reduce_surds(r2**2 - 2, [(1, 3)])
+    assert wrong != 0
+    assert reduce_surds(r2**2 - 2, [(1, 2)]) == 0

@@ -422,3 +422,120 @@ def test_a_generic_6r_with_every_dh_parameter_symbolic():
     wrong = J.as_mutable()
     wrong[3, 5] = -wrong[3, 5]
     assert not _agree_at_geometry(wrong, arm, qs, [(al, a + d, 22)], forward=False)
+
+
+# ---------------------------------------------------------------- the dynamics in the chain's ring
+C15, S15 = (sqrt6 := Rational(1, 4) * 6 ** Rational(1, 2)) + 2 ** Rational(1, 2) / 4, \
+    sqrt6 - 2 ** Rational(1, 2) / 4  # cos 15 and sin 15 degrees, in Q(sqrt 2, sqrt 3)
+
+
+def _on_circle_at(e, q, ts):
+    """``e`` exactly at the rational points ``cos q_i = (1 - t^2)/(1 + t^2)``, ``sin q_i = 2t/(1 + t^2)``."""
+    from sympy import expand_trig, sqrt
+
+    # the general path writes |w| = sqrt(c15**2 + s15**2) inside the angles: a number, 1
+    e = e.replace(lambda a: a.is_Pow and a.is_number and a.exp == Rational(1, 2) and not a.base.is_Rational,
+                  lambda a: sqrt(expand(a.base)))
+    e = expand_trig(e)
+    values = {}
+    for qi, t in zip(q, ts, strict=True):
+        values[cos(qi)] = (1 - t**2) / (1 + t**2)
+        values[sin(qi)] = 2 * t / (1 + t**2)
+    return expand(e.xreplace(values))
+
+
+def _same_at_points(A, B, q, rounds=2):
+    """Entry by entry equal at seeded rational points of the circles (SymPy merges the roots,
+    so ``expand`` of a number of Q(sqrt 2, sqrt 3) is zero exactly when it is)."""
+    rng = np.random.default_rng(7)
+    for _ in range(rounds):
+        ts = [Rational(int(a), int(b)) for a, b in zip(rng.integers(-9, 9, len(q)), rng.integers(1, 7, len(q)),
+                                                        strict=True)]
+        if any(_on_circle_at(a - b, q, ts) != 0 for a, b in zip(A, B, strict=True)):
+            return False
+    return True
+
+
+@pytest.fixture(scope="module")
+def arm15():
+    """Two revolute joints and a prismatic one at 15 degrees (the geometry in Q(sqrt 2, sqrt 3)), one prismatic, general inertias."""
+    from screwsym import SpatialInertia
+
+    inertia = ImmutableMatrix([[Rational(1, 5), Rational(1, 100), 0], [Rational(1, 100), Rational(1, 4), 0],
+                               [0, 0, Rational(3, 10)]])
+    twists = [Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+              Twist.rotation([C15, S15, 0], point=[0, 0, Rational(1, 2)]),
+              Twist.translation([0, C15, S15])]
+    bodies = [SpatialInertia(Rational(2 + i, 2), [Rational(i, 3), Rational(1, 5), C15 / 2], inertia)
+              for i in range(3)]
+    return Chain(twists, inertias=bodies)
+
+
+@pytest.mark.slow
+def test_the_ring_mass_matrix_equals_the_recursion_on_expressions(arm15, monkeypatch):
+    from screwsym.motion import _ring_dynamics, dynamics
+
+    x = symbols("x1:4", real=True)
+    ring_H = arm15.mass_matrix(x)
+    assert _ring_dynamics.ring_mass_matrix(arm15.twists, Transform.identity(),
+                                           [dynamics._params(b) for b in arm15.inertias], x) is not None
+    monkeypatch.setattr(dynamics, "ring_mass_matrix", lambda *args: None)
+    general_H = arm15.mass_matrix(x)
+    assert ring_H.is_symmetric()
+    assert _same_at_points(list(ring_H), list(general_H), x)
+    # the comparison tells a wrong entry apart
+    wrong = list(ring_H)
+    wrong[5] += 2 ** Rational(1, 2) / 1000
+    assert not _same_at_points(wrong, list(general_H), x)
+    assert sum(count_ops(e) for e in ring_H) <= sum(count_ops(e) for e in general_H)
+
+
+@pytest.mark.slow
+def test_the_ring_inverse_dynamics_equals_the_recursion_on_expressions(arm15, monkeypatch):
+    from screwsym.motion import dynamics
+
+    x = symbols("x1:4", real=True)
+    u = symbols("u1:4", real=True)
+    a = symbols("a1:4", real=True)
+    g = symbols("g", positive=True)
+    gravity = [0, g / 3, -g]
+    ring_tau = arm15.inverse_dynamics(x, u, a, gravity)
+    monkeypatch.setattr(dynamics, "ring_rnea", lambda *args: None)
+    general_tau = arm15.inverse_dynamics(x, u, a, gravity)
+    assert _same_at_points(list(ring_tau), list(general_tau), x, rounds=1)
+    assert not _same_at_points([ring_tau[0] + u[1] * a[2] / 7] + list(ring_tau[1:]), list(general_tau), x, rounds=1)
+
+
+def test_the_ring_dynamics_leave_other_chains_to_the_general_path(rph):
+    """A helical joint, or numbers for q: no ring (None), the recursions on expressions answer."""
+    from screwsym import SpatialInertia
+    from screwsym.motion._ring_dynamics import ring_mass_matrix
+
+    body = SpatialInertia.point_mass(1, [1, 0, 0])
+    params = [(body.mass, body.first_moment, body.inertia_about([0, 0, 0]))] * 3
+    assert ring_mass_matrix(rph.twists, Transform.identity(), params, q) is None
+    line = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])], inertias=[body])
+    assert ring_mass_matrix(line.twists, Transform.identity(), params[:1], [Rational(1, 2)]) is None
+    assert line.mass_matrix([pi / 3]) == Matrix([[1]])
+
+
+@pytest.mark.slow
+def test_the_ring_dynamics_at_a_pose_of_15_degree_multiples(arm15, monkeypatch):
+    """Numbers for q whose sines and cosines are in Q(sqrt 2, sqrt 3) (the Kinova's poses of
+    issue 33) stay in the ring: the same exact numbers as the recursion on expressions."""
+    from screwsym.motion import _ring_dynamics, dynamics
+
+    pose = [pi / 4, pi / 12, Rational(1, 3)]  # the third joint is prismatic: a length
+    rates = symbols("u1:4", real=True)
+    params = [dynamics._params(b) for b in arm15.inertias]
+    assert _ring_dynamics.ring_mass_matrix(arm15.twists, Transform.identity(), params, pose) is not None
+    assert _ring_dynamics.ring_mass_matrix(arm15.twists, Transform.identity(), params,
+                                           [Rational(1, 2), 0, 0]) is None  # cos(1/2): no root form
+    H, tau = arm15.mass_matrix(pose), arm15.inverse_dynamics(pose, rates, [0, 0, 0])
+    monkeypatch.setattr(dynamics, "ring_mass_matrix", lambda *args: None)
+    monkeypatch.setattr(dynamics, "ring_rnea", lambda *args: None)
+    H2, tau2 = arm15.mass_matrix(pose), arm15.inverse_dynamics(pose, rates, [0, 0, 0])
+    # SymPy merges products of roots, so expand decides equality in Q(sqrt 2, sqrt 3)[u]
+    assert all(expand(a - b) == 0 for a, b in zip(H, H2, strict=True))
+    assert all(expand(a - b) == 0 for a, b in zip(tau, tau2, strict=True))
+    assert expand(H[0, 1] + 2 ** Rational(1, 2) / 10**6 - H2[0, 1]) != 0
