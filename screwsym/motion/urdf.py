@@ -72,7 +72,7 @@ import warnings
 from pathlib import Path
 from typing import Any, NamedTuple
 
-from sympy import QQ, Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, sympify, zeros
+from sympy import QQ, Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.polyerrors import CoercionFailed
 
@@ -201,7 +201,7 @@ _FIELD = QQ.algebraic_field(sqrt(2), sqrt(3))
 def _in_field(M: ImmutableMatrix) -> DomainMatrix | None:
     """``M`` as a matrix over Q(sqrt 2, sqrt 3), or None when an entry is not in that field."""
     try:
-        rows = [[_FIELD.from_sympy(sympify(e)) for e in M.row(i)] for i in range(M.rows)]
+        rows = [[_FIELD.from_sympy(e) for e in M.row(i)] for i in range(M.rows)]
     except (CoercionFailed, NotImplementedError, ValueError):
         return None
     return DomainMatrix(rows, M.shape, _FIELD)
