@@ -2,8 +2,8 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_actuation.py                # N = 10^6 configurations
-    .venv/bin/python benchmarks/bench_actuation.py --n 100000 --repeat 3
+    python benchmarks/bench_actuation.py                # N = 10^6 configurations
+    python benchmarks/bench_actuation.py --n 100000 --repeat 3
 
 Measures (each symbolic case in a fresh process, so its caches are cold, stopped
 after ``--cap`` seconds; the numeric maps the best of ``--repeat``):

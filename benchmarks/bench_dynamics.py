@@ -2,8 +2,8 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_dynamics.py              # N = 100,000 states
-    .venv/bin/python benchmarks/bench_dynamics.py --n 20000
+    python benchmarks/bench_dynamics.py              # N = 100,000 states
+    python benchmarks/bench_dynamics.py --n 20000
 
 Measured side by side in one process:
 

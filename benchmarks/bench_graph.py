@@ -2,8 +2,8 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_graph.py             # best of 3
-    .venv/bin/python benchmarks/bench_graph.py --repeat 5
+    python benchmarks/bench_graph.py             # best of 3
+    python benchmarks/bench_graph.py --repeat 5
 
 Measures, each from cold caches (the graph's and the screw systems' caches are
 cleared before every repetition; the best of ``--repeat`` is printed):

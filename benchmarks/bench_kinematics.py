@@ -2,8 +2,8 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_kinematics.py                 # N = 100,000 poses
-    .venv/bin/python benchmarks/bench_kinematics.py --n 20000 --skip-simplify
+    python benchmarks/bench_kinematics.py                 # N = 100,000 poses
+    python benchmarks/bench_kinematics.py --n 20000 --skip-simplify
 
 Measured side by side in one process:
 

@@ -2,9 +2,9 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_numeric.py            # N = 1,000,000
-    .venv/bin/python benchmarks/bench_numeric.py --n 100000 --repeat 3
-    .venv/bin/python benchmarks/bench_numeric.py --default-only --versus /path/to/other/tree
+    python benchmarks/bench_numeric.py            # N = 1,000,000
+    python benchmarks/bench_numeric.py --n 100000 --repeat 3
+    python benchmarks/bench_numeric.py --default-only --versus /path/to/other/tree
 
 ``--versus TREE`` first times the *default* functions of ``screwsym.numeric`` in
 fresh processes that have not imported numba (as a user's process), this tree's

@@ -2,9 +2,9 @@
 
 Run from the repository root (needs ``pip install example-robot-data pin``)::
 
-    PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_robots.py            # every arm
-    PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_robots.py ur5 panda  # some
-    PYTHONPATH=$PWD .venv/bin/python benchmarks/bench_robots.py --limit 120
+    python benchmarks/bench_robots.py            # every arm
+    python benchmarks/bench_robots.py ur5 panda  # some
+    python benchmarks/bench_robots.py --limit 120
 
 For each arm of tests/crosscheck/test_example_robot_data.py (base: the root link, tip as
 there), CPU time (``time.process_time``) of:

@@ -2,8 +2,8 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_scaling.py            # every row
-    .venv/bin/python benchmarks/bench_scaling.py --quick    # the chains and verify only
+    python benchmarks/bench_scaling.py            # every row
+    python benchmarks/bench_scaling.py --quick    # the chains and verify only
 
 The peers are optional (``pip install -e ".[bench]"``: symengine, symforce); a peer that
 is not installed prints "not installed".  Each row is timed once from cold caches

@@ -2,8 +2,8 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_systems.py                 # N = 100,000 poses
-    .venv/bin/python benchmarks/bench_systems.py --n 10000 --repeat 3
+    python benchmarks/bench_systems.py                 # N = 100,000 poses
+    python benchmarks/bench_systems.py --n 10000 --repeat 3
 
 Measures, each from cold caches (screwsym's rank and case caches are cleared
 before every repetition; the best of ``--repeat`` is printed):

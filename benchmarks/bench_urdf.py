@@ -2,9 +2,9 @@
 
 Run from the repository root::
 
-    .venv/bin/python benchmarks/bench_urdf.py                  # angles="pi/12" (the fast path)
-    .venv/bin/python benchmarks/bench_urdf.py --angles exact   # the default policy (slow)
-    .venv/bin/python benchmarks/bench_urdf.py --skip-simplify
+    python benchmarks/bench_urdf.py                  # angles="pi/12" (the fast path)
+    python benchmarks/bench_urdf.py --angles exact   # the default policy (slow)
+    python benchmarks/bench_urdf.py --skip-simplify
 
 Measured, first call in a fresh process (cold SymPy caches):
 
