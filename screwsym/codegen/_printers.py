@@ -182,6 +182,10 @@ class ScalarPrinter(_Common, PythonCodePrinter):
     def _conditional(self, condition, then, otherwise):
         return f"(({then}) if ({condition}) else ({otherwise}))"
 
+    def _print_Not(self, expr):
+        # SymPy 1.13 (our floor) prints Not(_c1) as ``not_c1``: its operator lacks the space
+        return f"(not ({self._print(expr.args[0])}))"
+
     def _print_floor(self, expr):
         return f"float(_m.floor({self._print(expr.args[0])}))"
 
