@@ -76,8 +76,8 @@ def _frame_on_axis(twist):
 def pin_model(pin, chain, gravity=(0.0, 0.0, -9.81)):
     """A pinocchio model of ``chain`` (unit-speed revolute and prismatic joints), test-only.
 
-    Each joint gets a frame on its axis with z along it (as tests/crosscheck/test_dynamics_peers.py),
-    and each body is carried into it.
+    Each joint gets a frame on its axis with z along it, and each body is carried into it
+    (also the model of tests/crosscheck/test_dynamics_peers.py).
     """
     model = pin.Model()
     parent, Rp, pp = 0, np.eye(3), np.zeros(3)

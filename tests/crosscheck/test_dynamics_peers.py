@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 from _backends import HAS_CC
 from _dynamics import mr_ur5_chain, mr_ur5_lists, random_chain, ur5_torque_expanded
+from _robots import pin_model
 from sympy import Float, ImmutableMatrix, count_ops
 
 from screwsym import SpatialInertia, convert, convert_from
@@ -51,37 +52,6 @@ def _mr_lists(chain):
     return Mlist, Glist, Slist
 
 
-def _frame_on_axis(twist):
-    """A frame (R, p) with z along the joint's axis and origin on it (floats)."""
-    w, v = (np.array(x, dtype=float).ravel() for x in (twist.omega, twist.v_O))
-    revolute = np.linalg.norm(w) > 0
-    u = w if revolute else v
-    u = u / np.linalg.norm(u)
-    a = np.array([1.0, 0, 0]) if abs(u[0]) < 0.9 else np.array([0, 1.0, 0])
-    x = np.cross(a, u)
-    x /= np.linalg.norm(x)
-    R = np.column_stack([x, np.cross(u, x), u])
-    p = np.cross(w, v) / (w @ w) if revolute else np.zeros(3)
-    return R, p, revolute
-
-
-def _pin_model(pin, chain):
-    model = pin.Model()
-    parent, Rp, pp = 0, np.eye(3), np.zeros(3)
-    for i, (twist, body) in enumerate(zip(chain.twists, chain.inertias, strict=True)):
-        R, p, revolute = _frame_on_axis(twist)
-        placement = pin.SE3(Rp.T @ R, Rp.T @ (p - pp))
-        joint = pin.JointModelRZ() if revolute else pin.JointModelPZ()
-        jid = model.addJoint(parent, joint, placement, f"j{i}")
-        m = float(body.mass)
-        c = np.array(body.com, dtype=float).ravel()
-        Ic = np.array(body.inertia, dtype=float)
-        model.appendBodyToJoint(jid, pin.Inertia(m, R.T @ (c - p), R.T @ Ic @ R), pin.SE3.Identity())
-        parent, Rp, pp = jid, R, p
-    model.gravity = pin.Motion(GRAVITY, np.zeros(3))
-    return model
-
-
 def _check_against_peers(chain, rng):
     n = chain.n_joints
     q, qd, qdd = rng.uniform(-2, 2, size=(3, n))
@@ -95,7 +65,7 @@ def _check_against_peers(chain, rng):
         import pinocchio as pin
     except ImportError:
         return
-    model = _pin_model(pin, chain)
+    model = pin_model(pin, chain, GRAVITY)
     data = model.createData()
     np.testing.assert_allclose(tau, pin.rnea(model, data, q, qd, qdd), rtol=1e-9, atol=1e-9)
     M = np.triu(pin.crba(model, data, q))
@@ -121,7 +91,7 @@ def test_gravity_and_coriolis_against_peers(case):
     G = np.array(chain.gravity_torques(_f(q), _f(GRAVITY)), dtype=float).ravel()
     np.testing.assert_allclose(G, mr.GravityForces(q, GRAVITY, Mlist, Glist, Slist), atol=1e-9)
     pin = pytest.importorskip("pinocchio")
-    model = _pin_model(pin, chain)
+    model = pin_model(pin, chain, GRAVITY)
     np.testing.assert_allclose(G, pin.computeGeneralizedGravity(model, model.createData(), q), atol=1e-9)
 
 
@@ -135,7 +105,7 @@ def test_coriolis_against_peers(case):
     C = np.array(chain.coriolis_matrix(_f(q), _f(qd)), dtype=float)
     np.testing.assert_allclose(C @ qd, mr.VelQuadraticForces(q, qd, Mlist, Glist, Slist), atol=1e-9)
     pin = pytest.importorskip("pinocchio")
-    model = _pin_model(pin, chain)
+    model = pin_model(pin, chain, GRAVITY)
     data = model.createData()
     # pinocchio's C is another factorisation; C qd and the skew property are what both share
     Cp = pin.computeCoriolisMatrix(model, data, q, qd)
