@@ -18,7 +18,7 @@ import math
 
 from sympy import Expr, ImmutableMatrix
 
-from .decide import is_zero
+from .decide import is_zero, is_zero_vector
 
 __all__ = ["is_zero_by_parts", "is_zero_vector_by_parts", "nonzero_somewhere", "expanded_terms", "LARGE"]
 
@@ -97,13 +97,7 @@ def nonzero_somewhere(e: Expr) -> bool:
 
 def is_zero_vector_by_parts(S: ImmutableMatrix) -> bool | None:
     """:func:`is_zero_vector` of ``S``, number entries first and each entry by its parts."""
-    entries = sorted(S, key=lambda e: not e.is_number)
-    undecided = False
-    for e in entries:
-        d = is_zero_by_parts(e)
-        if d is False:
-            return False
-        undecided = undecided or d is None
-    return None if undecided else True
+    entries = ImmutableMatrix(sorted(S, key=lambda e: not e.is_number))
+    return is_zero_vector(entries, decide=is_zero_by_parts)
 
 

@@ -28,6 +28,9 @@ float policy" lists every decision with its scale.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 from sympy import (
     Abs,
     Add,
@@ -183,14 +186,17 @@ def is_zero(expr: Expr) -> bool | None:
     return False if all(d is False for d in decisions) else None
 
 
-def is_zero_vector(v: MatrixBase) -> bool | None:
+def is_zero_vector(v: MatrixBase, decide: Callable[[Any], bool | None] | None = None
+                   ) -> bool | None:
     """Decide whether every entry of the matrix ``v`` is zero.
 
-    Stops at the first entry that is provably non-zero.
+    Stops at the first entry that is provably non-zero.  ``decide`` decides one
+    entry (default :func:`is_zero`).
     """
+    decide = is_zero if decide is None else decide
     undecided = False
     for e in v:
-        d = is_zero(e)
+        d = decide(e)
         if d is False:
             return False
         undecided = undecided or d is None
