@@ -28,6 +28,11 @@ Measured side by side in one process:
    customised symbolic Newton–Euler) 224 multiplications and 174 additions, the general
    recursive Newton–Euler 852 / 738 (Corke's comparison table for the PUMA 560).  Target:
    the PUMA 560 within 1.2x of ARM.  The closed form of the Panda is not built (minutes).
+4. The same programs written in the base inertial parameters
+   (``Chain.dynamics_program(what, parameters="base")``, issue 34 item 2), beside the
+   programs in the chain's numbers, in the ``10 n`` standard parameters, and ``Y_b beta``
+   computed from the regressor's own program; with the share of the operations that
+   depend on ``beta`` alone (computed once per parameter set).
 
 Nothing here is asserted; the figures go to the report and ``benchmarks/README.md``.
 """
@@ -87,6 +92,58 @@ def counts() -> None:
         ratio = f"{ops[0] / 224:.2f}x / {ops[1] / 174:.2f}x" if name == "PUMA 560" else ""
         print(f"{name:<10} {before:>22} {f'{ops[0]} / {ops[1]} / {ops[2]}':>18} {t_prog:>7.2f}s {ratio:>16}")
     print("literature (PUMA 560, Corke's table): ARM 224 / 174; general recursive NE 852 / 738")
+    base_counts(gravity)
+
+
+def _split(prog) -> tuple[tuple[int, ...], tuple[int, ...]]:
+    """The operations of the assignments in the parameters alone (once per beta) and the rest."""
+    from screwsym.motion.newton_euler import Program
+
+    params = set(prog.arguments[-1])
+    only, rest = [], []
+    known = set(params)
+    for t, e in prog.assignments:
+        if e.free_symbols <= known:
+            only.append((t, e))
+            known.add(t)
+        else:
+            rest.append((t, e))
+    once = Program((), tuple(only), ImmutableMatrix([0])).operations()
+    per_state = Program((), tuple(rest), prog.outputs).operations()
+    return tuple(once), tuple(per_state)
+
+
+def base_counts(gravity) -> None:
+    """Part 4: the programs in the base parameters beside the numeric ones and ``Y_b beta``."""
+    from screwsym.motion.newton_euler import Program, regressor_program
+    from screwsym.motion.parameters import base_parameters
+
+    print()
+    print("in the base parameters (dynamics_program(..., parameters='base')), mult / add / functions;")
+    print("'of which beta only' = assignments in beta alone (once per parameter set, hoistable)")
+    print(f"{'arm':<10} {'what':<17} {'b':>3} {'numbers':>14} {'base params':>14} {'of which beta only':>19} "
+          f"{'10n standard':>14} {'Y_b beta (regressor)':>21} {'build':>7}")
+    for name, make in (("PUMA 560", puma560), ("UR5", mr_ur5_chain), ("Panda (7)", panda)):
+        arm = make()
+        base = base_parameters(arm, gravity)
+        for what in ("inverse_dynamics", "mass_matrix", "gravity"):
+            plain = arm.dynamics_program(what, gravity).operations()
+            t0 = time.process_time()
+            prog = arm.dynamics_program(what, gravity, parameters="base")
+            t_build = time.process_time() - t0
+            ops = prog.operations()
+            once, _ = _split(prog)
+            std = arm.dynamics_program(what, gravity, parameters="standard").operations()
+            yb = ""
+            if what == "inverse_dynamics":
+                Y = regressor_program(arm, gravity)
+                beta = prog.arguments[-1]
+                out = ImmutableMatrix(Y.outputs.extract(list(range(arm.n_joints)), list(base.columns))) * beta
+                yops = Program((), Y.assignments, out).operations()
+                yb = f"{yops[0]} / {yops[1]} / {yops[2]}"
+            fmt = "{} / {} / {}".format
+            print(f"{name:<10} {what:<17} {len(base.columns):>3} {fmt(*plain):>14} {fmt(*ops):>14} "
+                  f"{fmt(*once):>19} {fmt(*std):>14} {yb:>21} {t_build:>6.2f}s")
 
 
 def main() -> None:
@@ -147,10 +204,9 @@ def main() -> None:
     except ImportError:
         rows.append(("pinocchio rnea", "not installed", ""))
     else:
-        sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests" / "crosscheck"))
-        from test_dynamics_peers import _pin_model
+        from _robots import pin_model
 
-        model = _pin_model(pin, arm)
+        model = pin_model(pin, arm, [0, 0, -9.81])
         data = model.createData()
         t0 = time.perf_counter()
         ref = [pin.rnea(model, data, Q[i], QD[i], QDD[i]).copy() for i in range(k)]

@@ -19,6 +19,8 @@ from .parameters import (
     BaseParameters,
     base_parameters,
     base_regressor,
+    base_symbols,
+    base_values,
     parameters,
 )
 from .transform import Transform, adjoint_matrix, skew
@@ -43,6 +45,8 @@ __all__ = [
     "parameters",
     "base_parameters",
     "base_regressor",
+    "base_symbols",
+    "base_values",
     "regressor_program",
     "parameter_symbols",
     "BaseParameters",

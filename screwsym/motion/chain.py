@@ -410,9 +410,13 @@ class Chain(ScrewsymBasic):
         return _dynamics.regressor(self, q, qd, qdd, gravity)
 
     def dynamics_program(self, what: str = "inverse_dynamics",
-                         gravity: Any = None) -> _newton_euler.Program:
-        """A straight-line program (customised Newton–Euler): :func:`screwsym.motion.newton_euler.dynamics_program`."""
-        return _newton_euler.dynamics_program(self, what, gravity)
+                         gravity: Any = None, **options: Any) -> _newton_euler.Program:
+        """A straight-line program (customised Newton–Euler): :func:`screwsym.motion.newton_euler.dynamics_program`;
+        with ``parameters="base"`` (and ``extras=``), :func:`screwsym.motion.parameters.base_program`."""
+        if options.get("parameters") == "base":
+            return _parameters.base_program(self, what, gravity, **{
+                k: v for k, v in options.items() if k != "parameters"})
+        return _newton_euler.dynamics_program(self, what, gravity, **options)
 
     def parameters(self, numbers: bool = False, extras: Sequence[str] = ()) -> ImmutableMatrix:
         """The 10n standard inertial parameters (symbols, or the chain's numbers): :func:`screwsym.motion.parameters.parameters`."""

@@ -309,6 +309,26 @@ class _Body(NamedTuple):
     I: tuple[Vec, Vec, Vec]                 # about c
 
 
+class _Params(NamedTuple):
+    """A link's parameters about its origin ``o_i`` in ``{i}``: symbols or their combinations."""
+
+    m: Expr
+    h: Vec                                  # first moment about o_i
+    I: tuple[Vec, Vec, Vec]                 # about o_i
+
+
+def _parametric_bodies(W: _Writer, values: Sequence[Expr], origins: list[Any]) -> list[_Params]:
+    """Each link's ``(m, h, I)`` about ``o_i`` from the ``10 n`` standard ``values`` (linear), named once."""
+    out = []
+    for j, o in enumerate(origins):
+        m, h, I = _link_parameters(list(values[10 * j:10 * j + 10]), o)
+        k = j + 1
+        I = tuple(tuple(W.let(I[r][c], f"J{k}_{'xyz'[min(r, c)]}{'xyz'[max(r, c)]}")
+                        for c in range(3)) for r in range(3))
+        out.append(_Params(W.let(m, f"M{k}"), W.vec(h, f"MS{k}"), I))
+    return out
+
+
 def _bodies(chain: Chain, origins: list[Any]) -> list[_Body]:
     out = []
     for b, o in zip(chain.inertias or (), origins, strict=True):
@@ -345,21 +365,30 @@ def _check_chain(chain: Any) -> None:
         )
 
 
-def _program(chain: Chain, what: str, gravity: Any) -> Program:
-    _check_chain(chain)
+def _program(chain: Chain, what: str, gravity: Any,
+             params: tuple[ImmutableMatrix, ImmutableMatrix] | None = None) -> Program:
+    """The program of ``what``; with ``params = (symbols, values)``, in the parameter ``symbols``
+    (an argument after the joints'), the ``10 n`` standard parameters being ``values``."""
+    if params is None:
+        _check_chain(chain)
     n = chain.n_joints
     q, qd, qdd = (ImmutableMatrix([Symbol(f"{s}{i + 1}", real=True) for i in range(n)])
                   for s in ("q", "qd", "qdd"))
     g = _gravity(gravity)
     taken = {s.name for s in chain.free_symbols | g.free_symbols} | {
         x.name for m in (q, qd, qdd) for x in m}
+    extra: tuple[ImmutableMatrix, ...] = ()
+    if params is not None:
+        extra = (params[0],)
+        taken |= {x.name for x in params[0]}
     W = _Writer(taken)
     links, origins = _links(chain)
-    bodies = _bodies(chain, origins)
     poses = [_joint_pose(W, link, q[i], i + 1) for i, link in enumerate(links)]
+    bodies: Sequence[_Body | _Params]
+    bodies = _bodies(chain, origins) if params is None else _parametric_bodies(W, params[1], origins)
     if what == "mass_matrix":
         H = _crba(W, links, bodies, poses)
-        return Program((q,), _live(W.assigns, H), H, "H")
+        return Program((q, *extra), _live(W.assigns, H), H, "H")
     zero = [S.Zero] * n
     args: tuple[ImmutableMatrix, ...]
     if what == "gravity":
@@ -371,7 +400,7 @@ def _program(chain: Chain, what: str, gravity: Any) -> Program:
     else:
         args, u, a = (q, qd, qdd), list(qd), list(qdd)
     tau = _rnea(W, links, bodies, poses, u, a, _col(-g))
-    return Program(args, _live(W.assigns, tau), tau, "tau")
+    return Program(args + extra, _live(W.assigns, tau), tau, "tau")
 
 
 def _live(assigns: list[tuple[Symbol, Expr]], outputs: ImmutableMatrix) -> tuple[tuple[Symbol, Expr], ...]:
@@ -407,7 +436,7 @@ def _forward(W: _Writer, links: list[_Link], poses: list[Any], qd: Sequence[Expr
     return motions
 
 
-def _rnea(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any],
+def _rnea(W: _Writer, links: list[_Link], bodies: Sequence[_Body | _Params], poses: list[Any],
           qd: list[Expr], qdd: list[Expr], a0: Vec) -> ImmutableMatrix:
     """Newton–Euler with each link's angular velocity ``w``, angular acceleration ``dw`` and
     the acceleration ``a`` of its origin, in ``{i}`` (module docstring)."""
@@ -422,11 +451,15 @@ def _rnea(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any],
         b = bodies[i]
         wh = W.vec(_cross(w, b.h), f"wh{k}")
         fi = W.vec(_add(_scale(b.m, a), _cross(dw, b.h), _cross(w, wh)), f"fb{k}")
-        if all(b.I[r][c] == 0 for r in range(3) for c in range(3) if r != c):
+        if isinstance(b, _Params):  # about o_i: C = I_O dw + w x (I_O w) + h x a
+            Iw = W.vec(_mat(b.I, w), f"Iw{k}")
+            Ci = _add(_mat(b.I, dw), _cross(w, Iw), _cross(b.h, a))
+        elif all(b.I[r][c] == 0 for r in range(3) for c in range(3) if r != c):
             Iw = _mat(b.I, w)  # inline: w x (I w) collects to (I_zz - I_yy) w_y w_z, ...
         else:
             Iw = W.vec(_mat(b.I, w), f"Iw{k}")
-        Ci = _add(_mat(b.I, dw), _cross(w, Iw), _cross(b.c, fi))
+        if not isinstance(b, _Params):
+            Ci = _add(_mat(b.I, dw), _cross(w, Iw), _cross(b.c, fi))
         if i + 1 < n:  # the wrench of links i+2.., carried from {i+1} into {i}
             R, p = poses[i + 1]
             f = W.vec(_mat(R, f), f"Rf{k + 1}_")
@@ -437,7 +470,8 @@ def _rnea(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any],
     return ImmutableMatrix(tau)
 
 
-def _crba(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any]) -> ImmutableMatrix:
+def _crba(W: _Writer, links: list[_Link], bodies: Sequence[_Body | _Params],
+          poses: list[Any]) -> ImmutableMatrix:
     """Composite rigid bodies in the frames ``{i}``: ``(m, h, I_O)`` of links ``i..n`` in ``{i}``."""
     n = len(links)
     H: list[list[Expr]] = [[S.Zero] * n for _ in range(n)]
@@ -478,8 +512,10 @@ def _crba(W: _Writer, links: list[_Link], bodies: list[_Body], poses: list[Any])
     return ImmutableMatrix(H)
 
 
-def _inertia_about_origin(b: _Body) -> Any:
+def _inertia_about_origin(b: _Body | _Params) -> Any:
     """``I_c - m [c]x^2 = I_c + m (c.c 1 - c c^T)``."""
+    if isinstance(b, _Params):
+        return b.I
     cc = _dot(b.c, b.c)
     return tuple(tuple(b.I[r][c] + b.m * ((cc if r == c else 0) - b.c[r] * b.c[c])  # type: ignore[misc]
                        for c in range(3)) for r in range(3))
@@ -489,7 +525,8 @@ WHAT = ("inverse_dynamics", "mass_matrix", "gravity", "coriolis", "bias")
 
 
 def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any = None, *,
-                     armature: Any = None, viscous: Any = None, coulomb: Any = None) -> Program:
+                     armature: Any = None, viscous: Any = None, coulomb: Any = None,
+                     parameters: Any = None, extras: Sequence[str] = ()) -> Program:
     r"""The chain's dynamics as a straight-line :class:`Program` (customised Newton–Euler).
 
     ``what`` is ``"inverse_dynamics"`` (``tau(q, qd, qdd)``, arguments ``q, qd, qdd``),
@@ -500,6 +537,19 @@ def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any 
     computes exactly the closed forms of :mod:`screwsym.motion.dynamics` (the tests compare
     them, and with pinocchio); its :meth:`Program.operations` are the cost of evaluating it.
 
+    ``armature``, ``viscous``, ``coulomb`` (numbers or symbols, one per joint) add the
+    joints' rotor inertia ``Ia qdd`` and friction ``Fv qd + Fc sign(qd)``.
+
+    ``parameters="standard"`` writes the program in the ``10 n`` standard inertial
+    parameters (:func:`parameter_symbols`, one more argument) instead of the chain's
+    numbers: the Newton–Euler recursion in the parameters about each link's origin
+    (``tau = Y pi`` identically); ``extras`` (among ``"armature", "viscous", "coulomb"``)
+    adds the joints' rotor inertia and friction as parameters too, and the chain needs no
+    inertias.  ``parameters`` may also be a pair ``(symbols, values)``: the argument's
+    symbols and the standard parameters (with the extras') as expressions in them, linear.
+    In the *base* parameters: ``Chain.dynamics_program(what, parameters="base")``
+    (:func:`screwsym.motion.parameters.base_program`, which gives the pair).
+
     >>> from screwsym import Chain, SpatialInertia, Twist
     >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
     ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])],
@@ -509,13 +559,36 @@ def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any 
     Matrix([
     [2*cos(q2) + 3, cos(q2) + 1],
     [  cos(q2) + 1,           1]])
+
+    In the standard parameters:
+
+    >>> dynamics_program(arm, "gravity", [0, -1, 0], parameters="standard").expressions()
+    Matrix([
+    [mc_x_1 + mc_x_2],
+    [         mc_x_2]])
     """
     what = check_choice(what, "what", WHAT)
-    p = _program(chain, what, gravity)
-    n = chain.n_joints
-    terms = {name: None if v is None else [check_scalar(x, f"{name}[{i}]") for i, x in
-                                           enumerate(check_sequence(v, name, "joint values", n))]
-             for name, v in (("armature", armature), ("viscous", viscous), ("coulomb", coulomb))}
+    n = chain.n_joints if hasattr(chain, "n_joints") else 0
+    joint_terms = (("armature", armature), ("viscous", viscous), ("coulomb", coulomb))
+    if parameters is None:
+        if extras:
+            raise ValueError("extras: the joints' terms as parameters need parameters='base' or "
+                             "'standard'; with the chain's numbers give armature=, viscous=, coulomb=")
+        p = _program(chain, what, gravity)
+        terms = {name: None if v is None else [check_scalar(x, f"{name}[{i}]") for i, x in
+                                               enumerate(check_sequence(v, name, "joint values", n))]
+                 for name, v in joint_terms}
+    else:
+        for name, v in joint_terms:
+            if v is not None:
+                raise ValueError(f"{name}: with parameters the joints' terms are parameters "
+                                 f"too: give extras=[{name!r}, ...] instead")
+        chosen = _extras(extras)
+        symbols, values = _parameter_inputs(chain, parameters, chosen)
+        p = _program(chain, what, gravity, (symbols, values))
+        terms = {name: None if name not in chosen else
+                 [values[10 * n + i * len(chosen) + chosen.index(name)] for i in range(n)]
+                 for name, _ in joint_terms}
     if all(v is None for v in terms.values()):
         return p
     out = p.outputs.as_mutable()
@@ -533,6 +606,27 @@ def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any 
             if terms["coulomb"]:
                 out[i] += terms["coulomb"][i] * sign(qd[i])
     return Program(p.arguments, p.assignments, ImmutableMatrix(out), p.name)
+
+
+def _parameter_inputs(chain: Chain, parameters: Any,
+                      extras: tuple[str, ...]) -> tuple[ImmutableMatrix, ImmutableMatrix]:
+    """The program's parameter argument and the standard parameters' values in it."""
+    if not hasattr(chain, "twists") or not hasattr(chain, "n_joints"):
+        raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
+    pi = parameter_symbols(chain.n_joints, extras)
+    if isinstance(parameters, tuple) and len(parameters) == 2:
+        symbols, values = (ImmutableMatrix(x) for x in parameters)
+        if len(values) != len(pi) or not all(isinstance(x, Symbol) for x in symbols):
+            raise ValueError(f"parameters: expected (symbols, values) with {len(pi)} values")
+    elif parameters == "standard":
+        symbols, values = pi, pi
+    else:
+        raise ValueError(f"parameters: expected 'standard' or (symbols, values), got {parameters!r} "
+                         "(the base parameters: Chain.dynamics_program(..., parameters='base'))")
+    clash = {x.name for x in symbols} & {s.name for s in chain.free_symbols}
+    if clash:
+        raise ValueError(f"chain: its symbols {sorted(clash)} have the names of inertial parameters")
+    return symbols, values
 
 
 #: the optional joint terms: rotor inertia ``Ia qdd``, viscous ``Fv qd`` and Coulomb ``Fc sign(qd)``

@@ -44,18 +44,19 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from sympy import Add, ImmutableMatrix, Rational, Symbol, cos, sign, sin
+from sympy import Add, Float, ImmutableMatrix, Rational, Symbol, cos, sign, sin
 from sympy.polys.domains import GF, QQ
 from sympy.polys.matrices import DomainMatrix
 
 from ..core.checks import check_sequence, check_vector
 from .dynamics import GRAVITY
-from .newton_euler import EXTRAS, Program, parameter_symbols, regressor_program
+from .newton_euler import EXTRAS, Program, dynamics_program, parameter_symbols, regressor_program
 
 if TYPE_CHECKING:
     from .chain import Chain
 
-__all__ = ["parameters", "BaseParameters", "base_parameters", "base_regressor"]
+__all__ = ["parameters", "BaseParameters", "base_parameters", "base_regressor", "base_symbols",
+           "base_values", "base_program"]
 
 
 def parameters(chain: Chain, numbers: bool = False, extras: Any = ()) -> ImmutableMatrix:
@@ -226,6 +227,9 @@ def _base(chain: Chain, gravity: ImmutableMatrix, extras: tuple[str, ...]) -> Ba
                 rows.extend([Rational(v.numerator, v.denominator)
                              for v in flat[cols * i:cols * (i + 1)]] for i in range(n))
         M = DomainMatrix.from_list_sympy(len(rows), cols, rows)
+        if not M.domain.is_Exact:
+            raise ValueError("chain: base_parameters needs exact numbers (rationals or symbols) in "
+                             "the chain's geometry, got floats")
         if M.domain == QQ:  # the rank modulo a large prime, which is the rank but by chance
             Mp = DomainMatrix.from_list([[_modp(x) for x in row] for row in rows],
                                         GF(PRIME))
@@ -278,7 +282,11 @@ def base_parameters(chain: Chain, gravity: Any = None, extras: Any = ()) -> Base
         raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
     parameter_symbols(0, extras)  # checks the names
     chosen = tuple(e for e in EXTRAS if e in extras)
-    return _base(chain, check_vector(GRAVITY if gravity is None else gravity, "gravity"), chosen)
+    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+    # a decimal gravity, e.g. -9.81, as the rational it is (its exact binary value): the
+    # echelon form must be exact (floats would make spurious pivots)
+    g = g.xreplace({f: Rational(f) for f in g.atoms(Float)})
+    return _base(chain, g, chosen)
 
 
 def base_regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None,
@@ -301,3 +309,90 @@ def base_regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None,
               ((q, "q"), (qd, "qd"), (qdd, "qdd"))]
     Y = regressor_program(chain, gravity, extras).evaluate(*values)
     return ImmutableMatrix(Y.extract(list(range(n)), list(base.columns)))
+
+
+def base_symbols(chain: Chain, gravity: Any = None, extras: Any = ()) -> ImmutableMatrix:
+    r"""Symbols for the base parameters, each named for its group (Khalil & Dombre's ``R``).
+
+    The ``k``-th is named for the standard parameter at :func:`base_parameters`'
+    ``columns[k]``, with ``R`` appended where other parameters are grouped into it
+    (``ZZ1R``: here ``I_zz_1R``).  They are the last argument of
+    :func:`base_program` (``Chain.dynamics_program(what, parameters="base")``);
+    their values are
+    :func:`base_values`.
+
+    >>> from screwsym import Chain, Twist
+    >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+    ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])])
+    >>> base_symbols(arm).T
+    Matrix([[I_zz_1R, m_2R, mc_x_2R, mc_y_2]])
+    """
+    base = base_parameters(chain, gravity, extras)
+    pi = parameters(chain, extras=extras)
+    names = []
+    for k, col in enumerate(base.columns):
+        grouped = sum(1 for x in base.matrix.row(k) if x != 0) > 1
+        names.append(Symbol(f"{pi[col].name}{'R' if grouped else ''}", real=True))
+    return ImmutableMatrix(names)
+
+
+def base_values(chain: Chain, gravity: Any = None) -> ImmutableMatrix:
+    r"""The base parameters of the chain's own inertias, exact: ``B pi`` at its numbers.
+
+    >>> from screwsym import Chain, SpatialInertia, Twist
+    >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+    ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])],
+    ...             inertias=[SpatialInertia.point_mass(1, [1, 0, 0]),
+    ...                       SpatialInertia.point_mass(1, [2, 0, 0])])
+    >>> base_values(arm).T
+    Matrix([[5, -3, -2, 0]])
+    """
+    base = base_parameters(chain, gravity)
+    return ImmutableMatrix(base.matrix * parameters(chain, numbers=True))
+
+
+def base_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any = None,
+                 extras: Any = (), **joint_terms: Any) -> Program:
+    r"""The chain's dynamics as a straight-line program in its base parameters.
+
+    :func:`screwsym.motion.newton_euler.dynamics_program` (``what`` and ``gravity`` as there;
+    also ``Chain.dynamics_program(what, gravity, parameters="base")``) with one more
+    argument, the column :func:`base_symbols` (each named for its group), computing
+    ``Y_b beta`` (:func:`base_regressor`) identically: Khalil & Kleinfinger (1987)'s
+    customised Newton–Euler model in the base parameters, the recursion in the parameters
+    about each link's origin with each standard parameter at a pivot of
+    :func:`base_parameters` replaced by its base parameter and the others by ``0`` (folded
+    away as the program is written).  Then ``Y pi = Y_b beta`` makes it the chain's
+    dynamics for any ``pi`` with ``beta = B pi``.  The base parameters are those for
+    ``gravity``; ``extras`` (among ``"armature", "viscous", "coulomb"``) adds the joints'
+    rotor inertia and friction.  The chain needs no inertias.
+
+    The planar 2R arm (gravity along the axes: Khalil & Dombre's four, grouped):
+
+    >>> from screwsym import Chain, Twist
+    >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+    ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])])
+    >>> p = base_program(arm, "mass_matrix")
+    >>> p.arguments[1].T
+    Matrix([[I_zz_1R, m_2R, mc_x_2R, mc_y_2]])
+    >>> print(p)
+    s2 = sin(q2)
+    c2 = cos(q2)
+    J2_yy = m_2R - 2*mc_x_2R
+    MS2x = -m_2R + mc_x_2R
+    F2f1_y = MS2x*c2 - mc_y_2*s2
+    F2C1_z = F2f1_y + J2_yy
+    sp2 = 2*F2f1_y + m_2R
+    Ic1_zz = I_zz_1R + J2_yy + sp2
+    H = [Ic1_zz, F2C1_z, F2C1_z, J2_yy]
+    """
+    for name in joint_terms:
+        raise ValueError(f"{name}: in the base parameters the joints' terms are parameters too: "
+                         f"give extras=[{name!r}, ...] instead")
+    base = base_parameters(chain, gravity, extras)
+    beta = base_symbols(chain, gravity, extras)
+    values: list[Any] = [0] * base.matrix.cols
+    for b, col in zip(beta, base.columns, strict=True):
+        values[col] = b
+    return dynamics_program(chain, what, gravity, parameters=(beta, ImmutableMatrix(values)),
+                            extras=list(extras))

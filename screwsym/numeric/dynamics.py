@@ -21,9 +21,8 @@ import numpy as np
 from sympy import ImmutableMatrix
 
 from ..codegen import lambdify
-from ..core.checks import check_vector
+from ..core.checks import check_choice, check_vector
 from ..motion.chain import Chain
-from ..motion.newton_euler import dynamics_program
 
 __all__ = ["DynamicsFunctions", "dynamics_functions", "forward_dynamics"]
 
@@ -54,25 +53,35 @@ def _shaped(f: Any, trailing: tuple[int, ...]) -> Any:
 
 
 @lru_cache(maxsize=16)
-def _functions(chain: Chain, gravity: ImmutableMatrix, backend: str | None) -> DynamicsFunctions:
+def _functions(chain: Chain, gravity: ImmutableMatrix, backend: str | None,
+               parameters: str | None = None) -> DynamicsFunctions:
     n = chain.n_joints
-    tau = dynamics_program(chain, "inverse_dynamics", gravity)
-    H = dynamics_program(chain, "mass_matrix")
-    bias = dynamics_program(chain, "bias", gravity)
+    options = {} if parameters is None else {"parameters": parameters}
+    tau = chain.dynamics_program("inverse_dynamics", gravity, **options)
+    H = chain.dynamics_program("mass_matrix", gravity, **options)
+    bias = chain.dynamics_program("bias", gravity, **options)
+    extra = [] if parameters is None else ["beta" if parameters == "base" else "pi"]
     return DynamicsFunctions(
-        _shaped(lambdify(list(tau.arguments), tau, backend, names=["q", "qd", "qdd"]), (n,)),
-        _shaped(lambdify(list(H.arguments), H, backend, names=["q"]), (n, n)),
-        _shaped(lambdify(list(bias.arguments), bias, backend, names=["q", "qd"]), (n,)),
+        _shaped(lambdify(list(tau.arguments), tau, backend, names=["q", "qd", "qdd", *extra]), (n,)),
+        _shaped(lambdify(list(H.arguments), H, backend, names=["q", *extra]), (n, n)),
+        _shaped(lambdify(list(bias.arguments), bias, backend, names=["q", "qd", *extra]), (n,)),
     )
 
 
 def dynamics_functions(chain: Chain, gravity: Any = (0, 0, -9.81),
-                       backend: str | None = None) -> DynamicsFunctions:
+                       backend: str | None = None, parameters: str | None = None) -> DynamicsFunctions:
     r"""The chain's inverse dynamics, mass matrix and bias as batched numeric functions.
 
     ``gravity`` is the gravitational acceleration, numbers (default
     ``(0, 0, -9.81)``); ``backend`` as for :func:`screwsym.lambdify`.  Cached per
-    chain, gravity and back end.
+    chain, gravity, back end and ``parameters``.
+
+    With ``parameters="base"`` the functions take the base inertial parameters as a last
+    argument ``beta`` (``(..., b)``, in the order of
+    :func:`screwsym.motion.parameters.base_symbols`; the chain's own are
+    :func:`~screwsym.motion.parameters.base_values`), compiled from
+    ``chain.dynamics_program(what, parameters="base")``; with ``"standard"``, the ``10 n``
+    standard parameters ``pi``.  Then the chain needs no inertias (for identification).
 
     >>> import numpy as np
     >>> from screwsym import Chain, SpatialInertia, Twist
@@ -84,15 +93,28 @@ def dynamics_functions(chain: Chain, gravity: Any = (0, 0, -9.81),
            [ 0.]])
     >>> f.mass_matrix(np.zeros((5, 1))).shape
     (5, 1, 1)
+
+    The same in the base parameters (the pendulum's ``mc_x_1, mc_z_1, I_yy_1``):
+
+    >>> from screwsym.motion.parameters import base_symbols, base_values
+    >>> base_symbols(pendulum, (0, 0, -10)).T, base_values(pendulum, (0, 0, -10)).T
+    (Matrix([[mc_x_1, mc_z_1, I_yy_1]]), Matrix([[2, 0, 2]]))
+    >>> fb = dynamics_functions(pendulum, gravity=(0, 0, -10), backend="numpy", parameters="base")
+    >>> beta = np.array([2.0, 0.0, 2.0])
+    >>> fb.bias(np.array([[0.0], [np.pi / 2]]), np.zeros((2, 1)), beta).round(12) + 0.0
+    array([[20.],
+           [ 0.]])
     """
     if not isinstance(chain, Chain):
         raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
-    if chain.inertias is None:
+    if parameters is not None:
+        parameters = check_choice(parameters, "parameters", ("base", "standard"))
+    elif chain.inertias is None:
         raise ValueError("chain: the chain has no inertias; build it with Chain(..., inertias=[...])")
     g = check_vector(gravity, "gravity")
     if g.free_symbols:
         raise ValueError(f"gravity: expected numbers, got {list(g)}")
-    return _functions(chain, g, backend)
+    return _functions(chain, g, backend, parameters)
 
 
 def forward_dynamics(chain: Chain, q: Any, qd: Any, tau: Any, gravity: Any = (0, 0, -9.81),

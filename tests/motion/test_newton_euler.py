@@ -180,3 +180,117 @@ def test_armature_and_friction_terms_against_pinocchio():
     assert not np.allclose(tau(q, qd, qdd), pin.rnea(model, data, q, qd, qdd), rtol=1e-6)
     with pytest.raises(ValueError, match="viscous"):
         dynamics_program(chain, viscous=[1, 2])
+
+
+# ----------------------------------------------------------------- in the base parameters
+
+
+def _spatial_rrp(a):
+    return Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+                  Twist.rotation([0, 1, 0], point=[0, 0, 1]),
+                  Twist.translation([1, 0, 0])],
+                 inertias=[SpatialInertia.point_mass(1, [0, 1, 0]),
+                           SpatialInertia(3, [a, 0, 1], ImmutableMatrix.diag(1, 2, 2)),
+                           SpatialInertia.point_mass(2, [2, 0, 1])])
+
+
+def _is_zero(e) -> bool:
+    return trigsimp(e.expand()) == 0
+
+
+@pytest.mark.parametrize("extras", [[], ["armature", "viscous", "coulomb"]])
+def test_base_parameter_program_is_the_base_regressor_exactly(extras):
+    """Issue 34 item 2: tau(q, qd, qdd, beta) == Y_b beta identically (symbolic q, qd, qdd, beta)."""
+    from screwsym.motion.parameters import base_parameters, base_symbols
+
+    arm = _spatial_rrp(Rational(1, 2))
+    gsym = symbols("g", positive=True)
+    g = [0, 0, -gsym]
+    p = arm.dynamics_program(gravity=g, parameters="base", extras=extras)
+    q, qd, qdd, beta = p.arguments
+    assert beta == base_symbols(arm, g, extras)
+    assert len(beta) == len(base_parameters(arm, g, extras).columns)
+    Yb = arm.base_regressor(q, qd, qdd, g, extras)
+    assert all(_is_zero(x) for x in p.expressions() - Yb * beta)
+    # the check catches a program in one base parameter too many (the last one doubled)
+    wrong = p.expressions().xreplace({beta[-1]: 2 * beta[-1]})
+    assert not all(_is_zero(x) for x in wrong - Yb * beta)
+    # and it is the chain's own inverse dynamics at its own base parameters
+    if not extras:
+        from screwsym.motion.parameters import base_values
+
+        mine = dict(zip(beta, base_values(arm, g), strict=True))
+        ours = p.expressions().xreplace(mine)
+        theirs = dynamics_program(arm, gravity=g).expressions()
+        assert all(_is_zero(x) for x in ours - theirs)
+
+
+def test_mass_matrix_gravity_and_bias_in_the_base_parameters():
+    from screwsym.motion.parameters import base_values
+
+    arm = _spatial_rrp(Rational(1, 2))
+    g = [0, 0, -Rational(981, 100)]
+    beta = base_values(arm, g)
+    for what in ("mass_matrix", "gravity", "coriolis", "bias"):
+        p = arm.dynamics_program(what, g, parameters="base")
+        ours = p.expressions().xreplace(dict(zip(p.arguments[-1], beta, strict=True)))
+        theirs = dynamics_program(arm, what, g).expressions()
+        assert all(_is_zero(x) for x in ours - theirs), what
+        # a perturbed beta is caught
+        off = dict(zip(p.arguments[-1], [b + k + 1 for k, b in enumerate(beta)], strict=True))
+        assert not all(_is_zero(x) for x in p.expressions().xreplace(off) - theirs), what
+    # in the standard parameters: Y pi, with the regressor's own program
+    from screwsym.motion.newton_euler import regressor_program
+
+    p = dynamics_program(arm, gravity=g, parameters="standard")
+    q_, qd_, qdd_, pis = p.arguments
+    Y = regressor_program(arm, g).expressions()
+    assert all(_is_zero(x) for x in p.expressions() - Y * pis)
+
+
+def test_base_parameter_program_against_pinocchio_on_the_ur5():
+    """Generated (C and NumPy) in beta, at beta of the UR5's inertias: pinocchio's rnea; a perturbed beta is not."""
+    pin = pytest.importorskip("pinocchio")
+    from screwsym.motion.parameters import base_values
+    from screwsym.numeric.dynamics import dynamics_functions
+
+    chain = mr_ur5_chain()
+    g = [0, 0, -Rational(981, 100)]
+    model = pin_model(pin, chain, G)
+    data = model.createData()
+    p = chain.dynamics_program(gravity=g, parameters="base")
+    beta = np.array(base_values(chain, g), dtype=float).ravel()
+    assert len(beta) == 36 == len(p.arguments[3])
+    standard = dynamics_program(chain, gravity=g)
+    assert p.operations().multiplications < 2 * standard.operations().multiplications
+    rng = np.random.default_rng(342)
+    q, qd, qdd = rng.uniform(-2, 2, size=(3, 20, 6))
+    expected = np.array([pin.rnea(model, data, *s) for s in zip(q, qd, qdd, strict=True)])
+    fs = [lambdify(list(p.arguments), p, "numpy"), dynamics_functions(chain, G, parameters="base").inverse_dynamics]
+    for f in fs:
+        np.testing.assert_allclose(f(q, qd, qdd, beta), expected, rtol=1e-9, atol=1e-9)
+        for k in (0, 17, 35):
+            wrong = beta.copy()
+            wrong[k] *= 1.001
+            assert not np.allclose(f(q, qd, qdd, wrong), expected, rtol=1e-9, atol=1e-9)
+    fb = dynamics_functions(chain, G, parameters="base")
+    M = np.triu(pin.crba(model, data, q[0]))
+    np.testing.assert_allclose(fb.mass_matrix(q[0], beta), M + np.triu(M, 1).T, rtol=1e-9, atol=1e-9)
+
+
+def test_base_parameter_program_checks_its_input():
+    arm = _spatial_rrp(1)
+    with pytest.raises(ValueError, match="parameters"):
+        dynamics_program(arm, parameters="minimal")
+    with pytest.raises(ValueError, match="extras="):
+        arm.dynamics_program(parameters="base", armature=[1, 1, 1])
+    with pytest.raises(ValueError, match="base"):
+        dynamics_program(arm, parameters="base")
+    with pytest.raises(ValueError, match="extras"):
+        dynamics_program(arm, extras=["armature"])
+    with pytest.raises(ValueError, match="names of inertial parameters"):
+        m_1 = symbols("m_1", real=True)
+        dynamics_program(Chain([Twist.rotation([0, 0, 1], point=[m_1, 0, 0])]), parameters="standard")
+    # no inertias needed in the parameters
+    bare = Chain(arm.twists)
+    assert bare.dynamics_program(parameters="base").arguments[3] == arm.dynamics_program(parameters="base").arguments[3]
