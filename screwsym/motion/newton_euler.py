@@ -560,12 +560,11 @@ def dynamics_program(chain: Chain, what: str = "inverse_dynamics", gravity: Any 
     [2*cos(q2) + 3, cos(q2) + 1],
     [  cos(q2) + 1,           1]])
 
-    In the standard parameters:
+    In the standard parameters (about the space origin; here at ``q = 0``):
 
-    >>> dynamics_program(arm, "gravity", [0, -1, 0], parameters="standard").expressions()
-    Matrix([
-    [mc_x_1 + mc_x_2],
-    [         mc_x_2]])
+    >>> p = dynamics_program(arm, "gravity", [0, -1, 0], parameters="standard")
+    >>> p.evaluate([0, 0], p.arguments[1]).T
+    Matrix([[mc_x_1 + mc_x_2, -m_2 + mc_x_2]])
     """
     what = check_choice(what, "what", WHAT)
     n = chain.n_joints if hasattr(chain, "n_joints") else 0
