@@ -10,6 +10,11 @@ Run from the repository root::
 fresh processes that have not imported numba (as a user's process), this tree's
 and TREE's (e.g. a worktree of main) in alternate rounds, side by side with
 hand-written NumPy (einsum) and the memory floor; ``--default-only`` stops there.
+Beside the floor (bytes at the bandwidth of a copy) it prints the time of one
+vectorised read of the inputs (``numpy.add.reduce``: on one core reading is slower
+than the copy's bandwidth suggests, so this is the bound for a kernel that reads
+much and writes little, e.g. ``pitch``) and the function with ``out=`` (the result
+written into an array given: no fresh pages, which a new result must pay).
 
 Prints, per operation, nanoseconds per screw for the default
 ``screwsym.numeric`` (numba once imported, else C), each back end (numpy, numba,
@@ -174,8 +179,18 @@ def worker(n: int, repeat: int) -> None:
             for src, d in zip(a, dst, strict=True):
                 np.copyto(d, src)
 
+        def read_inputs(*a):  # one vectorised read of the inputs: what the kernel cannot beat
+            for src in a:
+                np.add.reduce(src, axis=None)
+
+        dst = np.empty_like(fn(*args))
+
+        def into(*a, fn=fn, dst=dst):  # no fresh pages for the result
+            fn(*a, out=dst)
+
         row = round_robin({"default": (fn, args), "hand NumPy": (HAND[name], args),
-                           "copy of inputs": (copy_inputs, args)}, n, repeat)
+                           "copy of inputs": (copy_inputs, args), "read inputs": (read_inputs, args),
+                           "out=": (into, args)}, n, repeat)
         row["floor"] = BYTES[name] / bw
         one = tuple(a[0].copy() for a in args)
         row["one call us"] = min(timeit.repeat(lambda fn=fn, one=one: fn(*one), number=5000,
@@ -205,17 +220,21 @@ def versus(trees: list[str], n: int, repeat: int, rounds: int = 3) -> None:
                     old[name][k] = min(old[name][k], v)
     print(f"Default back end of screwsym.numeric, numba not imported; N = {n:,}, ns per screw "
           f"(best of {rounds} processes x {repeat})")
-    cols = ["default", "hand NumPy", "copy of inputs", "floor"]
+    cols = ["default", "out=", "hand NumPy", "copy of inputs", "read inputs", "floor"]
     for tree in trees:
         print(f"  {tree}: default back end {best[tree]['_backend']!r}")
         print(f"    {'operation':<20}" + "".join(f"{c:>15}" for c in cols)
-              + f"{'default/floor':>15}{'default/hand':>14}{'one call us':>13}")
+              + f"{'default/floor':>15}{'out=/floor':>12}{'default/read':>14}{'default/hand':>14}"
+              + f"{'one call us':>13}")
         for name in numeric.NAMES:
             row = best[tree][name]
-            print(f"    {name:<20}" + "".join(f"{row[c]:>15.2f}" for c in cols)
-                  + f"{row['default'] / row['floor']:>15.2f}"
+            print(f"    {name:<20}" + "".join(f"{row.get(c, float('nan')):>15.2f}" for c in cols)
+                  + f"{row['default'] / row['floor']:>15.2f}{row['out='] / row['floor']:>12.2f}"
+                  + f"{row['default'] / row['read inputs']:>14.2f}"
                   + f"{row['default'] / row['hand NumPy']:>14.2f}{row['one call us']:>13.2f}")
-    print("  (floor: bytes read and written per screw at the streaming bandwidth of a copy)\n")
+    print("  (floor: bytes read and written per screw at the streaming bandwidth of a copy;\n"
+          "   read inputs: one vectorised pass reading the inputs (numpy.add.reduce), which a\n"
+          "   single core cannot beat; out=: the result written into an array given, no fresh pages)\n")
 
 
 def main() -> None:

@@ -9,6 +9,8 @@ appears here except through :func:`py_comment` / :func:`c_comment`.
 
 from __future__ import annotations
 
+import math
+
 from ._plan import Plan
 from ._printers import C_HELPERS, BlockPrinter, CPrinter, NumbaPrinter, ScalarPrinter
 
@@ -308,6 +310,20 @@ def _c_chunks(plan: Plan, cname: str, printer: CPrinter,
     return defs, body
 
 
+#: how far ahead the loop asks for its input rows, in bytes of the widest row: a loop
+#: with a few operations per row leaves too few cache misses in flight to read at the
+#: memory's speed (``numeric.pitch`` on 10^6 screws: 6.0 -> 4.2 ns, the time of a bare
+#: read of its input; distances of 3-12 KB measured alike)
+PREFETCH_BYTES = 6144
+
+
+def _prefetches(plan: Plan) -> tuple[int, list[str]]:
+    """The loop's look-ahead in points and its prefetch statements (one per input)."""
+    widest = max([math.prod(s.trailing) for s in plan.specs if s.trailing] + [1])
+    ahead = max(16, PREFETCH_BYTES // (8 * widest))
+    return ahead, [f"SS_PREFETCH(_a{i} + (i + {ahead}) * _s{i});" for i in range(len(plan.specs))]
+
+
 def c_source(plan: Plan, cname: str) -> str:
     """C99: ``cname_point`` for one point and ``cname`` looping over ``n`` points."""
     printer = CPrinter()
@@ -348,13 +364,20 @@ def c_source(plan: Plan, cname: str) -> str:
     lines += defs
     lines += [f"void {cname}_point({', '.join(point_params)})", "{"]
     lines += body
+    ahead, prefetches = _prefetches(plan)
+    call = f"{cname}_point({', '.join(call_args)});"
     lines += [
         "}",
         "",
         f"void {cname}({', '.join(loop_params)})",
         "{",
-        "    for (size_t i = 0; i < n; ++i) {",
-        f"        {cname}_point({', '.join(call_args)});",
+        "    size_t i = 0;",
+        f"    for (; i + {ahead} < n; ++i) {{  /* rows {ahead} ahead asked for */",
+        *(f"        {p}" for p in prefetches),
+        f"        {call}",
+        "    }",
+        "    for (; i < n; ++i) {",
+        f"        {call}",
         "    }",
         "}",
         "",

@@ -263,6 +263,11 @@ static inline double ss_mod(double a, double b)
 static inline double ss_min(double a, double b) { return (a <= b || a != a) ? a : b; }
 static inline double ss_max(double a, double b) { return (a >= b || a != a) ? a : b; }
 static inline double ss_sign(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0 * x); }
+#if defined(__GNUC__) || defined(__clang__)
+#define SS_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define SS_PREFETCH(p) ((void)0)
+#endif
 """
 
 
