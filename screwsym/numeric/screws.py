@@ -411,10 +411,11 @@ def _scale_free(fn: Callable, name: str) -> Callable:
                 return again
             out[...] = again
             return result if isinstance(result, np.ndarray) else out[()]  # a 0-d out
-        bad = np.isnan(first)
-        if not bad.any():
+        # numpy.minimum propagates nan: one read of the result, no array of flags made
+        # (isnan(first).any() wrote one), and the flags only where a nan is
+        if r.size == 0 or not isnan(np.minimum.reduce(r, axis=None)):  # r: contiguous, often
             return result
-        where = np.nonzero(bad)
+        where = np.nonzero(np.isnan(first))
         a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
         r[where] = _rescaled(fn, a[where], name)
         return result
