@@ -181,6 +181,15 @@ def main() -> None:
                  f"first call {t_first:.2f} s"))
     rows.append((f"generated inverse dynamics, {args.n} states", f"{t_batch * 1e3:.1f} ms",
                  f"{per_ours * 1e9:.0f} ns/state"))
+    fb = dynamics_functions(arm, gravity, backend, parameters="base").inverse_dynamics
+    from screwsym.motion.parameters import base_values
+
+    beta = np.array(base_values(arm, gravity), dtype=float).ravel()
+    fb(Q[:2], QD[:2], QDD[:2], beta)  # compiles (numba)
+    out_b, t_base = timed(fb, Q, QD, QDD, beta)
+    rows.append((f"  the same in the base parameters (beta an argument, {len(beta)})",
+                 f"{t_base * 1e3:.1f} ms", f"{t_base / args.n * 1e9:.0f} ns/state; max |diff| "
+                 f"{np.abs(np.asarray(out_b) - np.asarray(out)).max():.1e}"))
     k1 = min(args.loop, args.n)
     t0 = time.perf_counter()
     for i in range(k1):
