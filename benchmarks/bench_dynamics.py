@@ -33,6 +33,9 @@ Measured side by side in one process:
    programs in the chain's numbers, in the ``10 n`` standard parameters, and ``Y_b beta``
    computed from the regressor's own program; with the share of the operations that
    depend on ``beta`` alone (computed once per parameter set).
+5. The Staubli RX-90 (SYMORO's example robot) in general symbolic inertial parameters,
+   mass matrix, inverse dynamics and ``C qd + g``, against SYMORO's own generated code for
+   it, counted by the same rule (``SYMORO_RX90``, with its source).
 
 Nothing here is asserted; the figures go to the report and ``benchmarks/README.md``.
 """
@@ -93,24 +96,74 @@ def counts() -> None:
         print(f"{name:<10} {before:>22} {f'{ops[0]} / {ops[1]} / {ops[2]}':>18} {t_prog:>7.2f}s {ratio:>16}")
     print("literature (PUMA 560, Corke's table): ARM 224 / 174; general recursive NE 852 / 738")
     base_counts(gravity)
+    symoro_counts()
 
 
 def _split(prog) -> tuple[tuple[int, ...], tuple[int, ...]]:
-    """The operations of the assignments in the parameters alone (once per beta) and the rest."""
+    """The operations of the assignments free of the state (the joint variables, rates and
+    accelerations: computed once per parameter set and geometry) and of the rest."""
     from screwsym.motion.newton_euler import Program
 
-    params = set(prog.arguments[-1])
-    only, rest = [], []
-    known = set(params)
+    state = {x for arg in prog.arguments[:-1] for x in arg}
+    once, rest = [], []
     for t, e in prog.assignments:
-        if e.free_symbols <= known:
-            only.append((t, e))
-            known.add(t)
-        else:
+        if e.free_symbols & state:
             rest.append((t, e))
-    once = Program((), tuple(only), ImmutableMatrix([0])).operations()
+            state.add(t)
+        else:
+            once.append((t, e))
+    ops_once = Program((), tuple(once), ImmutableMatrix([0])).operations()
     per_state = Program((), tuple(rest), prog.outputs).operations()
-    return tuple(once), tuple(per_state)
+    return tuple(ops_once), tuple(per_state)
+
+
+#: SYMORO's programs for the Staubli RX-90 with general symbolic inertial parameters (its
+#: own example robot, Khalil & Dombre 2002), counted by Program.operations' rule on the
+#: files SYMORO generated: github.com/symoro/symoro at commit
+#: 23db8e5971036ab18152286fdb63965a93dfbc5d, Robots/RX90/RX90_inm.txt (inertia matrix by
+#: composite links, with rotor inertias IA), RX90_idm.txt (inverse dynamics by Newton-Euler,
+#: with IA, viscous FV and Coulomb FS friction and an external wrench on link 6),
+#: RX90_ccg.txt (C qd + g with FV, FS).  Only the assignments the joint outputs need were
+#: counted (the inertia matrix file also holds a floating base's terms); each file's
+#: equations were parsed with SymPy (a one-off count, not part of this script).
+SYMORO_RX90 = {"mass_matrix": (177, 147, 10), "inverse_dynamics": (343, 300, 16),
+               "bias": (326, 275, 16)}
+
+
+def rx90():
+    """The Staubli RX-90 of SYMORO's example (modified DH; D3 and RL4 symbolic, as there)."""
+    from sympy import pi
+
+    from screwsym import Chain
+
+    D3, RL4 = symbols("D3 RL4", positive=True)
+    rows = [(0, 0, 0, 0), (0, pi / 2, 0, 0), (D3, 0, 0, 0), (0, -pi / 2, RL4, 0),
+            (0, pi / 2, 0, 0), (0, -pi / 2, 0, 0)]
+    return Chain.from_dh(rows, "modified")
+
+
+def symoro_counts() -> None:
+    """Part 5: the RX-90 in its general symbolic inertial parameters, screwsym against SYMORO."""
+    arm = rx90()
+    print()
+    print("Staubli RX-90, general symbolic inertial parameters (parameters='standard'), "
+          "mult / add / functions, against SYMORO's generated code (SYMORO_RX90)")
+    print(f"{'what':<34} {'SYMORO':>14} {'screwsym':>14} {'state-free':>12} {'per state':>14} "
+          f"{'per state / SYMORO':>19}")
+    for what, extras, label in (("mass_matrix", ["armature"], "mass matrix (+ rotor inertia)"),
+                                ("inverse_dynamics", ["armature", "viscous", "coulomb"],
+                                 "inverse dynamics (+ IA, FV, FS)"),
+                                ("bias", ["viscous", "coulomb"], "C qd + g (+ FV, FS)")):
+        prog = arm.dynamics_program(what, parameters="standard", extras=extras)
+        ops = prog.operations()
+        once, per = _split(prog)
+        theirs = SYMORO_RX90[what]
+        fmt = "{} / {} / {}".format
+        print(f"{label:<34} {fmt(*theirs):>14} {fmt(*ops):>14} {f'{once[0]} / {once[1]}':>12} "
+              f"{fmt(*per):>14} {f'{per[0] / theirs[0]:.2f}x / {per[1] / theirs[1]:.2f}x':>19}")
+    print("  (SYMORO's inverse dynamics also applies an external wrench on link 6; its inertial "
+          "parameters are in the DH link frames,\n   screwsym's about the space origin at home, "
+          "hence the state-free part that moves them to each link's frame)")
 
 
 def base_counts(gravity) -> None:
@@ -120,7 +173,7 @@ def base_counts(gravity) -> None:
 
     print()
     print("in the base parameters (dynamics_program(..., parameters='base')), mult / add / functions;")
-    print("'of which beta only' = assignments in beta alone (once per parameter set, hoistable)")
+    print("'of which beta only' = assignments free of the state (once per parameter set, hoistable)")
     print(f"{'arm':<10} {'what':<17} {'b':>3} {'numbers':>14} {'base params':>14} {'of which beta only':>19} "
           f"{'10n standard':>14} {'Y_b beta (regressor)':>21} {'build':>7}")
     for name, make in (("PUMA 560", puma560), ("UR5", mr_ur5_chain), ("Panda (7)", panda)):

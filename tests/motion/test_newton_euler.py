@@ -294,3 +294,36 @@ def test_base_parameter_program_checks_its_input():
     # no inertias needed in the parameters
     bare = Chain(arm.twists)
     assert bare.dynamics_program(parameters="base").arguments[3] == arm.dynamics_program(parameters="base").arguments[3]
+
+
+def test_rx90_in_symbolic_parameters_against_symoros_counts():
+    """The Staubli RX-90 with general symbolic inertial parameters, per state, within 1.1x of SYMORO.
+
+    SYMORO's generated inertia matrix (composite links, with rotor inertias) and inverse
+    dynamics (Newton-Euler, with IA, FV, FS and an external wrench on link 6) for its example
+    RX-90, github.com/symoro/symoro@23db8e5 Robots/RX90/RX90_inm.txt and RX90_idm.txt, counted
+    by Program.operations' rule: 177 / 147 and 343 / 300 multiplications / additions
+    (benchmarks/bench_dynamics.py, SYMORO_RX90).  The assignments free of the state (moving the
+    parameters from the space origin to each link's frame; SYMORO's are in the DH frames) are
+    left out, as they are computed once per parameter set.
+    """
+    D3, RL4 = symbols("D3 RL4", positive=True)
+    rx90 = Chain.from_dh([(0, 0, 0, 0), (0, pi / 2, 0, 0), (D3, 0, 0, 0), (0, -pi / 2, RL4, 0),
+                          (0, pi / 2, 0, 0), (0, -pi / 2, 0, 0)], "modified")
+
+    def per_state(p):
+        state = {x for arg in p.arguments[:-1] for x in arg}
+        rest = []
+        for t, e in p.assignments:
+            if e.free_symbols & state:
+                rest.append((t, e))
+                state.add(t)
+        return Program((), tuple(rest), p.outputs).operations()
+
+    H = per_state(rx90.dynamics_program("mass_matrix", parameters="standard", extras=["armature"]))
+    tau = per_state(rx90.dynamics_program(parameters="standard", extras=["armature", "viscous", "coulomb"]))
+    for ours, (mult, add) in ((H, (177, 147)), (tau, (343, 300))):
+        assert ours.multiplications <= 1.1 * mult and ours.additions <= 1.1 * add, ours
+    # the check is not empty: the whole program, moves included, is not within 1.1x
+    whole = rx90.dynamics_program("mass_matrix", parameters="standard", extras=["armature"]).operations()
+    assert whole.multiplications > 1.1 * 177
