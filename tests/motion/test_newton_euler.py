@@ -276,6 +276,11 @@ def test_base_parameter_program_against_pinocchio_on_the_ur5():
     fb = dynamics_functions(chain, G, parameters="base")
     M = np.triu(pin.crba(model, data, q[0]))
     np.testing.assert_allclose(fb.mass_matrix(q[0], beta), M + np.triu(M, 1).T, rtol=1e-9, atol=1e-9)
+    # and in the 60 standard parameters, at the chain's own numbers
+    fs = dynamics_functions(chain, G, "numpy", parameters="standard")
+    pi_ = np.array(chain.parameters(numbers=True), dtype=float).ravel()
+    np.testing.assert_allclose(fs.inverse_dynamics(q, qd, qdd, pi_), expected, rtol=1e-9, atol=1e-9)
+    assert not np.allclose(fs.inverse_dynamics(q, qd, qdd, pi_ * 1.001), expected, rtol=1e-9, atol=1e-9)
 
 
 def test_base_parameter_program_checks_its_input():
