@@ -18,6 +18,7 @@ from .newton_euler import (
 from .parameters import (
     BaseParameters,
     base_parameters,
+    base_program,
     base_regressor,
     base_symbols,
     base_values,
@@ -47,6 +48,7 @@ __all__ = [
     "base_regressor",
     "base_symbols",
     "base_values",
+    "base_program",
     "regressor_program",
     "parameter_symbols",
     "BaseParameters",
