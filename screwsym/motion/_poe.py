@@ -62,6 +62,7 @@ from __future__ import annotations
 
 from collections import OrderedDict
 from collections.abc import Sequence
+from math import gcd
 from typing import Any, cast
 
 from sympy import (
@@ -79,7 +80,7 @@ from sympy import (
     sin,
 )
 from sympy.core.sorting import default_sort_key
-from sympy.polys.domains import QQ
+from sympy.polys.domains import QQ, ZZ
 from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
 from sympy.polys.rings import ring
 
@@ -178,6 +179,7 @@ class _Engine:
             self.cos_gen[a], self.sin_gen[a] = c, s_
             gens += [c, s_]
         self.R, *self.gens = ring(gens, QQ)
+        self.RZ = self.R.clone(domain=ZZ)  # the same generators over the integers (_sum_products)
         self.gen_of = dict(zip(gens, self.gens, strict=True))
         self.symbols = gens
         # the circle relations c^2 + s^2 = 1, as generator indices (cos, sin)
@@ -219,16 +221,51 @@ class _Engine:
         return [[self._el(m[i, j]) for j in range(3)] for i in range(3)]
 
     # --- 3-vector and 3x3 matrix arithmetic on ring elements (reduced on the geometry's circles)
+    # The products below run over the integers: each factor times the least common multiple of
+    # its coefficients' denominators, the products and their sum in Z[x] (Python integers, no
+    # gcd per coefficient), then one division per term of the sum.  Over Q, SymPy's product
+    # normalises a fraction for every pair of terms; the result is the same polynomial.
+    def _integral(self, a: Any) -> tuple[int, Any]:
+        """``(d, d a)`` with ``d a`` in ``Z[x]`` (``d`` the lcm of the denominators)."""
+        d = 1
+        for c in a.values():
+            den = c.denominator
+            if den != 1:
+                d = d * den // gcd(d, den)
+        return d, self.RZ.dtype({m: c.numerator * (d // c.denominator) for m, c in a.items()})
+
+    def _sum_products(self, pairs: list) -> Any:
+        """``sum a b`` over the pairs of integral forms ``((d_a, A), (d_b, B))``, reduced."""
+        parts = [(da * db, A * B) for (da, A), (db, B) in pairs if A and B]
+        if not parts:
+            return self.R.zero
+        L = 1
+        for d, _ in parts:
+            L = L * d // gcd(L, d)
+        total = parts[0][1] * (L // parts[0][0])
+        for d, P in parts[1:]:
+            total += P * (L // d)
+        QQ_ = QQ
+        return self._reduce(self.R.dtype({m: QQ_(c, L) for m, c in total.items()}))
+
     def _mv(self, M: list, v: list) -> list:
-        return [self._reduce(M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2]) for i in range(3)]
+        Mi = [[self._integral(x) for x in row] for row in M]
+        vi = [self._integral(x) for x in v]
+        return [self._sum_products(list(zip(Mi[i], vi, strict=True))) for i in range(3)]
 
     def _mm(self, A: list, B: list) -> list:
-        return [[self._reduce(A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j]) for j in range(3)]
+        Ai = [[self._integral(x) for x in row] for row in A]
+        Bi = [[self._integral(x) for x in row] for row in B]
+        return [[self._sum_products([(Ai[i][k], Bi[k][j]) for k in range(3)]) for j in range(3)]
                 for i in range(3)]
 
     def _cross(self, a: list, b: list) -> list:
-        return [self._reduce(x) for x in
-                (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])]
+        ai = [self._integral(x) for x in a]
+        bi = [self._integral(x) for x in b]
+        neg = [(d, -P) for d, P in bi]
+        return [self._sum_products([(ai[1], bi[2]), (ai[2], neg[1])]),
+                self._sum_products([(ai[2], bi[0]), (ai[0], neg[2])]),
+                self._sum_products([(ai[0], bi[1]), (ai[1], neg[0])])]
 
     def _rot(self, w: list, angle: tuple | None, sgn: int) -> list:
         """``R = I + sin K + (1 - cos) K^2`` about the unit ``w`` by the angle (``sgn`` its sign)."""

@@ -441,11 +441,15 @@ def _add(A: tuple, B: tuple, sgn: int) -> tuple:
 
 
 def _add_term(D: dict, m: Any, c: Any) -> None:
-    total = D.get(m, QQ.zero) + c
+    old = D.get(m)
+    if old is None:
+        D[m] = c
+        return
+    total = old + c
     if total:
         D[m] = total
     else:
-        D.pop(m, None)
+        del D[m]
 
 
 def _pack(monom: tuple) -> int:
@@ -459,15 +463,20 @@ def _pack(monom: tuple) -> int:
 def _substitute_square(D: dict, g: int, h: int) -> dict:
     """``D`` (packed monomials) with ``x_g**2 -> 1 - x_h**2`` applied until ``x_g``'s exponent is below 2."""
     out: dict = {}
-    work = list(D.items())
     two_g, two_h = 2 << 16 * g, 2 << 16 * h
-    while work:
-        m, c = work.pop()
-        if (m >> 16 * g) & _MASK < 2:
+    shift = 16 * g
+    for m, c in reversed(D.items()):  # the terms last to first, each expanded depth first
+        if (m >> shift) & _MASK < 2:
             _add_term(out, m, c)
             continue
-        work.append((m - two_g, c))
-        work.append((m - two_g + two_h, -c))
+        work = [(m, c)]
+        while work:
+            m, c = work.pop()
+            if (m >> shift) & _MASK < 2:
+                _add_term(out, m, c)
+                continue
+            work.append((m - two_g, c))
+            work.append((m - two_g + two_h, -c))
     return out
 
 
