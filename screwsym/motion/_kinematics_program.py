@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING, Any
 from sympy import Expr, ImmutableMatrix, Symbol, cos, sin, sympify
 
 from ..core.checks import check_choice
+from ..core.tidy import tidy
 from .displacement import exp6
 from .newton_euler import Program
 
@@ -69,6 +70,34 @@ class _Assign:
         return t
 
 
+def _exponential(W: _Assign, twist: Any, qk: Symbol, k: int) -> tuple[list, list]:
+    """``exp6($_k, q_k)`` as ``(R, p)`` entries in ``c_k, s_k`` (assigned) and constants.
+
+    A prismatic joint: ``(I, v q)``.  A unit ``omega`` (revolute or helical, pitch ``h = omega . v``):
+    Rodrigues' ``R = I + s K + (1 - c) K^2`` with ``K^2 = omega omega^T - I``, and
+    ``p = (I - R)(omega x v) + h omega q = -(s K r + (1 - c) K^2 r) + h omega q`` for ``r = omega x v``
+    (Lynch & Park 2017, Proposition 3.25); the constants tidied once (numbers in their normal
+    form).  Any other twist: :func:`exp6` with ``cos q_k, sin q_k`` assigned."""
+    w, v = list(twist.omega), list(twist.v_O)
+    if all(x == 0 for x in w):
+        return [[int(i == j) for j in range(3)] for i in range(3)], [x * qk for x in v]
+    if tidy(w[0] ** 2 + w[1] ** 2 + w[2] ** 2) != 1:
+        E = exp6(twist, qk)
+        trig = {f(qk): W.let(f(qk), f"{name}{k}") for f, name in ((cos, "c"), (sin, "s")) if E.matrix.has(f(qk))}
+        return ([[E.R[i, j].xreplace(trig) for j in range(3)] for i in range(3)],
+                [E.p[i].xreplace(trig) for i in range(3)])
+    c, s = W.let(cos(qk), f"c{k}"), W.let(sin(qk), f"s{k}")
+    K = [[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]]
+    K2 = [[tidy(w[i] * w[j]) - int(i == j) for j in range(3)] for i in range(3)]
+    r = [tidy(w[1] * v[2] - w[2] * v[1]), tidy(w[2] * v[0] - w[0] * v[2]), tidy(w[0] * v[1] - w[1] * v[0])]
+    Kr = [tidy(sum(K[i][j] * r[j] for j in range(3))) for i in range(3)]
+    K2r = [tidy(sum(K2[i][j] * r[j] for j in range(3))) for i in range(3)]
+    h = tidy(w[0] * v[0] + w[1] * v[1] + w[2] * v[2])
+    R = [[int(i == j) + s * K[i][j] + (1 - c) * K2[i][j] for j in range(3)] for i in range(3)]
+    p = [-(s * Kr[i] + (1 - c) * K2r[i]) + h * w[i] * qk for i in range(3)]
+    return R, p
+
+
 def kinematics_program(chain: Chain, what: str = "forward") -> Program:
     r"""``T(q)`` (``what="forward"``, the 4x4 matrix) or the space Jacobian (``"jacobian"``, 6 x n)
     as a straight-line :class:`~screwsym.motion.newton_euler.Program` in ``q1 .. qn``.
@@ -95,8 +124,8 @@ def kinematics_program(chain: Chain, what: str = "forward") -> Program:
     py = p2y - 2*r2xy
     T = [r2xx, r2xy, 0, px, -r2xy, r2xx, 0, py, 0, 0, 1, 0, 0, 0, 0, 1]
     >>> p.operations()
-    Operations(multiplications=12, additions=9, functions=4)
-    >>> (p.expressions() - arm.forward(p.arguments[0]).matrix).applyfunc(lambda e: e.expand()).is_zero_matrix
+    Operations(multiplications=10, additions=8, functions=4)
+    >>> (p.expressions() - arm.forward(p.arguments[0]).matrix).applyfunc(lambda e: e.expand(trig=True)).is_zero_matrix
     True
     """
     what = check_choice(what, "what", WHAT)
@@ -116,14 +145,7 @@ def kinematics_program(chain: Chain, what: str = "forward") -> Program:
                  Rv[2] + p[0] * w[1] - p[1] * w[0]]
             columns.append([W.let(x, f"j{k}{name}") for x, name in
                             zip(w + v, ("wx", "wy", "wz", "vx", "vy", "vz"), strict=True)])
-        E = exp6(twist, qk)
-        trig = {}
-        if E.matrix.has(cos(qk)):
-            trig[cos(qk)] = W.let(cos(qk), f"c{k}")
-        if E.matrix.has(sin(qk)):
-            trig[sin(qk)] = W.let(sin(qk), f"s{k}")
-        ER = [[E.R[i, j].xreplace(trig) for j in range(3)] for i in range(3)]
-        Ep = [E.p[i].xreplace(trig) for i in range(3)]
+        ER, Ep = _exponential(W, twist, qk, k)
         p = [W.let(p[i] + sum(R[i][j] * Ep[j] for j in range(3)), f"p{k}{axes[i]}") for i in range(3)]
         R = [[W.let(sum(R[i][m] * ER[m][j] for m in range(3)), f"r{k}{axes[i]}{axes[j]}") for j in range(3)]
              for i in range(3)]
