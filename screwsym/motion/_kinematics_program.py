@@ -54,7 +54,7 @@ class _Assign:
         self.taken = set(taken)
 
     def let(self, expr: Any, name: str) -> Expr:
-        e = sympify(expr)
+        e = sympify(expr, strict=True)
         if not e.args or (e.is_Mul and len(e.args) == 2 and e.args[0] == -1 and not e.args[1].args):
             return e
         if e in self.seen:  # an entry equal to one before (r_yy = r_xx about z): its symbol

@@ -62,6 +62,7 @@ class _Writer:
         self._pair_lists: dict = {}  # trigonometric factors -> their pairs that can have a partner
         self._pair_info: dict = {}  # (g1, g2) -> what the angle-sum formulas need, or None
         self._mcost: dict = {}  # monomial -> the cost of its factors
+        self._gcost: dict = {}  # generator -> its cost
         self._monos: dict = {}  # monomial -> its expression
         self._factors: dict = {}  # (generator, exponent) -> its power
         self._ranked: list = []  # the factors met, in Basic.compare's order
@@ -182,7 +183,7 @@ class _Writer:
                     self._apply(D, m, partner, alpha, beta, info)
                     changed = True
                     break
-            todo = [m for m, c in D.items() if before.get(m) != c]
+            todo = [m for m, c in D.items() if before.get(m) is not c and before.get(m) != c]
             if not changed:
                 changed = self._pythagoras(D)
                 todo = list(D)
@@ -190,7 +191,7 @@ class _Writer:
 
     def _pair(self, pair: tuple[int, int]) -> tuple | None:
         """What the angle-sum formulas need of a term with the factors ``x_g1 x_g2`` (``g1 < g2``):
-        ``(partner - m, rest - m, same kind, A, B, kind of g1)``, or None when no partner can occur
+        ``(partner - m, rest - m, same kind, A, B, kind of g1, g1, g2)``, or None when no partner can occur
         (remembered until a partner's generator is registered)."""
         hit = self._pair_info.get(pair, _MISSING)
         if hit is _MISSING:
@@ -210,11 +211,11 @@ class _Writer:
         if h1 is None or h2 is None:  # the partner term cannot occur (until it is registered)
             return None
         rest = -(1 << 16 * g1) - (1 << 16 * g2)
-        return rest + (1 << 16 * h1) + (1 << 16 * h2), rest, k1 == k2, A, B, k1
+        return rest + (1 << 16 * h1) + (1 << 16 * h2), rest, k1 == k2, A, B, k1, g1, g2
 
     def _apply(self, D: dict, m: int, partner: int, alpha: Any, beta: Any, info: tuple) -> None:
         """Replace the terms ``m`` and ``partner`` by their angle-sum form."""
-        _, rest, same, A, B, k1 = info
+        _, rest, same, A, B, k1, g1, g2 = info
         if same:  # cos A cos B with sin A sin B (or the other way round)
             cc, ss = (alpha, beta) if k1 == "c" else (beta, alpha)
             # cc cA cB + ss sA sB: cos(A - B) when ss == cc, cos(A + B) when ss == -cc
@@ -234,7 +235,17 @@ class _Writer:
         if kind == "s":
             coeff = coeff * sgn
         g = self._register(canon, kind)
-        _add_term(D, rest + (1 << 16 * g), coeff)
+        new = rest + (1 << 16 * g)
+        if new not in self._trig_once:  # its factors of exponent 1 from m's, without unpacking
+            once = [x for x in self._trig1(m) if x != g1 and x != g2]
+            k = (rest >> 16 * g) & _MASK
+            if k == 0:
+                once.append(g)
+                once.sort()
+            elif k == 1:
+                once.remove(g)
+            self._trig_once[new] = tuple(once)
+        _add_term(D, new, coeff)
 
     def _pythagoras(self, D: dict) -> bool:
         """``sin(A)**2 -> 1 - cos(A)**2`` (or the reverse) for an angle where that gives fewer terms."""
@@ -340,17 +351,23 @@ class _Writer:
         return self._monomial_expr(k) * self._build(sub)
 
     def _gen_cost(self, g: int) -> int:
-        if g not in self.trig:
-            return 0
-        angle = self.trig[g][0]
-        terms = [c for c in angle if c]
-        return 1 + (len(terms) - 1) + sum(1 for c in terms if abs(c) != 1)
+        """``count_ops`` of a generator: 0 for a symbol, of ``cos(sum k_i x_i)`` for an angle (remembered)."""
+        hit = self._gcost.get(g)
+        if hit is None:
+            if g not in self.trig:
+                hit = 0
+            else:
+                terms = [c for c in self.trig[g][0] if c]
+                hit = 1 + (len(terms) - 1) + sum(1 for c in terms if abs(c) != 1)
+            self._gcost[g] = hit
+        return hit
 
     def _factors_cost(self, m: tuple) -> int:
         """The cost of the factors of a monomial, ``sum (gen cost + (k > 1))`` (remembered)."""
         hit = self._mcost.get(m)
         if hit is None:
-            hit = self._mcost[m] = sum(self._gen_cost(g) + (1 if k > 1 else 0) for g, k in m)
+            gen_cost = self._gen_cost
+            hit = self._mcost[m] = sum(gen_cost(g) + (k > 1) for g, k in m)
         return hit
 
     def _monomial_cost(self, m: tuple) -> int:
@@ -492,7 +509,7 @@ def _pull(D: dict) -> tuple[Any, tuple, dict]:
     lcm = 1
     for d in dens:
         lcm = lcm * int(d) // gcd(lcm, int(d))
-    content = QQ(g, lcm)
+    content = QQ.dtype(g, lcm)  # the rational g / lcm (QQ(g, lcm) takes a slower path)
     if all(c < 0 for c in D.values()):  # -(a + b) rather than (-a - b): one operation fewer
         content = -content
     common = dict(next(iter(D)))  # the least exponent of each generator in every term
