@@ -83,3 +83,31 @@ def test_a_number_pose_and_bad_what():
     assert fk.evaluate([pi / 2, 0]) == _spatial(2).forward([pi / 2, 0]).matrix
     with pytest.raises(ValueError, match="what"):
         _spatial(2).kinematics_program("body")
+
+
+def test_a_15_degree_robot_file_agrees_with_modern_robotics():
+    # joint origins turned by multiples of 15 degrees: the constants live in Q(sqrt 2, sqrt 3)
+    pytest.importorskip("defusedxml")
+    mr = pytest.importorskip("modern_robotics")
+    import math
+    import warnings
+
+    parts = ['<robot name="r15">', '<link name="l0"/>']
+    rpys = [(1, 2, 5), (6, -2, 4), (-2, -2, 1)]
+    for i, (a, b, c) in enumerate(rpys, start=1):
+        rpy = " ".join(repr(k * math.pi / 12) for k in (a, b, c))
+        parts.append(f'<link name="l{i}"/><joint name="j{i}" type="revolute"><parent link="l{i - 1}"/>'
+                     f'<child link="l{i}"/><origin xyz="0.1 0 0.25" rpy="{rpy}"/><axis xyz="0 0 1"/>'
+                     '<limit lower="-3" upper="3" effort="1" velocity="1"/></joint>')
+    parts.append("</robot>")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        chain = Chain.from_urdf("\n".join(parts), angles="pi/12")
+    fk, jac = chain.kinematics_program(), chain.kinematics_program("jacobian")
+    Slist = np.array([[float(x) for x in tw.matrix] for tw in chain.twists]).T
+    M = np.array(chain.home.matrix.evalf(), dtype=float)
+    qv = [0.3, -1.2, 2.0]
+    assert np.allclose(np.array(fk.evaluate(qv).evalf(), dtype=float), mr.FKinSpace(M, Slist, qv), atol=1e-12)
+    assert np.allclose(np.array(jac.evaluate(qv).evalf(), dtype=float), mr.JacobianSpace(Slist, qv), atol=1e-12)
+    assert not np.allclose(np.array(jac.evaluate(qv).evalf(), dtype=float), mr.JacobianSpace(Slist, [0.301, -1.2, 2.0]),
+                           atol=1e-12)
