@@ -60,7 +60,6 @@ formula", 1984.  Lynch & Park, *Modern Robotics*, 2017, Sections 4.1, 5.1.
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from collections.abc import Sequence
 from math import gcd
 from typing import Any, cast
@@ -536,24 +535,28 @@ def fast_body_jacobian(body_twists: Sequence[Any], home: Any, q: tuple) -> Immut
 #: the engines of the last few chains and joint values: ``forward`` and ``jacobian`` at the same
 #: ``q`` share one ring product (an engine's results depend only on its key; each call writes
 #: its own expressions with a new writer, so a result does not depend on the calls before it)
-_RECENT: OrderedDict = OrderedDict()
+_RECENT: dict = {}
 _RECENT_SIZE = 4
+_UNSEEN = object()
 
 
 def _engine(twists: Sequence[Any], home: Any, q: tuple, sign: int = 1) -> _Engine | None:
     if not all(isinstance(x, Symbol) for x in q) or len(set(q)) != len(q):
         return None
     key = (tuple(twists), home, q, sign)
-    if key in _RECENT:
-        _RECENT.move_to_end(key)
-        return cast(Any, _RECENT[key])
+    hit = _RECENT.get(key, _UNSEEN)
+    if hit is not _UNSEEN:
+        return cast(Any, hit)
     try:
         engine = _Engine(list(twists), home, q, sign)
     except _NotPolynomial:
         engine = None
     _RECENT[key] = engine
-    if len(_RECENT) > _RECENT_SIZE:
-        _RECENT.popitem(last=False)
+    while len(_RECENT) > _RECENT_SIZE:  # the oldest first (a plain dict keeps insertion order)
+        try:
+            del _RECENT[next(iter(_RECENT))]
+        except (KeyError, RuntimeError, StopIteration):  # another thread took it first
+            break
     return engine
 
 

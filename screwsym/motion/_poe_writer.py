@@ -64,6 +64,7 @@ class _Writer:
         self._mcost: dict = {}  # monomial -> the cost of its factors
         self._gcost: dict = {}  # generator -> its cost
         self._monos: dict = {}  # monomial -> its expression
+        self._plain_monos: dict = {}  # monomial -> whether it is built without Mul.flatten
         self._factors: dict = {}  # (generator, exponent) -> its power
         self._ranked: list = []  # the factors met, in Basic.compare's order
         self._ranks: dict = {}
@@ -409,7 +410,8 @@ class _Writer:
         gives.  Any other generator (a root, a frozen function) takes ``Mul``."""
         hit = self._monos.get(m)
         if hit is None:
-            if all(self._plain(g) for g, _ in m):
+            plain = self._plain_monos[m] = all(self._plain(g) for g, _ in m)
+            if plain:
                 factors = [self._factor(g, k) for g, k in m]
                 for f in factors:
                     if f not in self._ranks:
@@ -443,7 +445,7 @@ class _Writer:
         mono = self._monomial_expr(m)
         if c == 1:
             return mono
-        if m and all(self._plain(g) for g, _ in m):  # as in _monomial_expr: the coefficient first
+        if m and self._plain_monos[m]:  # as in _monomial_expr: the coefficient first
             return Mul._from_args((QQ.to_sympy(c), *(mono.args if mono.is_Mul else (mono,))))
         return QQ.to_sympy(c) * mono
 
