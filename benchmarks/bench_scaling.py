@@ -36,7 +36,9 @@ results are SymPy's ``count_ops`` (the peers' results converted to SymPy to coun
    SymForce (the composite rigid body method for the mass matrix, ray-order twists and
    inertias as screwsym's).  The last column of each engine is the growth factor per added
    joint; then the 6-link chain at a pose of 15-degree multiples (``--pose`` alone).  Run it
-   with ``PYTHONPATH`` pointing to another checkout to measure that one.
+   with ``PYTHONPATH`` pointing to another checkout to measure that one.  ``--kinematics``:
+   the FK + J tables alone, with a column for ``Chain.kinematics_program`` (FK and J as
+   straight-line programs, whose size grows linearly with the joints).
 
 Nothing here is asserted; the figures go to ``benchmarks/README.md`` and
 ``notebooks/benchmarks.md``.
@@ -373,12 +375,19 @@ def cpu_timed(fn: Callable, limit: float) -> tuple[float | None, Any]:
     return time.process_time() - t0, out
 
 
-def growth_rows(limit: float) -> None:
-    """Per added joint: screwsym and the plain products of each engine (module docstring, item 5)."""
+def growth_rows(limit: float, kinematics_only: bool = False) -> None:
+    """Per added joint: screwsym and the plain products of each engine (module docstring, item 5).
+
+    ``kinematics_only``: the FK + J tables alone, with a column for ``Chain.kinematics_program``
+    (FK and J as straight-line programs: CPU s to build both, and their operations, the
+    multiplications + additions + functions of ``Program.operations``)."""
     peers = engines()
 
-    def table(title: str, ks: range, build: Callable, ours: Callable, theirs: Callable | None) -> None:
+    def table(title: str, ks: range, build: Callable, ours: Callable, theirs: Callable | None,
+              program: Callable | None = None) -> None:
         labels = ["screwsym"] + ([name for name in peers] if theirs else [])
+        if program is not None:
+            labels.append("screwsym program")
         print(f"\n{title}: CPU s (count_ops of the result) [growth per added joint]\n")
         print("| joints | " + " | ".join(labels) + " |")
         print("|---|" + "---|" * len(labels))
@@ -393,6 +402,8 @@ def growth_rows(limit: float) -> None:
             for label in labels:
                 if label == "screwsym":
                     t, out = cpu_timed(lambda chain=chain, q=q: ours(chain, q), limit)
+                elif label == "screwsym program":
+                    t, out = cpu_timed(lambda chain=chain: program(chain), limit)  # type: ignore[misc]
                 else:
                     engine = peers[label]
                     if engine is None:
@@ -406,7 +417,7 @@ def growth_rows(limit: float) -> None:
                     cells.append(f"> {limit:g} (stopped)")
                     last[label] = None
                     continue
-                size = ops(out) if out is not None else 0
+                size = (ops(out) if not isinstance(out, int) else out) if out is not None else 0
                 grow = f" [{t / last[label]:.1f}x]" if last.get(label) else ""
                 cells.append(f"{t:.3f} ({size:,}){grow}")
                 last[label] = t
@@ -419,13 +430,28 @@ def growth_rows(limit: float) -> None:
         T, cols = plain_products(chain.twists, chain.home, q, sin, cos, num)
         return T + cols
 
+    def fk_j_program(chain):
+        total = 0
+        for what in ("forward", "jacobian"):
+            o = chain.kinematics_program(what).operations()
+            total += o.multiplications + o.additions + o.functions
+        return total
+
     def mass(chain, q):
         return list(chain.mass_matrix(q))
 
     def mass_plain(chain, q, sin, cos, num):
         return plain_crba(chain.twists, chain.inertias, q, sin, cos, num)
 
-    table("FK + J (space), spatial k-joint chain", range(3, 10), spatial_chain, fk_j, fk_j_plain)
+    program = fk_j_program if hasattr(Chain, "kinematics_program") else None  # not on older trees
+    table("FK + J (space), spatial k-joint chain", range(3, 10), spatial_chain, fk_j, fk_j_plain, program)
+    if kinematics_only:
+        if importlib.util.find_spec("defusedxml"):
+            def read15(k):
+                return Chain.from_urdf(urdf_15(k), angles="pi/12")
+
+            table("FK + J (space), URDF at 15-degree multiples", range(3, 7), read15, fk_j, fk_j_plain, program)
+        return
     table("mass matrix, spatial k-link chain", range(2, 8), spatial_chain, mass, mass_plain)
     if importlib.util.find_spec("defusedxml"):
         def read(k):
@@ -468,11 +494,19 @@ def main(argv=None) -> None:
     parser.add_argument("--quick", action="store_true", help="the chains and verify only")
     parser.add_argument("--growth", action="store_true", help="only the growth per added joint (item 5)")
     parser.add_argument("--pose", action="store_true", help="only the 6-link chain at a 15-degree pose")
+    parser.add_argument("--kinematics", action="store_true",
+                        help="only the FK + J tables of --growth, with the straight-line program column")
     parser.add_argument("--limit", type=float, default=20.0, help="CPU seconds per row of --growth")
     args = parser.parse_args(argv)
     parser_pose = args.pose
     if parser_pose:
         pose_rows(args.limit)
+        return
+    if args.kinematics:
+        import warnings
+
+        warnings.simplefilter("ignore")  # the URDF reader's notes on the angles it recognised
+        growth_rows(args.limit, kinematics_only=True)
         return
     if args.growth:
         growth_rows(args.limit)

@@ -61,7 +61,7 @@ formula", 1984.  Lynch & Park, *Modern Robotics*, 2017, Sections 4.1, 5.1.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from itertools import combinations
+from math import gcd
 from typing import Any, cast
 
 from sympy import (
@@ -74,24 +74,20 @@ from sympy import (
     S,
     Symbol,
     cos,
-    count_ops,
     expand,
     expand_trig,
     sin,
 )
 from sympy.core.sorting import default_sort_key
-from sympy.polys.domains import QQ
+from sympy.polys.domains import QQ, ZZ
 from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
 from sympy.polys.rings import ring
 
 from ..algebra.circle import reduce_powers
 from ..algebra.numberfield import reduce_surds, surd_split
+from ._poe_writer import _canonical, _Writer
 
 __all__: list[str] = []
-
-#: forms whose estimated cost is within this of the least are measured with ``count_ops``
-MARGIN = 2
-
 
 class _NotPolynomial(Exception):
     """The chain is outside the class this module handles: take the general path."""
@@ -182,6 +178,7 @@ class _Engine:
             self.cos_gen[a], self.sin_gen[a] = c, s_
             gens += [c, s_]
         self.R, *self.gens = ring(gens, QQ)
+        self.RZ = self.R.clone(domain=ZZ)  # the same generators over the integers (_sum_products)
         self.gen_of = dict(zip(gens, self.gens, strict=True))
         self.symbols = gens
         # the circle relations c^2 + s^2 = 1, as generator indices (cos, sin)
@@ -190,6 +187,7 @@ class _Engine:
         self.surds = [(gens.index(d), int(f.base)) for f, d in self.frozen.items()
                       if f.is_Pow and f.exp == S.Half and f.base.is_Integer and f.base.is_prime]
         self.level: dict[int, int] = {}  # generator -> its level in the written form (by _walk)
+        self._prefixes: list | None = None
         try:
             self.twists = [(self._vec(w), self._vec(v)) for w, v in twist_parts]
             self.home = self._mat(home_parts[0]), self._vec(home_parts[1])
@@ -222,16 +220,51 @@ class _Engine:
         return [[self._el(m[i, j]) for j in range(3)] for i in range(3)]
 
     # --- 3-vector and 3x3 matrix arithmetic on ring elements (reduced on the geometry's circles)
+    # The products below run over the integers: each factor times the least common multiple of
+    # its coefficients' denominators, the products and their sum in Z[x] (Python integers, no
+    # gcd per coefficient), then one division per term of the sum.  Over Q, SymPy's product
+    # normalises a fraction for every pair of terms; the result is the same polynomial.
+    def _integral(self, a: Any) -> tuple[int, Any]:
+        """``(d, d a)`` with ``d a`` in ``Z[x]`` (``d`` the lcm of the denominators)."""
+        d = 1
+        for c in a.values():
+            den = c.denominator
+            if den != 1:
+                d = d * den // gcd(d, den)
+        return d, self.RZ.dtype({m: c.numerator * (d // c.denominator) for m, c in a.items()})
+
+    def _sum_products(self, pairs: list) -> Any:
+        """``sum a b`` over the pairs of integral forms ``((d_a, A), (d_b, B))``, reduced."""
+        parts = [(da * db, A * B) for (da, A), (db, B) in pairs if A and B]
+        if not parts:
+            return self.R.zero
+        L = 1
+        for d, _ in parts:
+            L = L * d // gcd(L, d)
+        total = parts[0][1] * (L // parts[0][0])
+        for d, P in parts[1:]:
+            total += P * (L // d)
+        QQ_ = QQ
+        return self._reduce(self.R.dtype({m: QQ_(c, L) for m, c in total.items()}))
+
     def _mv(self, M: list, v: list) -> list:
-        return [self._reduce(M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2]) for i in range(3)]
+        Mi = [[self._integral(x) for x in row] for row in M]
+        vi = [self._integral(x) for x in v]
+        return [self._sum_products(list(zip(Mi[i], vi, strict=True))) for i in range(3)]
 
     def _mm(self, A: list, B: list) -> list:
-        return [[self._reduce(A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j]) for j in range(3)]
+        Ai = [[self._integral(x) for x in row] for row in A]
+        Bi = [[self._integral(x) for x in row] for row in B]
+        return [[self._sum_products([(Ai[i][k], Bi[k][j]) for k in range(3)]) for j in range(3)]
                 for i in range(3)]
 
     def _cross(self, a: list, b: list) -> list:
-        return [self._reduce(x) for x in
-                (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])]
+        ai = [self._integral(x) for x in a]
+        bi = [self._integral(x) for x in b]
+        neg = [(d, -P) for d, P in bi]
+        return [self._sum_products([(ai[1], bi[2]), (ai[2], neg[1])]),
+                self._sum_products([(ai[2], bi[0]), (ai[0], neg[2])]),
+                self._sum_products([(ai[0], bi[1]), (ai[1], neg[0])])]
 
     def _rot(self, w: list, angle: tuple | None, sgn: int) -> list:
         """``R = I + sin K + (1 - cos) K^2`` about the unit ``w`` by the angle (``sgn`` its sign)."""
@@ -245,7 +278,12 @@ class _Engine:
                 for i in range(3)]
 
     def prefixes(self) -> list[tuple[list, list]]:
-        """``T_0 = I, T_1, ..., T_n``: the products of the first ``k`` exponentials."""
+        """``T_0 = I, T_1, ..., T_n``: the products of the first ``k`` exponentials (computed once)."""
+        if self._prefixes is None:
+            self._prefixes = self._products()
+        return self._prefixes
+
+    def _products(self) -> list[tuple[list, list]]:
         one, zero = self.R.one, self.R.zero
         eye = [[one, zero, zero], [zero, one, zero], [zero, zero, one]]
         out = [(eye, [zero, zero, zero])]
@@ -461,374 +499,6 @@ def _frozen(e: Expr, parts: dict) -> Expr:
     return parts[e]
 
 
-def _canonical(angle: tuple | None) -> tuple[Any, int]:
-    """The angle with its first nonzero coefficient positive, and the sign taken out."""
-    if angle is None:
-        return None, 1
-    for c in angle:
-        if c:
-            return (angle, 1) if c > 0 else (tuple(-x for x in angle), -1)
-    return angle, 1
-
-
-class _Writer:
-    """Ring elements back to compact SymPy expressions (the gathering and the nesting)."""
-
-    def __init__(self, engine: _Engine) -> None:
-        self.engine = engine
-        self.q = tuple(engine.q) + tuple(engine.bases)  # the angles' coordinates: joints, then geometry
-        self.n = engine.n
-        # generator id -> SymPy expression; trig generators also -> (angle, "c" or "s")
-        self.expr_of: list[Expr] = []
-        self.trig: dict[int, tuple[tuple, str]] = {}
-        self.gen_id: dict[tuple[tuple, str], int] = {}
-        self.last: list[int] = []  # per generator: the last joint it involves (-1: none)
-        for sym in engine.symbols:
-            self.expr_of.append(engine.thaw.get(sym, sym))
-            self.last.append(-1)
-        for i, qi in enumerate(engine.q):
-            if engine.kinds[i] == "P":
-                self.last[engine.symbols.index(qi)] = self._order(i)
-        for a, c in engine.cos_gen.items():
-            self._register(a, "c", engine.symbols.index(c))
-            self._register(a, "s", engine.symbols.index(engine.sin_gen[a]))
-        m = len(engine.bases)
-        for b, base in enumerate(engine.bases):  # the geometry's sines and cosines: angles too
-            unit = tuple(1 if k == self.n + b else 0 for k in range(self.n + m))
-            c, s_ = engine.circle[base]
-            self._register(unit, "c", engine.symbols.index(c))
-            self._register(unit, "s", engine.symbols.index(s_))
-        for g, level in engine.level.items():
-            self.last[g] = level
-        self.cache: dict = {}
-
-    def _order(self, joint: int) -> int:
-        """The nesting level of an angle's coordinate: the joint, or -1 for the geometry's."""
-        return joint if joint < self.n else -1
-
-    def _register(self, angle: tuple, kind: str, gid: int | None = None) -> int:
-        key = (angle, kind)
-        if key in self.gen_id:
-            return self.gen_id[key]
-        arg = Add(*(c * qi for c, qi in zip(angle, self.q, strict=True) if c))
-        e = cos(arg) if kind == "c" else sin(arg)
-        if gid is None:
-            gid = len(self.expr_of)
-            self.expr_of.append(e)
-            self.last.append(-1)
-        else:
-            self.expr_of[gid] = e
-        self.last[gid] = max(self._order(i) for i, c in enumerate(angle) if c)
-        self.trig[gid] = (angle, kind)
-        self.gen_id[key] = gid
-        return gid
-
-    # --- the polynomial as a dict {monomial: coefficient}, a monomial a sorted tuple of (gen, exp)
-    def to_dict(self, P: Any) -> dict:
-        out = {}
-        for monom, coeff in P.terms():
-            out[tuple((g, k) for g, k in enumerate(monom) if k)] = coeff
-        return out
-
-    def expr(self, P: Any) -> Expr:
-        D = self.to_dict(P)
-        D = self.gather(D)
-        return self.write(D)
-
-    # --- step 2: the angle-sum formulas and the Pythagorean identity
-    def gather(self, D: dict) -> dict:
-        """The angle-sum formulas applied until none applies, then the Pythagorean identity.
-
-        A pass looks only at the terms that are new or whose coefficient changed in the pass
-        before (the formulas pair two terms, and each pair is found from either of them), so
-        a long polynomial is not scanned again for each gathering."""
-        changed = True
-        todo = list(D)
-        while changed:
-            changed = False
-            before = dict(D)
-            for m in todo:
-                if m not in D:
-                    continue
-                trig = [g for g, k in m if k == 1 and g in self.trig]
-                for g1, g2 in combinations(trig, 2):
-                    if self._gather_pair(D, m, g1, g2):
-                        changed = True
-                        break
-            todo = [m for m, c in D.items() if before.get(m) != c]
-            if not changed:
-                changed = self._pythagoras(D)
-                todo = list(D)
-        return D
-
-    def _gather_pair(self, D: dict, m: tuple, g1: int, g2: int) -> bool:
-        (A, k1), (B, k2) = self.trig[g1], self.trig[g2]
-        if A == B:
-            return False
-        if k1 == k2:
-            other = "s" if k1 == "c" else "c"
-            h1, h2 = self.gen_id.get((A, other)), self.gen_id.get((B, other))
-        else:
-            h1, h2 = (self.gen_id.get((A, "c")), self.gen_id.get((B, "s"))) if k1 == "s" else \
-                (self.gen_id.get((A, "s")), self.gen_id.get((B, "c")))
-        if h1 is None or h2 is None:  # the partner term cannot occur
-            return False
-        rest = dict(m)
-        del rest[g1], rest[g2]
-        alpha = D[m]
-        if k1 == k2:  # cos A cos B with sin A sin B (or the other way round)
-            partner = _monomial(rest, h1, h2)
-            beta = D.get(partner)
-            if beta is None or (beta != alpha and beta != -alpha):
-                return False
-            cc, ss = (alpha, beta) if k1 == "c" else (beta, alpha)
-            # cc cA cB + ss sA sB: cos(A - B) when ss == cc, cos(A + B) when ss == -cc
-            angle = _add(A, B, -1 if ss == cc else 1)
-            new = [(angle, "c", cc)]
-        else:  # sin A cos B with cos A sin B
-            if k1 == "c":
-                A, B, g1, g2 = B, A, g2, g1
-                h1, h2 = h2, h1
-            partner = _monomial(rest, h1, h2)
-            beta = D.get(partner)
-            if beta is None or (beta != alpha and beta != -alpha):
-                return False
-            # alpha sA cB + beta cA sB: sin(A + B) when beta == alpha, sin(A - B) when -alpha
-            angle = _add(A, B, 1 if beta == alpha else -1)
-            new = [(angle, "s", alpha)]
-        del D[m], D[partner]
-        for angle, kind, coeff in new:
-            canon, sgn = _canonical(angle)
-            if not any(canon):  # cos(0) = 1, sin(0) = 0
-                if kind == "c":
-                    _add_term(D, tuple(sorted(rest.items())), coeff)
-                continue
-            if kind == "s":
-                coeff = coeff * sgn
-            g = self._register(canon, kind)
-            _add_term(D, _monomial(rest, g), coeff)
-        return True
-
-    def _pythagoras(self, D: dict) -> bool:
-        """``sin(A)**2 -> 1 - cos(A)**2`` (or the reverse) for an angle where that gives fewer terms."""
-        squares = {g for m in D for g, k in m if k >= 2 and g in self.trig}
-        for g in sorted(squares):
-            angle, kind = self.trig[g]
-            h = self._register(angle, "s" if kind == "c" else "c")
-            if not any(x == h and k >= 2 for m in D for x, k in m):
-                continue
-            new = _substitute_square(D, g, h)
-            if len(new) < len(D):
-                D.clear()
-                D.update(new)
-                return True
-        return False
-
-    # --- step 3: nested by the joints, last joint outermost, or flat where smaller
-    def write(self, D: dict) -> Expr:
-        """``D`` as an expression: the plans of the estimate, the best measured by ``count_ops``."""
-        self._plan_uncached(D)
-        low = min(cost for cost, _ in self.options)
-        # the estimate can be off by a sign or two: measure the close ones
-        close = [plan for cost, plan in self.options if cost <= low + MARGIN]
-        forms = [self._build(plan) for plan in close]
-        if len(forms) == 1:
-            return forms[0]
-        costs = [count_ops(x) for x in forms]
-        return forms[costs.index(min(costs))]
-
-    def _plan(self, D: dict) -> tuple[int, Any]:
-        """The cheapest way to write ``D`` (its cost in ``count_ops``' units, and the plan)."""
-        key = tuple(sorted(D.items()))
-        hit = self.cache.get(key)
-        if hit is not None:
-            return hit
-        out = self._plan_uncached(D)
-        self.cache[key] = out
-        return out
-
-    def _plan_uncached(self, D: dict) -> tuple[int, Any]:
-        flat: tuple[int, Any] = (self._sum_cost(D), ("flat", D))
-        self.options: list[tuple[int, Any]] = [flat]
-        if not D:
-            return flat
-        if len(D) == 1:
-            return flat
-        best = flat
-        options: list[tuple[int, Any]] = [flat]
-        content, common, rest = _pull(D)
-        outer = self._coeff_cost(content) + self._monomial_cost(common)
-        n_outer = (content != 1) + len(common)
-        if n_outer:
-            pulled = outer + n_outer + self._sum_cost(rest)
-            option: tuple[int, Any] = (pulled, ("pulled", content, common, ("flat", rest)))
-            options.append(option)
-            if pulled < best[0]:
-                best = option
-        # split by the last joint met in the terms
-        last = max((self.last[g] for m in rest for g, _ in m), default=-1)
-        if last >= 0:
-            parts: dict = {}
-            for m, c in rest.items():
-                inner = tuple((g, k) for g, k in m if self.last[g] == last)
-                others = tuple((g, k) for g, k in m if self.last[g] != last)
-                parts.setdefault(inner, {})[others] = c
-            if len(parts) > 1 or () not in parts:
-                cost = len(parts) - 1
-                plans = []
-                for k, v in parts.items():
-                    sub_cost, sub = self._plan(v)
-                    sub = cast(Any, sub)
-                    if sub[0] == "flat" and len(sub[1]) > 1 and all(c < 0 for c in sub[1].values()):
-                        # -(a + b) k: the sign joins the outer sum as a subtraction
-                        sub = ("pulled", -QQ.one, (), ("flat", {m: -c for m, c in sub[1].items()}))
-                    negative = sub[0] == "pulled" and sub[1] < 0 or sub[0] == "flat" and len(sub[1]) == 1 \
-                        and next(iter(sub[1].values())) < 0
-                    cost += sub_cost + self._monomial_cost(k) + (1 if k and not _is_unit(sub) else 0) \
-                        - (1 if negative and len(parts) > 1 else 0)
-                    plans.append((k, sub))
-                cost += outer + n_outer
-                option = (cost, ("pulled", content, common, ("split", plans)))
-                options.append(option)
-                if cost < best[0]:
-                    best = option
-        self.options = options
-        return best
-
-    def _build(self, plan: tuple) -> Expr:
-        kind = plan[0]
-        if kind == "flat":
-            return Add(*(self._term(m, c) for m, c in plan[1].items()))
-        if kind == "pulled":
-            _, content, common, inner = plan
-            return Mul(QQ.to_sympy(content), self._monomial_expr(common), self._build(inner))
-        return Add(*(self._product(k, sub) for k, sub in plan[1]))
-
-    def _product(self, k: tuple, sub: tuple) -> Expr:
-        """``k * sub`` as one product (``-(a + b)*k`` stays so, where ``-1*(a + b)`` would distribute)."""
-        if sub[0] == "pulled":
-            _, content, common, inner = sub
-            return Mul(QQ.to_sympy(content), self._monomial_expr(common), self._monomial_expr(k),
-                       self._build(inner))
-        return self._monomial_expr(k) * self._build(sub)
-
-    def _gen_cost(self, g: int) -> int:
-        if g not in self.trig:
-            return 0
-        angle = self.trig[g][0]
-        terms = [c for c in angle if c]
-        return 1 + (len(terms) - 1) + sum(1 for c in terms if abs(c) != 1)
-
-    def _monomial_cost(self, m: tuple) -> int:
-        if not m:
-            return 0
-        return len(m) - 1 + sum(self._gen_cost(g) + (1 if k > 1 else 0) for g, k in m)
-
-    @staticmethod
-    def _coeff_cost(c: Any) -> int:
-        cost = 0
-        if c.denominator != 1:
-            cost += 1
-        if abs(c.numerator) != 1:
-            cost += 1
-        if c < 0:
-            cost += 1
-        return cost
-
-    def _sum_cost(self, D: dict) -> int:
-        cost = max(len(D) - 1, 0)
-        for m, c in D.items():
-            factors = len(m) + (1 if abs(c.numerator) != 1 else 0)
-            cost += max(factors - 1, 0) + (1 if c.denominator != 1 else 0)
-            cost += sum(self._gen_cost(g) + (1 if k > 1 else 0) for g, k in m)
-            if c < 0 and len(D) == 1:
-                cost += 1
-        return cost
-
-    def _monomial_expr(self, m: tuple) -> Expr:
-        return Mul(*(self.expr_of[g] ** k for g, k in m))
-
-    def _term(self, m: tuple, c: Any) -> Expr:
-        return QQ.to_sympy(c) * self._monomial_expr(m)
-
-
-def _is_unit(plan: tuple) -> bool:
-    """Whether the plan writes the constant 1 (so that ``k * 1`` costs no product)."""
-    return plan[0] == "flat" and len(plan[1]) == 1 and plan[1].get(()) == 1
-
-
-def _add(A: tuple, B: tuple, sgn: int) -> tuple:
-    return tuple(a + sgn * b for a, b in zip(A, B, strict=True))
-
-
-def _monomial(rest: dict, *gens: int) -> tuple:
-    m = dict(rest)
-    for g in gens:
-        m[g] = m.get(g, 0) + 1
-    return tuple(sorted(m.items()))
-
-
-def _add_term(D: dict, m: tuple, c: Any) -> None:
-    total = D.get(m, QQ.zero) + c
-    if total:
-        D[m] = total
-    else:
-        D.pop(m, None)
-
-
-def _substitute_square(D: dict, g: int, h: int) -> dict:
-    """``D`` with ``x_g**2 -> 1 - x_h**2`` applied until ``x_g``'s exponent is below 2."""
-    out: dict = {}
-    work = list(D.items())
-    while work:
-        m, c = work.pop()
-        md = dict(m)
-        k = md.get(g, 0)
-        if k < 2:
-            _add_term(out, m, c)
-            continue
-        md[g] = k - 2
-        if not md[g]:
-            del md[g]
-        work.append((tuple(sorted(md.items())), c))
-        md2 = dict(md)
-        md2[h] = md2.get(h, 0) + 2
-        work.append((tuple(sorted(md2.items())), -c))
-    return out
-
-
-def _pull(D: dict) -> tuple[Any, tuple, dict]:
-    """The content (negative when every term is), the common monomial and the rest of ``D``."""
-    from math import gcd
-
-    nums = [c.numerator for c in D.values()]
-    dens = [c.denominator for c in D.values()]
-    g = 0
-    for x in nums:
-        g = gcd(g, int(x))
-    lcm = 1
-    for d in dens:
-        lcm = lcm * int(d) // gcd(lcm, int(d))
-    content = QQ(g, lcm)
-    if all(c < 0 for c in D.values()):  # -(a + b) rather than (-a - b): one operation fewer
-        content = -content
-    common: dict = {}
-    monoms = list(D)
-    for gid, _k in monoms[0]:
-        low = min(dict(m).get(gid, 0) for m in monoms)
-        if low:
-            common[gid] = low
-    rest = {}
-    for m, c in D.items():
-        md = dict(m)
-        for gid, k in common.items():
-            md[gid] -= k
-            if not md[gid]:
-                del md[gid]
-        rest[tuple(sorted(md.items()))] = c / content
-    return content, tuple(sorted(common.items())), rest
-
-
 def fast_forward(twists: Sequence[Any], home: Any, q: tuple) -> tuple[ImmutableMatrix, ImmutableMatrix] | None:
     """``(R, p)`` of the forward kinematics by the ring, or None when the chain is outside its class."""
     engine = _engine(twists, home, q)
@@ -862,12 +532,31 @@ def fast_body_jacobian(body_twists: Sequence[Any], home: Any, q: tuple) -> Immut
     return ImmutableMatrix(engine.n, 6, entries).T
 
 
+#: the engines of the last few chains and joint values: ``forward`` and ``jacobian`` at the same
+#: ``q`` share one ring product (an engine's results depend only on its key; each call writes
+#: its own expressions with a new writer, so a result does not depend on the calls before it)
+_RECENT: dict = {}
+_RECENT_SIZE = 4
+_UNSEEN = object()
+
+
 def _engine(twists: Sequence[Any], home: Any, q: tuple, sign: int = 1) -> _Engine | None:
     if not all(isinstance(x, Symbol) for x in q) or len(set(q)) != len(q):
         return None
+    key = (tuple(twists), home, q, sign)
+    hit = _RECENT.get(key, _UNSEEN)
+    if hit is not _UNSEEN:
+        return cast(Any, hit)
     try:
-        return _Engine(list(twists), home, q, sign)
+        engine = _Engine(list(twists), home, q, sign)
     except _NotPolynomial:
-        return None
+        engine = None
+    _RECENT[key] = engine
+    while len(_RECENT) > _RECENT_SIZE:  # the oldest first (a plain dict keeps insertion order)
+        try:
+            del _RECENT[next(iter(_RECENT))]
+        except (KeyError, RuntimeError, StopIteration):  # another thread took it first
+            break
+    return engine
 
 

@@ -418,6 +418,12 @@ class Chain(ScrewsymBasic):
                 k: v for k, v in options.items() if k != "parameters"})
         return _newton_euler.dynamics_program(self, what, gravity, **options)
 
+    def kinematics_program(self, what: str = "forward") -> _newton_euler.Program:
+        """``T(q)`` or the space Jacobian as a straight-line program, linear in the joints: :func:`screwsym.motion._kinematics_program.kinematics_program`."""
+        from ._kinematics_program import kinematics_program
+
+        return kinematics_program(self, what)
+
     def parameters(self, numbers: bool = False, extras: Sequence[str] = ()) -> ImmutableMatrix:
         """The 10n standard inertial parameters (symbols, or the chain's numbers): :func:`screwsym.motion.parameters.parameters`."""
         return _parameters.parameters(self, numbers, extras)

@@ -1,0 +1,159 @@
+r"""Forward kinematics and the space Jacobian as straight-line programs (cost linear in the joints).
+
+Explanation
+===========
+
+The closed forms of :meth:`Chain.forward` and :meth:`Chain.jacobian` grow with the joints
+faster than linearly whatever the form: an entry of ``R_1(q_1) ... R_n(q_n)`` for spatial
+axes is a sum over the products of one of ``cos q_k, sin q_k`` (or 1) per joint, up to
+``2^(n-1)`` and more terms expanded (about 1.7x to 3x per added joint in ``count_ops`` in
+``benchmarks/bench_scaling.py --growth``; more at 15-degree geometry, where each coefficient
+is a sum over ``Q(sqrt 2, sqrt 3)``), and a nested or gathered form only shortens this by a
+factor.  The same product as a *program* -- one assignment per entry of each partial
+product, ``T_k = T_(k-1) exp6($_k, q_k)``, with the exponential's entries in the symbols
+``c_k = cos q_k, s_k = sin q_k`` -- costs a constant number of operations per joint.
+
+Exactness: every assignment is the SymPy expression of one entry of the partial product
+(SymPy's arithmetic drops products by a literal 0 or 1); substituting the assignments back
+(:meth:`Program.expressions`) gives the untidied product of exponentials.  The tests compare
+it with :meth:`Chain.forward` and :meth:`Chain.jacobian` symbolically and with modern_robotics
+numerically.
+
+References
+==========
+
+Lynch & Park, *Modern Robotics*, 2017, Sections 4.1 and 5.1 (the product of exponentials and
+the space Jacobian ``J_i = Ad(T_(i-1)) $_i``).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from sympy import Expr, ImmutableMatrix, Symbol, cos, sin, sympify
+
+from ..core.checks import check_choice
+from ..core.tidy import tidy
+from .displacement import exp6
+from .newton_euler import Program
+
+if TYPE_CHECKING:
+    from .chain import Chain
+
+__all__ = ["kinematics_program"]
+
+WHAT = ("forward", "jacobian")
+
+
+class _Assign:
+    """Appends assignments; an atom (a symbol, a number) or a negated symbol is used as it is."""
+
+    def __init__(self, taken: set[str]) -> None:
+        self.assigns: list[tuple[Symbol, Expr]] = []
+        self.seen: dict[Expr, Symbol] = {}
+        self.taken = set(taken)
+
+    def let(self, expr: Any, name: str) -> Expr:
+        e = sympify(expr, strict=True)
+        if not e.args or (e.is_Mul and len(e.args) == 2 and e.args[0] == -1 and not e.args[1].args):
+            return e
+        if e in self.seen:  # an entry equal to one before (r_yy = r_xx about z): its symbol
+            return self.seen[e]
+        if -e in self.seen:
+            return -self.seen[-e]
+        while name in self.taken:
+            name += "'"
+        self.taken.add(name)
+        t = Symbol(name, real=True)
+        self.assigns.append((t, e))
+        self.seen[e] = t
+        return t
+
+
+def _exponential(W: _Assign, twist: Any, qk: Symbol, k: int) -> tuple[list, list]:
+    """``exp6($_k, q_k)`` as ``(R, p)`` entries in ``c_k, s_k`` (assigned) and constants.
+
+    A prismatic joint: ``(I, v q)``.  A unit ``omega`` (revolute or helical, pitch ``h = omega . v``):
+    Rodrigues' ``R = I + s K + (1 - c) K^2`` with ``K^2 = omega omega^T - I``, and
+    ``p = (I - R)(omega x v) + h omega q = -(s K r + (1 - c) K^2 r) + h omega q`` for ``r = omega x v``
+    (Lynch & Park 2017, Proposition 3.25); the constants tidied once (numbers in their normal
+    form).  Any other twist: :func:`exp6` with ``cos q_k, sin q_k`` assigned."""
+    w, v = list(twist.omega), list(twist.v_O)
+    if all(x == 0 for x in w):
+        return [[int(i == j) for j in range(3)] for i in range(3)], [x * qk for x in v]
+    if tidy(w[0] ** 2 + w[1] ** 2 + w[2] ** 2) != 1:
+        E = exp6(twist, qk)
+        trig = {f(qk): W.let(f(qk), f"{name}{k}") for f, name in ((cos, "c"), (sin, "s")) if E.matrix.has(f(qk))}
+        return ([[E.R[i, j].xreplace(trig) for j in range(3)] for i in range(3)],
+                [E.p[i].xreplace(trig) for i in range(3)])
+    c, s = W.let(cos(qk), f"c{k}"), W.let(sin(qk), f"s{k}")
+    K = [[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]]
+    K2 = [[tidy(w[i] * w[j]) - int(i == j) for j in range(3)] for i in range(3)]
+    r = [tidy(w[1] * v[2] - w[2] * v[1]), tidy(w[2] * v[0] - w[0] * v[2]), tidy(w[0] * v[1] - w[1] * v[0])]
+    Kr = [tidy(sum(K[i][j] * r[j] for j in range(3))) for i in range(3)]
+    K2r = [tidy(sum(K2[i][j] * r[j] for j in range(3))) for i in range(3)]
+    h = tidy(w[0] * v[0] + w[1] * v[1] + w[2] * v[2])
+    R = [[int(i == j) + s * K[i][j] + (1 - c) * K2[i][j] for j in range(3)] for i in range(3)]
+    p = [-(s * Kr[i] + (1 - c) * K2r[i]) + h * w[i] * qk for i in range(3)]
+    return R, p
+
+
+def kinematics_program(chain: Chain, what: str = "forward") -> Program:
+    r"""``T(q)`` (``what="forward"``, the 4x4 matrix) or the space Jacobian (``"jacobian"``, 6 x n)
+    as a straight-line :class:`~screwsym.motion.newton_euler.Program` in ``q1 .. qn``.
+
+    One assignment per entry of each partial product ``T_k = T_(k-1) exp6($_k, q_k)`` that
+    is not a number or a symbol: the program's size grows linearly with the joints where the
+    closed forms grow geometrically (module docstring).  Any chain (helical joints too:
+    ``exp6`` is the general exponential).
+
+    >>> from screwsym import Chain, Transform, Twist
+    >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
+    ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])], Transform.translation([2, 0, 0]))
+    >>> p = arm.kinematics_program()
+    >>> print(p)
+    c1 = cos(q1)
+    s1 = sin(q1)
+    c2 = cos(q2)
+    s2 = sin(q2)
+    p2x = c1*(1 - c2) + s1*s2
+    p2y = -c1*s2 + s1*(1 - c2)
+    r2xx = c1*c2 - s1*s2
+    r2xy = -c1*s2 - c2*s1
+    px = p2x + 2*r2xx
+    py = p2y - 2*r2xy
+    T = [r2xx, r2xy, 0, px, -r2xy, r2xx, 0, py, 0, 0, 1, 0, 0, 0, 0, 1]
+    >>> p.operations()
+    Operations(multiplications=10, additions=8, functions=4)
+    >>> (p.expressions() - arm.forward(p.arguments[0]).matrix).applyfunc(lambda e: e.expand(trig=True)).is_zero_matrix
+    True
+    """
+    what = check_choice(what, "what", WHAT)
+    n = chain.n_joints
+    q = ImmutableMatrix([Symbol(f"q{i + 1}", real=True) for i in range(n)])
+    W = _Assign({str(x) for x in q} | {str(s) for t in chain.twists for s in t.matrix.free_symbols}
+                | {str(s) for s in chain.home.matrix.free_symbols})
+    axes = "xyz"
+    R: list[list[Any]] = [[int(i == j) for j in range(3)] for i in range(3)]
+    p: list[Any] = [0, 0, 0]
+    columns: list[list[Any]] = []
+    for k, (twist, qk) in enumerate(zip(chain.twists, q, strict=True), start=1):
+        if what == "jacobian":  # J_k = Ad(T_(k-1)) $_k = (R w; R v + p x R w)
+            w = [sum(R[i][j] * twist.omega[j] for j in range(3)) for i in range(3)]
+            Rv = [sum(R[i][j] * twist.v_O[j] for j in range(3)) for i in range(3)]
+            v = [Rv[0] + p[1] * w[2] - p[2] * w[1], Rv[1] + p[2] * w[0] - p[0] * w[2],
+                 Rv[2] + p[0] * w[1] - p[1] * w[0]]
+            columns.append([W.let(x, f"j{k}{name}") for x, name in
+                            zip(w + v, ("wx", "wy", "wz", "vx", "vy", "vz"), strict=True)])
+        ER, Ep = _exponential(W, twist, qk, k)
+        p = [W.let(p[i] + sum(R[i][j] * Ep[j] for j in range(3)), f"p{k}{axes[i]}") for i in range(3)]
+        R = [[W.let(sum(R[i][m] * ER[m][j] for m in range(3)), f"r{k}{axes[i]}{axes[j]}") for j in range(3)]
+             for i in range(3)]
+    if what == "jacobian":
+        out = ImmutableMatrix([[columns[c][r] for c in range(n)] for r in range(6)]) if n else ImmutableMatrix.zeros(6, 0)
+        return Program((q,), tuple(W.assigns), out, "J")
+    HR, Hp = chain.home.R, chain.home.p
+    TR = [[sum(R[i][m] * HR[m, j] for m in range(3)) for j in range(3)] for i in range(3)]
+    Tp = [W.let(p[i] + sum(R[i][m] * Hp[m] for m in range(3)), f"p{axes[i]}") for i in range(3)]
+    rows = [[*TR[i], Tp[i]] for i in range(3)] + [[0, 0, 0, 1]]
+    return Program((q,), tuple(W.assigns), ImmutableMatrix(rows), "T")
