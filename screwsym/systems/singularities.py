@@ -48,10 +48,9 @@ mechanisms", Proc. IEEE ICRA 2002, 496-502.
 from __future__ import annotations
 
 import random
-from typing import Any, NamedTuple
-
 from itertools import combinations
 from math import comb
+from typing import Any, NamedTuple
 
 from sympy import (
     And,
