@@ -65,9 +65,7 @@ from sympy import (
     cos,
     factor_list,
     false,
-    latex,
     sin,
-    sstr,
     true,
 )
 from sympy.logic.boolalg import simplify_logic
@@ -79,6 +77,7 @@ from ..algebra.real import proved_positive, real_factors, solvable
 from ..algebra.rings import to_expr, to_ring, vanishes
 from ..algebra.surface import groebner_ideal
 from ..core.decide import is_zero
+from ..core.printing import result_latex, result_str
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from ._rank_cases import analysis, case_budget, rank_on_surface, trig_normal_matrix
@@ -130,7 +129,7 @@ class Singularities(NamedTuple):
 
     def table(self) -> str:
         """The entries as a text table (kind, limb, condition, rank); "regular" when none."""
-        rows = [(k, i, sstr(c), str(r)) for k, i, c, r in self.rows()]
+        rows = [(k, i, result_str(c), str(r)) for k, i, c, r in self.rows()]
         if not rows:
             return "Singularities: none (regular)"
         head = ("kind", "limb", "condition", "rank")
@@ -150,7 +149,7 @@ class Singularities(NamedTuple):
         if not rows:
             return r"$\text{no singularity (regular)}$"
         body = r" \\ ".join(
-            rf"\text{{{k}}} & {i} & {latex(c)} & {latex(r)}"
+            rf"\text{{{k}}} & {i} & {result_latex(c)} & {result_latex(r)}"
             for k, i, c, r in rows)
         return (r"$\begin{array}{llll} \text{kind} & \text{limb} & \text{condition} & "
                 rf"\text{{rank}} \\ \hline {body} \end{{array}}$")

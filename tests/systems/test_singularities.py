@@ -328,3 +328,23 @@ def test_three_rpr_symbolic_pose_type_two_set_is_one_surface():
     assert rank == 5 and vanishes(f - k * det)
     assert not vanishes(f - (k + 1) * det)  # the check rejects another multiple
     assert [r for _, r in got.limb] == [1, 1, 1] and got.constraint == []
+
+
+# ------------------------------------------------------------------ algebraic numbers printed
+def test_algebraic_numbers_print_with_a_variable_none_of_the_users():
+    # issue 32, item 2: a CRootOf made in the user's own x printed "CRootOf(x**3 - x - 1, 0)",
+    # a condition on x in appearance; the table prints it in _t (tau in LaTeX), also where
+    # the user has a symbol called _t
+    from sympy import CRootOf, Eq
+
+    from screwsym.systems.singularities import Singularities
+
+    x, t = symbols("x _t", real=True)
+    r = CRootOf(x**3 - x - 1, 0)
+    s = Singularities(limb=[], actuation=[(Eq(x, r), 5)], constraint=[])
+    assert "CRootOf(_t**3 - _t - 1, 0)" in str(s) and "x**3" not in str(s)
+    assert r"\tau^{3} - \tau - 1" in s._repr_latex_() and "x^{3}" not in s._repr_latex_()
+    taken = Singularities(limb=[], actuation=[(Eq(t, r), 5)], constraint=[])
+    assert "CRootOf(_t1**3 - _t1 - 1, 0)" in str(taken)
+    # the checker rejects SymPy's own printing, which keeps x
+    assert "CRootOf(x**3 - x - 1, 0)" in str(Eq(x, r))
