@@ -127,11 +127,8 @@ def transmission_map(mech: ParallelMechanism, symbols: Any, *,
             cols = _normalised(cols, lengths)
         values = _evaluate(fn, cols, lengths, None if homogeneous else wide)
         arr = [np.broadcast_to(v, shape) for v in values]
-        # an index is |w o t| over the largest such product: in [0, 1] where finite (rounding
-        # clipped); a division by zero (inf or nan) is the singular pose: nan
-        arr = [np.where(np.isfinite(a), np.clip(a, 0.0, 1.0), np.nan) for a in arr]
-        lam = np.stack(arr[:n])
-        eta = np.stack(arr[n:])
+        lam = _in_zero_one(np.stack(arr[:n]))
+        eta = _in_zero_one(np.stack(arr[n:]))
         local = np.minimum(lam.min(axis=0), eta.min(axis=0))
         return TransmissionMap(lam, eta, local)
 
@@ -192,6 +189,20 @@ def _length_symbols(mech: ParallelMechanism, syms: list) -> tuple[list[int], boo
     return cols, True
 
 
+def _in_zero_one(a: np.ndarray) -> np.ndarray:
+    """``a`` (its own array) with each index in ``[0, 1]``: an index is ``|w o t|`` over the
+    largest such product, so beyond only by rounding (clipped), and ``inf`` is a division by
+    zero, the singular pose (nan, as 0/0 is).  In place, in two passes where none is out."""
+    if a.size == 0 or (a.min() >= 0 and a.max() <= 1):  # (a nan fails both)
+        return a  # the common case: two reductions
+    with np.errstate(invalid="ignore"):
+        out = ~((a >= 0) & (a <= 1)) & ~np.isnan(a)
+    if out.any():
+        v = a[out]
+        a[out] = np.where(np.isinf(v), np.nan, np.clip(v, 0.0, 1.0))
+    return a
+
+
 def _normalised(cols: list, lengths: list[int]) -> list:
     """The configurations with their lengths divided by a power of two near the largest (exact)."""
     big = np.max(np.abs(np.stack([cols[j] for j in lengths])), axis=0)
@@ -209,29 +220,44 @@ _WIDE = (2.0**-64, 2.0**64)
 
 def _evaluate(fn: Callable[..., Any], cols: list, lengths: list[int],
               wide: Callable[[], Any] | None) -> list:
-    """``fn`` at the configurations in float64; those of extreme lengths (where the geometry is
-    not homogeneous, so cannot be rescaled: ``wide`` is given) one by one with ``wide()``, the
-    indices in mpmath, whose exponents do not overflow."""
+    """``fn`` at the configurations in float64; those whose largest length is extreme (where
+    the geometry is not homogeneous, so cannot be rescaled: ``wide`` is given) one by one
+    with ``wide()``, the indices in mpmath, whose exponents do not overflow."""
     with np.errstate(all="ignore"):
         values = [np.asarray(v, dtype=float) for v in fn(*cols)]
     if wide is None or not lengths or not cols[0].ndim:
         return values
-    mags = np.abs(np.stack([cols[j] for j in lengths]))
-    far = np.any((mags > _WIDE[1]) | ((mags > 0) & (mags < _WIDE[0])), axis=0)
+    # a configuration is far where its largest length is beyond 2**64 (its indices then
+    # overflow to inf, nan or 0: looked at only where one is) or below 2**-64 (then its first
+    # length is): in the common case reductions and one pass over one column
+    shape = np.broadcast_shapes(*(np.shape(v) for v in values), cols[0].shape)
+    cand = np.abs(cols[lengths[0]]) < _WIDE[0]
+    for v in values:
+        if v.size and not (v.min() > 0 and v.max() < np.inf):  # (a nan fails both)
+            cand = cand | np.broadcast_to(~((v > 0) & (v < np.inf)), shape)
+    idx = np.flatnonzero(cand)
+    if not idx.size:
+        return values
+    where = np.unravel_index(idx, shape)
+    big = np.abs(np.broadcast_to(cols[lengths[0]], shape)[where])  # each one's largest length
+    for j in lengths[1:]:
+        np.maximum(big, np.abs(np.broadcast_to(cols[j], shape)[where]), out=big)
+    far = np.zeros(shape, dtype=bool)
+    far[where] = (big > _WIDE[1]) | ((big > 0) & (big < _WIDE[0]))
     if not far.any():
         return values
     out = [np.array(np.broadcast_to(v, far.shape), dtype=float) for v in values]
     import mpmath  # type: ignore[import-untyped]  # SymPy's own dependency
 
     f = wide()
-    for idx in zip(*np.nonzero(far), strict=True):
-        row = [mpmath.mpf(float(c[idx])) for c in cols]
+    for at in zip(*np.nonzero(far), strict=True):
+        row = [mpmath.mpf(float(np.broadcast_to(c, shape)[at])) for c in cols]
         try:
             got = [float(v) for v in f(*row)]
         except ZeroDivisionError:  # a division by zero: the singular pose, nan
             got = [np.nan] * len(out)
         for v, g in zip(out, got, strict=True):
-            v[idx] = g
+            v[at] = g
     return out
 
 
