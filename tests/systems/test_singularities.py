@@ -348,3 +348,50 @@ def test_algebraic_numbers_print_with_a_variable_none_of_the_users():
     assert "CRootOf(_t1**3 - _t1 - 1, 0)" in str(taken)
     # the checker rejects SymPy's own printing, which keeps x
     assert "CRootOf(x**3 - x - 1, 0)" in str(Eq(x, r))
+
+
+@pytest.mark.slow
+def test_strata_and_the_case_split_give_the_same_sets_on_a_three_rrr():
+    # a planar 3-RRR, platform translated by (x, y) (Bonev, Zlatanov & Gosselin 2003): the
+    # strata (one set per rank, fewest equations) and the old disjoint case split are two
+    # algorithms for the same singular sets; they agree at every point of a grid, and the
+    # type II set holds exactly where NumPy finds Jx singular there
+    from sympy import Or, false
+
+    import screwsym.systems.singularities as sing
+
+    x, y = symbols("x y", real=True)
+    pts = [(x + 1, y), (x, y + 1), (x - 1, y - 1)]
+    mech = ParallelMechanism(*(
+        Limb(R([a, b, 0], Z), R([a + 1, b + 2, 0], Z), R([p[0], p[1], 0], Z), actuated=0)
+        for (a, b), p in zip([(3, -1), (-1, 3), (-2, -3)], pts, strict=True)))
+    new = mech.singularities()
+    assert len(new.actuation) == 1 and new.actuation[0][1] == 5
+    saved = sing._drops
+    sing._drops = sing._split_drops
+    try:
+        old = sing._singularities(mech)
+    finally:
+        sing._drops = saved
+
+    def union(part):
+        return Or(*(c for c, _ in part)) if part else false
+
+    grid = [{x: a, y: b} for a in range(-4, 5) for b in range(-4, 5)]
+    for part in ("limb", "actuation", "constraint"):
+        a, b = union(getattr(new, part)), union(getattr(old, part))
+        assert all(bool(a.subs(p)) == bool(b.subs(p)) for p in grid), part
+    hits = 0
+    limb_set = union(new.limb)
+    for p in grid:
+        if limb_set.subs(p):  # a leg degenerate there: Jx's wrench is a limit (a superset)
+            continue
+        Jx = np.array(mech.xreplace(p).jacobian()[0], dtype=float)
+        singular = np.linalg.matrix_rank(Jx) < 6
+        assert bool(new.actuation[0][0].subs(p)) == singular, p
+        hits += singular
+    assert hits >= 3  # the grid meets the set: an empty answer would fail
+    # the checker rejects another set: a shifted condition disagrees somewhere on the grid
+    cond = new.actuation[0][0]
+    shifted = cond.subs(x, x + 1)
+    assert any(bool(shifted.subs(p)) != bool(cond.subs(p)) for p in grid)
