@@ -180,12 +180,17 @@ class Undecided(Exception):
 
 
 def _primitive(e: Any) -> Any:
-    """A polynomial in the user's symbols with coprime integer coefficients, factored."""
-    e = e.as_content_primitive()[1]
-    if e.could_extract_minus_sign():
-        e = -e
+    """The equation ``e = 0`` as the product of the distinct irreducible factors of ``e`` (the
+    same zeros: a square adds no equation), each with coprime integer coefficients and a
+    positive leading one, in the user's symbols."""
     _, factors = factor_list(e)
-    return Mul(*(f**k for f, k in factors)) if len(factors) > 1 or factors[0][1] > 1 else e
+    out = []
+    for f, _ in factors:
+        f = f.as_content_primitive()[1]
+        if Poly(f).LC() < 0:
+            f = -f
+        out.append(f)
+    return Mul(*out) if len(out) > 1 else out[0] if out else e
 
 
 def _equation(e: Any) -> Any:
