@@ -66,6 +66,7 @@ from sympy.matrices import MatrixBase
 from ..codegen import lambdify
 from ..core.checks import check_positive_float
 from ..core.formulas import SWAP
+from ..systems.actuation import generic_limb_rank
 from ..systems.parallel import ParallelMechanism
 from ._chunks import batched, is_dask
 
@@ -86,6 +87,10 @@ class MobilityMap(NamedTuple):
     constraint_rank: np.ndarray  #: ``(...)`` int: rank of that union
     limb_constraints: np.ndarray  #: ``(..., k)`` int: 6 - rank of each limb's twists
     sigma: np.ndarray  #: ``(..., 6)``: ``|R_jj|`` of the union's pivoted QR, largest first
+    #: ``(...)`` int: the limbs' momentary internal motions, ``sum_i (g_i - rank T_i)`` with
+    #: ``g_i`` the limb's generic rank (a leg at its own singularity: a stretched R-R-R leg);
+    #: ``mobility + internal`` is what ``ParallelMechanism.mobility()`` gives there
+    internal: np.ndarray
 
 
 def mobility_map(
@@ -103,7 +108,12 @@ def mobility_map(
     :class:`MobilityMap`.  See the module docstring for the tolerance.  A
     configuration whose twists are not all finite (a NaN or infinite value)
     is marked :data:`UNDEFINED`: ``-1`` in the integer fields, NaN in
-    ``sigma``, the same on every back end.  The rank is unit-free (the
+    ``sigma``, the same on every back end.  ``mobility`` is ``6`` minus the
+    rank of the limbs' constraints; at a limb's own singularity (a leg
+    stretched) the limb has a momentary idle motion, which
+    :meth:`~screwsym.systems.parallel.ParallelMechanism.mobility` counts in
+    its mobility and this map reports in a field of its own, ``internal``:
+    ``mobility + internal`` agrees with ``mobility()`` at every configuration.  The rank is unit-free (the
     moment rows are divided by a length of each configuration): scaling the
     mechanism and its arguments by ``1e8`` changes no mobility.  Given Dask
     arrays, the fields come back as lazy Dask arrays, computed chunk by
@@ -162,6 +172,7 @@ def mobility_map(
             f"args: expected every symbol of the mechanism, missing {', '.join(map(str, missing))}"
         )
     twists_of = lambdify(list(listed), matrices, backend=backend)
+    generic = sum(generic_limb_rank(limb) for limb in limbs)  # sum_i g_i
     sizes = [m.cols for m in matrices]
     offsets = tuple(int(x) for x in np.cumsum([0, *sizes]))
     analyse = _analyse_numba if backend == "numba" else _analyse_numpy
@@ -186,15 +197,19 @@ def mobility_map(
             counts[undefined] = UNDEFINED
             sigma[undefined] = np.nan
         k = len(sizes)
+        # sum_i (g_i - rank T_i), rank T_i = 6 - counts_i
+        internal = np.where(undefined, UNDEFINED, generic - 6 * k + counts.sum(axis=-1))
         return (
             (6 - ranks).reshape(batch),
             np.where(undefined, UNDEFINED, ranks).reshape(batch),
             counts.reshape(batch + (k,)),
             sigma.reshape(batch + (6,)),
+            internal.reshape(batch),
         )
 
     trailing = [_trailing(a) for a in listed]
-    outputs = [((), np.int64), ((), np.int64), ((len(sizes),), np.int64), ((6,), float)]
+    outputs = [((), np.int64), ((), np.int64), ((len(sizes),), np.int64), ((6,), float),
+               ((), np.int64)]
     recipe = (mechanism, tuple(ImmutableMatrix(a) if isinstance(a, MatrixBase) else a
                                for a in listed), rtol, backend)
     if len(_MADE) >= 64:  # a bounded memory of recent maps

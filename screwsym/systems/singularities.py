@@ -48,16 +48,39 @@ mechanisms", Proc. IEEE ICRA 2002, 496-502.
 from __future__ import annotations
 
 import random
+from itertools import combinations
+from math import comb
 from typing import Any, NamedTuple
 
-from sympy import And, Eq, Ne, Not, Or, false, latex, sstr, true
+from sympy import (
+    And,
+    Eq,
+    ImmutableMatrix,
+    Mul,
+    Ne,
+    Not,
+    Or,
+    Poly,
+    cancel,
+    cos,
+    factor_list,
+    false,
+    sin,
+    true,
+)
 from sympy.logic.boolalg import simplify_logic
 
 from ..algebra.budget import BUDGET
-from ..algebra.circle import trig_substitute
+from ..algebra.circle import reduce_circle, trig_substitute
+from ..algebra.linalg import det_rows
+from ..algebra.real import proved_positive, real_factors, solvable
+from ..algebra.rings import to_expr, to_ring, vanishes
+from ..algebra.surface import groebner_ideal
+from ..core.decide import is_zero
+from ..core.printing import result_latex, result_str
 from ..core.twist import Twist
 from ..core.wrench import Wrench
-from ._rank_cases import case_budget
+from ._rank_cases import analysis, case_budget, rank_on_surface, trig_normal_matrix
 from .actuation import (
     _actuated,
     _displaced,
@@ -77,9 +100,12 @@ __all__ = ["Singularities", "mechanism_singularities", "constraint_count"]
 class Singularities(NamedTuple):
     """The result of :func:`mechanism_singularities`: three lists of ``(condition, rank)`` pairs.
 
-    Each pair is a case where the system of its kind has less than the rank
+    Each pair is a set where the system of its kind has less than the rank
     of a regular mechanism of the kind (the module docstring); their ``Or``
-    is the singular set of the kind, ``[]`` none.  A first pair
+    is the singular set of the kind, ``[]`` none.  A set is stated by the
+    fewest equations that describe it (:func:`rank_strata`: one conic, each
+    factor in the user's symbols), with the rank at its generic points (lower
+    where a later pair of lower rank holds).  A first pair
     ``(True, r)`` is an *architecture singularity*: rank ``r`` at a generic
     configuration, singular everywhere.  ``rank`` ``None``: not decided
     there.  ``limbs`` names the limb (its index) of each entry of ``limb``.
@@ -103,7 +129,7 @@ class Singularities(NamedTuple):
 
     def table(self) -> str:
         """The entries as a text table (kind, limb, condition, rank); "regular" when none."""
-        rows = [(k, i, sstr(c), str(r)) for k, i, c, r in self.rows()]
+        rows = [(k, i, result_str(c), str(r)) for k, i, c, r in self.rows()]
         if not rows:
             return "Singularities: none (regular)"
         head = ("kind", "limb", "condition", "rank")
@@ -123,7 +149,7 @@ class Singularities(NamedTuple):
         if not rows:
             return r"$\text{no singularity (regular)}$"
         body = r" \\ ".join(
-            rf"\text{{{k}}} & {i} & {latex(c)} & {latex(r)}"
+            rf"\text{{{k}}} & {i} & {result_latex(c)} & {result_latex(r)}"
             for k, i, c, r in rows)
         return (r"$\begin{array}{llll} \text{kind} & \text{limb} & \text{condition} & "
                 rf"\text{{rank}} \\ \hline {body} \end{{array}}$")
@@ -140,8 +166,230 @@ def _union(a: Any, b: Any) -> Any:
                         lambda x: Ne(*x.args[0].args))
 
 
+#: the most minors of one size :func:`rank_strata` computes (beyond: the case split)
+MAX_MINORS = 2000
+
+
+#: the most terms (over the minors of one size) :func:`rank_strata` takes a gcd and a Groebner
+#: basis of (the 3-RPR with pose (x, y, phi): 10 distinct minors of 5 x 5, 114 terms in all)
+MAX_TERMS = 600
+
+
+class Undecided(Exception):
+    """:func:`rank_strata` cannot decide a stratum (the case split of ``rank_conditions`` then)."""
+
+
+def _primitive(e: Any) -> Any:
+    """The equation ``e = 0`` as the product of the distinct irreducible factors of ``e`` (the
+    same zeros: a square adds no equation), each with coprime integer coefficients and a
+    positive leading one, in the user's symbols."""
+    _, factors = factor_list(e)
+    out = []
+    for f, _ in factors:
+        f = f.as_content_primitive()[1]
+        if Poly(f).LC() < 0:
+            f = -f
+        out.append(f)
+    return Mul(*out) if len(out) > 1 else out[0] if out else e
+
+
+def _equation(e: Any) -> Any:
+    """``Eq(e, 0)`` with ``e`` made primitive and factored (:func:`_primitive`); ``Eq(x, c)``
+    where ``e`` is a number times a symbol plus a number (``Eq(y, 1)``, not ``Eq(y - 1, 0)``)."""
+    e = _primitive(e)
+    syms = e.free_symbols
+    if len(syms) == 1 and not e.has(sin, cos):
+        x = next(iter(syms))
+        p = Poly(e, x)
+        if p.degree() == 1:
+            return Eq(x, -p.nth(0) / p.LC())
+    return Eq(e, 0)
+
+
+def _minors(rows: list, k: int, R: Any) -> list:
+    """The distinct non-zero ``k x k`` minors of the matrix ``rows`` (ring elements), monic."""
+    n, m = len(rows), len(rows[0])
+    if comb(n, k) * comb(m, k) > MAX_MINORS:
+        raise Undecided
+    found: dict = {}
+    for rs in combinations(range(n), k):
+        sub = [rows[i] for i in rs]
+        if any(not any(r) for r in sub):
+            continue
+        for cs in combinations(range(m), k):
+            d = det_rows([[r[j] for j in cs] for r in sub], R)
+            if d:
+                found.setdefault(d.monic(), None)
+    return list(found)
+
+
+def _squares(f: Any, R: Any, depth: int = 0) -> list | None:
+    """Equations whose common real zeros are those of ``f``, where ``f >= 0`` is a sum of squares
+    on the circles; else None.
+
+    :func:`~screwsym.algebra.real.square_split` with the rest reduced on the circles at
+    each step (``4 a f = (2 a x + b)**2 + D`` and ``D`` read on them, where
+    ``sin(q)**2 + cos(q)**2 = 1``): a leg's squared length ``|d|**2`` with its pose
+    angle in sines and cosines is zero exactly where ``d = 0``, two equations.
+    """
+    if depth >= 4:
+        return None
+    for i in range(len(R.gens)):
+        if f.degree(i) != 2 or not solvable(i, R):
+            continue
+        g = R.gens[i]
+        a = f.coeff_wrt(g, 2)
+        if not a.is_ground:
+            continue
+        if not R.domain.to_sympy(a.LC) > 0:  # -f >= 0: the same zeros
+            f, a = -f, -a
+        b = f.coeff_wrt(g, 1)
+        D = reduce_circle(4 * a * (f - a * g**2 - b * g) - b**2, R)
+        if not D:
+            return [2 * a * g + b]
+        more = _squares(D, R, depth + 1) if not proved_positive(D, R) else None
+        if more is not None:
+            return [2 * a * g + b, *more]
+    return None
+
+
+def _solved_rank(M: ImmutableMatrix, eqs: list) -> tuple[int | None, list]:
+    """The rank of ``M``'s columns at the generic point of the set ``eqs = 0``, where the
+    equations solve one after the other for a symbol with a constant coefficient (a set
+    parametrised by the other symbols: real points, and its generic point), and the
+    equations solved (the others follow from them); else ``(None, eqs)``."""
+    subs: dict = {}
+    pending = list(eqs)
+    used: list = []
+    while pending:
+        for e in pending:
+            e2 = cancel(trig_substitute(e, subs)) if subs else e
+            if e2 == 0 or vanishes(e2):  # (zero on the circles too)
+                pending.remove(e)
+                break
+            pick = None
+            for x in sorted(e2.free_symbols, key=str):
+                if e2.has(sin(x), cos(x)):
+                    continue
+                p = Poly(e2, x)
+                if p.degree() == 1 and p.LC().is_number:
+                    pick = (x, -p.nth(0) / p.LC())
+                    break
+            if pick is not None:
+                x, v = pick
+                subs = {k: cancel(trig_substitute(w, {x: v})) for k, w in subs.items()}
+                subs[x] = v
+                pending.remove(e)
+                used.append(e)
+                break
+        else:
+            return None, eqs
+    here = trig_substitute(M, subs).applyfunc(cancel)
+    return analysis(trig_normal_matrix(here)).rank, used
+
+
+def rank_strata(M: ImmutableMatrix, generic: int, also: Any = true) -> list:
+    r"""The sets where the columns of ``M`` (a screw system) have less than ``generic``, each once.
+
+    Explanation
+    ===========
+
+    The system has rank below ``k`` exactly where all its ``k x k`` minors
+    vanish.  Their gcd ``g`` gives the surfaces of that set: each real factor
+    of ``g`` (:func:`~screwsym.algebra.real.real_factors`), its rank proved at
+    its generic point modulo the factor
+    (:func:`~screwsym.systems._rank_cases.rank_on_surface`); what is left,
+    ``minors / g = 0``, is a set of codimension two or more, written as the
+    Groebner basis of those quotients (and the circles' relations: SymPy's
+    ``groebner``), ``1`` where it has no point at all.  Each ``k`` from the
+    generic rank down, until the set is empty.  So a singular set comes as
+    the fewest equations that describe it: one conic, not points on it and
+    the conic without them.  A set is listed with the rank it has at its
+    generic points (at the ``k`` where that rank is ``k - 1``; lower where a
+    later entry holds), each factor in the user's symbols with coprime
+    integer coefficients.  Where the system's own rank is below ``generic``
+    a first entry ``(also, rank)``; ``also`` is conjoined to every condition.
+
+    Raises :class:`Undecided` where a set is neither a surface whose rank is
+    proved nor solved for its symbols one after the other, or has more than
+    :data:`MAX_MINORS` minors of a size: the caller then splits by cases.
+    """
+    M = trig_normal_matrix(ImmutableMatrix(M))
+    out: list = []
+    if M.cols == 0:
+        return [(also, 0)] if generic > 0 else []
+    top = analysis(M).rank
+    if top < generic:
+        out.append((also, top))
+    if not M.free_symbols or top == 0:
+        return out
+    rg = to_ring(M)
+    R = rg.ring
+    if not R.domain.is_QQ:  # gcds over an algebraic field (SymPy's subresultants): minutes
+        raise Undecided
+    rows = [[c[i] for c in rg.cols] for i in range(M.rows)]
+    listed: list = []  # the surfaces and sets already stated (ring elements / bases)
+    for k in range(top, 0, -1):
+        minors = _minors(rows, k, R)
+        if sum(len(m.terms()) for m in minors) > MAX_TERMS:
+            raise Undecided  # their gcd and Groebner basis would not be cheap
+        g = minors[0]
+        for m in minors[1:]:
+            g = g.gcd(m)
+        surfaces = [f for f in real_factors(g, R, lambda e: is_zero(e) is False)
+                    if f.monic() not in listed]
+        rest = [m.exquo(g) for m in minors]
+        basis = ([R.ring.one] if any(r.is_ground for r in rest)
+                 else groebner_ideal(rest, R))
+        if not surfaces and basis == [R.ring.one]:
+            break  # no point where the rank is below k: nor below any smaller
+        at_rank: dict = {}
+        sets = [basis] if basis != [R.ring.one] else []
+        for f in list(surfaces):
+            squares = _squares(f, R)
+            if squares is not None:  # its real points: a set of codimension two or more
+                surfaces.remove(f)
+                sets.append(squares)
+        for f in surfaces:
+            fe = to_expr(f, R)
+            rank = rank_on_surface(M, fe)
+            if rank is None:
+                raise Undecided
+            if rank == k - 1:
+                listed.append(f.monic())
+                at_rank.setdefault(rank, []).append(_primitive(fe))
+        for rank, fs in sorted(at_rank.items(), reverse=True):
+            cond = _equation(Mul(*fs))
+            out.append((And(cond, also) if also is not true else cond, rank))
+        for polys in sets:
+            eqs = [e for e in (to_expr(reduce_circle(b, R), R) for b in polys) if e != 0]
+            key = tuple(sorted(map(str, eqs)))
+            if key in listed:
+                continue
+            rank, eqs = _solved_rank(M, eqs)
+            if rank is None:
+                raise Undecided
+            if rank == k - 1:
+                listed.append(key)
+                cond = And(*(_equation(e) for e in eqs))
+                out.append((And(cond, also) if also is not true else cond, rank))
+    return out
+
+
 def _drops(system: ScrewSystem, generic: int, also: Any = true) -> list:
-    """The cases where ``system`` has less than ``generic`` (those of one rank merged).
+    """The sets where ``system`` has less than ``generic``: its rank strata (:func:`rank_strata`),
+    or, where those cannot be decided, the cases of ``rank_conditions`` (those of one rank merged).
+    """
+    try:
+        return rank_strata(system.matrix, generic, also)
+    except Undecided:
+        return _split_drops(system, generic, also)
+
+
+def _split_drops(system: ScrewSystem, generic: int, also: Any = true) -> list:
+    """The cases of ``rank_conditions`` where ``system`` has less than ``generic`` (those of one
+    rank merged): exhaustive and disjoint, but a set may come in pieces (points on a conic,
+    and the conic with those points left out).
 
     Where even the first (generic) case is below ``generic``, the system is singular
     everywhere (``also``): a first entry ``(also, rank)``, then the cases below it.
@@ -246,8 +494,11 @@ def mechanism_singularities(mech: _Mechanism, *, budget: int = BUDGET) -> Singul
     ``actuation``: the cases where the rows of ``Jx`` have less than
     ``min(6, actuators + constraint_count)``, each conjoined with the generic
     condition of the constraint system (so the constraints keep their rank
-    there).  The conditions are those of :meth:`ScrewSystem.rank_conditions`
-    on the systems as written: the actuation wrenches are polynomial in the
+    there).  The conditions are the rank strata of each system
+    (:func:`rank_strata`: the sets where all minors of a size vanish, each
+    once, by the fewest equations), or, where those cannot be decided (an
+    algebraic field, large minors), the disjoint cases of
+    :meth:`ScrewSystem.rank_conditions`, on the systems as written: the actuation wrenches are polynomial in the
     symbols, and where one of them vanishes identically the case is listed too
     (a superset, never a miss).  A first entry ``(True, r)``: singular at
     every configuration (an architecture singularity).  All the splits share
@@ -271,13 +522,13 @@ def mechanism_singularities(mech: _Mechanism, *, budget: int = BUDGET) -> Singul
     ...                              Limb(P([1, 0, 0]), P([0, 1, 0])))
     >>> s = mechanism_singularities(five_bar([x, y, 0]))
     >>> print(s)
-    kind       limb  condition                      rank
-    ---------  ----  -----------------------------  ----
-    limb       0     Eq(x, 0)                       2
-    limb       0     Eq(x, 0) & Eq(y - 1, 0)        3
-    limb       1     Eq(x - 3, 0)                   2
-    limb       1     Eq(y - 1, 0) & Eq(x - 3*y, 0)  3
-    actuation        Eq(y, 1)                       5
+    kind       limb  condition            rank
+    ---------  ----  -------------------  ----
+    limb       0     Eq(x, 0)             2
+    limb       0     Eq(x, 0) & Eq(y, 1)  3
+    limb       1     Eq(x, 3)             2
+    limb       1     Eq(x, 3) & Eq(y, 1)  3
+    actuation        Eq(y, 1)             5
 
     Leg 0 is stretched or folded where ``x = 0`` (the end point above its base:
     its three axes in one plane, rank 2); its actuation wrench degenerates

@@ -78,3 +78,34 @@ def test_an_undefined_configuration_is_marked_the_same_on_every_backend(backend)
     assert out.constraint_rank.tolist() == [5, -1, -1, -1, -1]
     assert (out.limb_constraints[1:] == -1).all() and (out.limb_constraints[0] >= 0).all()
     assert np.isnan(out.sigma[1:]).all() and np.isfinite(out.sigma[0]).all()
+
+
+def test_stretched_leg_internal_motion_in_a_field_of_its_own():
+    # issue 32: Bonev, Zlatanov & Gosselin (2003), a planar 3-RRR with leg 0 stretched
+    # (crank pivot, elbow and platform pivot on one line) at t = 0: the leg has a momentary
+    # idle motion, which mobility() counts (3) and the map reports as `internal` beside its
+    # mobility (6 - rank of the constraints, 2): mobility + internal == mobility() everywhere
+    from sympy import Symbol
+
+    from screwsym.numeric.mobility import mobility_map
+    from screwsym.systems.joints import R
+    from screwsym.systems.parallel import Limb, ParallelMechanism
+
+    t = Symbol("t", real=True)
+    z = [0, 0, 1]
+    mech = ParallelMechanism(
+        Limb(R([0, 0, 0], z), R([1, t, 0], z), R([2, 0, 0], z)),
+        Limb(R([4, 0, 0], z), R([4, 1, 0], z), R([3, 1, 0], z)),
+        Limb(R([0, 3, 0], z), R([1, 3, 0], z), R([2, 1, 0], z)))
+    values = [0, 0.5, -1.0]
+    out = mobility_map(mech, [t])(np.array(values, dtype=float))
+    for n, v in enumerate(values):
+        exact = mech.xreplace({t: Rational(v)}).mobility()
+        assert out.mobility[n] + out.internal[n] == exact.mobility
+        assert out.internal[n] == exact.internal
+    assert list(out.internal) == [1, 0, 0] and out.mobility[0] == 2
+    # the checker rejects the map's mobility alone at the stretched leg: it misses the idle
+    # motion that mobility() counts
+    assert out.mobility[0] != mech.xreplace({t: 0}).mobility().mobility
+    undefined = mobility_map(mech, [t])(np.array([np.nan]))
+    assert undefined.internal[0] == -1

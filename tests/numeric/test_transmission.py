@@ -121,3 +121,68 @@ def test_three_rpr_map_is_finite_where_two_legs_are_parallel():
         assert 0 <= out.local[n] <= 1
     # the check rejects a wrong answer: nan (what the map gave) is not close to the exact
     assert not np.allclose(np.nan, float(exact.output[1]))
+
+
+# ------------------------------------------------------------------ issue 32: maps that cannot mislead
+def _five_bar_symbols(a2=None):
+    syms = list(symbols("b1x b1y b2x b2y px py", real=True))
+    kw = {} if a2 is None else {"a2": (a2, 0)}
+    return syms, five_bar((syms[4], syms[5]), b1=syms[0:2], b2=syms[2:4], **kw)
+
+
+_CFG = np.array([[np.cos(1.0), np.sin(1.0), 3 + np.cos(2.0), np.sin(2.0), 1.5, 2.2]])
+
+
+def test_map_is_scale_free_where_the_geometry_scales():
+    # the indices are dimensionless (Wang, Wu & Liu 2010): a five-bar whose every point is a
+    # symbol (A1 at the origin, A2 = (a2, 0)) has the same indices at 1e-150, 1e150 and 1e300
+    # times a configuration as at it (inside, each configuration divided by a power of two)
+    a2 = Symbol("a2", real=True)
+    syms, m = _five_bar_symbols(a2)
+    f = transmission_map(m, [*syms, a2])
+    cfg = np.append(_CFG, [[3.0]], axis=1)
+    at1 = f(cfg)
+    for scale in (1e-150, 1e150, 1e300):
+        out = f(cfg * scale)
+        assert np.allclose(out.input, at1.input, rtol=1e-12)
+        assert np.allclose(out.output, at1.output, rtol=1e-12)
+    # the checker rejects the float formula unscaled: it overflows there (nan)
+    from screwsym.codegen import lambdify
+
+    tr = m.transmission()
+    raw = lambdify([*syms, a2], (*tr.input, *tr.output), "numpy", name="raw")
+    with np.errstate(all="ignore"):
+        assert np.isnan(np.asarray(raw(*(cfg[0] * 1e154)), dtype=float)).all()
+
+
+def test_map_beyond_the_float_range_equals_the_exact_indices():
+    # issue 32: at 1e154 times a configuration the map gave nan (overflow) or 0, the value
+    # that marks a singularity; the five-bar of the benchmark (A2 a constant: not rescaled)
+    # is evaluated there in mpmath, and agrees with the exact indices at the exact point
+    syms, m = _five_bar_symbols()
+    f = transmission_map(m, syms)
+    tr = m.transmission()
+    for scale in (10**154, 10**200):
+        out = f(_CFG * float(scale))
+        at = {s: Rational(float(v)) * scale for s, v in zip(syms, _CFG[0], strict=True)}
+        assert np.allclose(out.input[:, 0], [float(e.xreplace(at)) for e in tr.input])
+        assert np.allclose(out.output[:, 0], [float(e.xreplace(at)) for e in tr.output])
+        assert 0 < out.local[0] <= 1
+    # and the checker rejects a wrong value: the indices at scale 1 differ from these
+    assert not np.allclose(f(_CFG).input, f(_CFG * 1e154).input)
+
+
+def test_indices_lie_in_zero_one_and_nan_only_at_singular_poses(fn):
+    # random configurations (some near the singular lines): each index in [0, 1] or nan,
+    # and nan only where Jx is singular (the distal links on one line, y = 1) here exactly
+    rng = np.random.default_rng(32)
+    cfg = np.concatenate([rng.uniform(-5, 5, (200, 2)), [[1.0, 1.0], [2.0, 1.0]]])
+    out = fn(cfg)
+    for a in (out.input, out.output, out.local[None, :]):
+        finite = a[np.isfinite(a)]
+        assert ((finite >= 0) & (finite <= 1)).all()
+    bad = ~np.isfinite(out.output).all(axis=0)
+    assert set(np.nonzero(bad)[0]) <= {200, 201} or all(abs(cfg[i, 1] - 1) < 1e-12 or
+                                                       abs(cfg[i, 0]) < 1e-12 or
+                                                       abs(cfg[i, 0] - 3) < 1e-12
+                                                       for i in np.nonzero(bad)[0])

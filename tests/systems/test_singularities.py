@@ -243,3 +243,155 @@ def test_graph_twists_of_tsai_three_upu_are_a_reduced_basis():
     from screwsym import Twist
     wrong = ScrewSystem(*got.screws[:2], Twist([0, 0, 1], [0, 0, 0]))
     assert (wrong | pm.twists).rank == 4
+
+
+# ------------------------------------------------------------------ minimal singular sets
+def leg_lines_det(base, platform, x, y, c, s):
+    """The determinant of the three leg lines of a 3-RPR as planar forces (f_x, f_y, moment),
+    written here by hand from the geometry (Gosselin & Angeles 1990, eq. 25: the matrix A)."""
+    rows = []
+    for a, b in zip(base, platform, strict=True):
+        top = (c * b[0] - s * b[1] + x, s * b[0] + c * b[1] + y)
+        d = (top[0] - a[0], top[1] - a[1])
+        rows.append([d[0], d[1], top[0] * d[1] - top[1] * d[0]])
+    return Matrix(rows).det()
+
+
+def is_minimal_conic(part, det, x, y):
+    """The checker: ``part`` is one pair, rank 5, one equation ``F = 0`` with no ``Ne`` guard
+    and no ``Or`` of points, ``F`` of degree two in (x, y), written factored (a product of its
+    irreducible factors where it has more than one), and a constant multiple of the
+    hand-written determinant ``det`` (the same conic)."""
+    from sympy import Eq, Mul, Poly, cancel, factor_list
+
+    if len(part) != 1 or part[0][1] != 5 or not isinstance(part[0][0], Eq):
+        return False
+    cond = part[0][0]
+    f = cond.lhs - cond.rhs
+    ratio = cancel(f / det)
+    factored = len(factor_list(f)[1]) == 1 or isinstance(f, Mul)
+    return ratio.is_number and ratio != 0 and Poly(f, x, y).total_degree() == 2 and factored
+
+
+def test_three_rpr_type_two_set_at_a_fixed_orientation_is_one_conic():
+    # Gosselin & Angeles (1990), Sec. III-B, and Sefrioui & Gosselin (1995), "On the
+    # quadratic nature of the singularity curves of planar three-degree-of-freedom parallel
+    # manipulators", Mech. Mach. Theory 30(4): with the orientation fixed, the type II set of
+    # a 3-RPR is a conic in (x, y); it comes back as that one conic, no points on it, no Ne
+    from sympy import And, Eq, Ne, Or
+
+    x, y = symbols("x y", real=True)
+    c, s = 1, 0
+    got = three_rpr(x, y, c, s, RPR_BASE, RPR_PLATFORM).singularities()
+    det = leg_lines_det(RPR_BASE, RPR_PLATFORM, x, y, c, s)
+    assert is_minimal_conic(got.actuation, det, x, y)
+    # at this orientation the conic degenerates into two lines, given as their product
+    assert got.actuation[0][0].lhs.is_Mul
+    # each leg: singular only where its length is zero, two equations, rank 1 (R and R
+    # coincide, the P axis zero), the limb named, no condition twice
+    assert [r for _, r in got.limb] == [1, 1, 1] and got.limbs == (0, 1, 2)
+    for (cond, _), a, b in zip(got.limb, RPR_BASE, RPR_PLATFORM, strict=True):
+        assert isinstance(cond, And) and len(cond.args) == 2
+        assert cond.subs({x: a[0] - (c * b[0] - s * b[1]), y: a[1] - (s * b[0] + c * b[1])})
+    assert got.constraint == []
+    # the checker rejects a non-minimal answer (the conic guarded by Ne's, or with points
+    # on it), a wrong conic, and a conic of another orientation
+    (cond, _), = got.actuation
+    f = cond.lhs - cond.rhs
+    assert not is_minimal_conic([(And(cond, Ne(x, 0)), 5)], det, x, y)
+    assert not is_minimal_conic([(Or(And(Eq(x, 0), Eq(y, 0)), cond), 5)], det, x, y)
+    assert not is_minimal_conic([(Eq(f + 1, 0), 5)], det, x, y)
+    assert not is_minimal_conic([(Eq(f.expand() * (x - 7), 0), 5)], det, x, y)
+    assert not is_minimal_conic([(Eq(f.expand(), 0), 5)], det, x, y)  # not factored
+    turned = leg_lines_det(RPR_BASE, RPR_PLATFORM, x, y, Rational(3, 5), Rational(4, 5))
+    assert not is_minimal_conic([(cond, 5)], turned, x, y)
+    # and the conic holds exactly where NumPy finds the legs dependent, on a grid with some
+    on = [(px, py) for px in range(-5, 6) for py in range(-5, 6) if f.subs({x: px, y: py}) == 0]
+    assert len(on) >= 3
+    for px in range(-5, 6):
+        for py in range(-5, 6):
+            assert (leg_lines_rank(RPR_BASE, RPR_PLATFORM, (px, py)) < 3) == ((px, py) in on)
+
+
+@pytest.mark.slow
+def test_three_rpr_symbolic_pose_type_two_set_is_one_surface():
+    # the whole pose (x, y, phi) symbolic (issue 32's target: under 30 s, here about 3 s):
+    # one type II surface, the hand-written determinant up to a constant on the circle
+    from screwsym.algebra.rings import vanishes
+
+    x, y, phi = symbols("x y phi", real=True)
+    got = three_rpr(x, y, cos(phi), sin(phi), RPR_BASE, RPR_PLATFORM).singularities()
+    ((cond, rank),) = got.actuation
+    det = leg_lines_det(RPR_BASE, RPR_PLATFORM, x, y, cos(phi), sin(phi))
+    f = cond.lhs - cond.rhs
+    k = f.subs({x: 1, y: 2, phi: 0}) / det.subs({x: 1, y: 2, phi: 0})
+    assert rank == 5 and vanishes(f - k * det)
+    assert not vanishes(f - (k + 1) * det)  # the check rejects another multiple
+    assert [r for _, r in got.limb] == [1, 1, 1] and got.constraint == []
+
+
+# ------------------------------------------------------------------ algebraic numbers printed
+def test_algebraic_numbers_print_with_a_variable_none_of_the_users():
+    # issue 32, item 2: a CRootOf made in the user's own x printed "CRootOf(x**3 - x - 1, 0)",
+    # a condition on x in appearance; the table prints it in _t (tau in LaTeX), also where
+    # the user has a symbol called _t
+    from sympy import CRootOf, Eq
+
+    from screwsym.systems.singularities import Singularities
+
+    x, t = symbols("x _t", real=True)
+    r = CRootOf(x**3 - x - 1, 0)
+    s = Singularities(limb=[], actuation=[(Eq(x, r), 5)], constraint=[])
+    assert "CRootOf(_t**3 - _t - 1, 0)" in str(s) and "x**3" not in str(s)
+    assert r"\tau^{3} - \tau - 1" in s._repr_latex_() and "x^{3}" not in s._repr_latex_()
+    taken = Singularities(limb=[], actuation=[(Eq(t, r), 5)], constraint=[])
+    assert "CRootOf(_t1**3 - _t1 - 1, 0)" in str(taken)
+    # the checker rejects SymPy's own printing, which keeps x
+    assert "CRootOf(x**3 - x - 1, 0)" in str(Eq(x, r))
+
+
+@pytest.mark.slow
+def test_strata_and_the_case_split_give_the_same_sets_on_a_three_rrr():
+    # a planar 3-RRR, platform translated by (x, y) (Bonev, Zlatanov & Gosselin 2003): the
+    # strata (one set per rank, fewest equations) and the old disjoint case split are two
+    # algorithms for the same singular sets; they agree at every point of a grid, and the
+    # type II set holds exactly where NumPy finds Jx singular there
+    from sympy import Or, false
+
+    import screwsym.systems.singularities as sing
+
+    x, y = symbols("x y", real=True)
+    pts = [(x + 1, y), (x, y + 1), (x - 1, y - 1)]
+    mech = ParallelMechanism(*(
+        Limb(R([a, b, 0], Z), R([a + 1, b + 2, 0], Z), R([p[0], p[1], 0], Z), actuated=0)
+        for (a, b), p in zip([(3, -1), (-1, 3), (-2, -3)], pts, strict=True)))
+    new = mech.singularities()
+    assert len(new.actuation) == 1 and new.actuation[0][1] == 5
+    saved = sing._drops
+    sing._drops = sing._split_drops
+    try:
+        old = sing._singularities(mech)
+    finally:
+        sing._drops = saved
+
+    def union(part):
+        return Or(*(c for c, _ in part)) if part else false
+
+    grid = [{x: a, y: b} for a in range(-4, 5) for b in range(-4, 5)]
+    for part in ("limb", "actuation", "constraint"):
+        a, b = union(getattr(new, part)), union(getattr(old, part))
+        assert all(bool(a.subs(p)) == bool(b.subs(p)) for p in grid), part
+    hits = 0
+    limb_set = union(new.limb)
+    for p in grid:
+        if limb_set.subs(p):  # a leg degenerate there: Jx's wrench is a limit (a superset)
+            continue
+        Jx = np.array(mech.xreplace(p).jacobian()[0], dtype=float)
+        singular = np.linalg.matrix_rank(Jx) < 6
+        assert bool(new.actuation[0][0].subs(p)) == singular, p
+        hits += singular
+    assert hits >= 3  # the grid meets the set: an empty answer would fail
+    # the checker rejects another set: a shifted condition disagrees somewhere on the grid
+    cond = new.actuation[0][0]
+    shifted = cond.subs(x, x + 1)
+    assert any(bool(shifted.subs(p)) != bool(cond.subs(p)) for p in grid)
