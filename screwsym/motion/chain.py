@@ -227,8 +227,8 @@ class Chain(ScrewsymBasic):
         With ``inertias=True`` the chain also carries each moving body's
         :class:`~screwsym.core.inertia.SpatialInertia`, in the space frame at
         home (:func:`screwsym.motion.urdf.read_inertials`), for the dynamics;
-        a moving body without mass, or with an inertia that is provably not
-        physical, is then an error naming its joint.  By default
+        a moving body without mass is then an error naming its joint, a link
+        with an inertia that is provably not physical one naming the link.  By default
         (``inertias=False``) the kinematics alone are read, since many URDF
         files leave links without mass.
 
@@ -251,13 +251,10 @@ class Chain(ScrewsymBasic):
                     f"source: the body moved by joint {body.joint!r} ({', '.join(body.links)}) "
                     "has no mass; pass inertias=False to read the kinematics alone"
                 )
-            try:
-                bodies.append(SpatialInertia(body.mass, body.com, body.inertia))
-            except ValueError as exc:
-                raise ValueError(
-                    f"source: the inertia of the body moved by joint {body.joint!r}: {exc} "
-                    "(inertias=False reads the kinematics alone)"
-                ) from None
+            # read_inertials checked each link's inertia where the file writes it (rational
+            # entries); turned and summed (parallel axes) they stay physical: not checked again
+            # on the turned entries (sines of the file's angles: minutes for SymPy's signs)
+            bodies.append(SpatialInertia._new(body.mass, body.com, body.inertia))
         return cls(read.twists, read.home, bodies)._with_recognised(read.recognised)
 
     def _with_recognised(self, recognised: tuple[RecognisedAngle, ...]) -> Self:
