@@ -54,11 +54,12 @@ from typing import Any, NamedTuple
 
 import mpmath  # type: ignore[import-untyped]  # SymPy's dependency: pi to any precision
 import numpy as np
-from sympy import QQ, Dummy, Expr, Pow, Rational, S, cos, expand_trig, pi, sin, sqrt
+from sympy import QQ, Dummy, Expr, Float, Pow, Rational, S, cos, expand_trig, pi, sin, sqrt
 from sympy.core.sorting import default_sort_key
 from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
 from sympy.polys.rings import ring
 
+from ..algebra.budget import charge
 from ..algebra.circle import reduce_powers
 from ..algebra.numberfield import reduce_surds, surd_split
 
@@ -82,6 +83,9 @@ _ULPS = 4
 _DECIMAL = re.compile(r"([+-]?)([0-9]*)(?:\.([0-9]*))?(?:[eE]([+-]?[0-9]+))?", re.ASCII)
 
 
+#: units of the budget (screwsym.algebra.budget, about a microsecond each) charged per term
+#: of an expanded entry in constant_trig_normal (its conversion and reduction, measured)
+_UNITS_PER_TERM = 100
 #: an angle up to this many times another is written through it (constant_trig_normal)
 _MULTIPLE = 4
 
@@ -310,7 +314,7 @@ def constant_trig_normal(entries: Sequence[Expr]) -> list[Expr] | None:
     atoms = set()
     for e in entries:
         atoms |= {a for a in e.atoms(sin, cos) if not a.free_symbols}
-    if not atoms:
+    if not atoms or any(e.has(Float) for e in entries):  # a float is not made a rational
         return None
     angles = sorted({a.args[0] for a in atoms}, key=default_sort_key)
     gens: list[Expr] = []
@@ -360,6 +364,7 @@ def constant_trig_normal(entries: Sequence[Expr]) -> list[Expr] | None:
             P = R.from_expr(e) if e.free_symbols else R(QQ.from_sympy(e))
         except (CoercionFailed, GeneratorsError, PolynomialError, ValueError):
             return None
+        charge(_UNITS_PER_TERM * len(P.terms()))  # the bound of the call under way (from_urdf)
         if surds:
             P = reduce_surds(P, surds)
         P = reduce_powers(P, pairs)

@@ -45,6 +45,7 @@ import numpy as np
 from sympy import Expr, ImmutableMatrix, Rational, Tuple
 from sympy.matrices import MatrixBase
 
+from ..algebra.budget import BUDGET
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_choice,
@@ -209,7 +210,7 @@ class Chain(ScrewsymBasic):
     @classmethod
     def from_urdf(cls, source: Any, base: str | None = None, tip: str | None = None, *,
                   angles: str = "pi/12", angle_tol: ScalarLike | None = None,
-                  inertias: bool = False) -> Chain:
+                  inertias: bool = False, budget: int = BUDGET) -> Chain:
         r"""The chain of the serial path from link ``base`` to link ``tip`` of a URDF robot.
 
         ``source`` is a file path or the XML text.  Numbers are read exactly
@@ -230,7 +231,8 @@ class Chain(ScrewsymBasic):
         a moving body without mass is then an error naming its joint, a link
         with an inertia that is provably not physical one naming the link.  By default
         (``inertias=False``) the kinematics alone are read, since many URDF
-        files leave links without mass.
+        files leave links without mass.  ``budget`` bounds the exact arithmetic
+        of the reading (:func:`screwsym.motion.urdf.read_urdf`).
 
         >>> from screwsym.motion.urdf import TWO_LINK_URDF
         >>> Chain.from_urdf(TWO_LINK_URDF, angles="exact").n_joints
@@ -241,7 +243,7 @@ class Chain(ScrewsymBasic):
         ValueError: source: the body moved by joint 'shoulder' (upper) has no mass; pass inertias=False to read the kinematics alone
         """
         read = read_urdf(source, base, tip, angles=angles, angle_tol=angle_tol,
-                         inertials=check_flag(inertias, "inertias"))
+                         inertials=check_flag(inertias, "inertias"), budget=budget)
         if read.inertials is None:
             return cls(twists=read.twists, home=read.home)._with_recognised(read.recognised)
         bodies = []

@@ -69,12 +69,15 @@ import os
 import re
 import stat
 import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, NamedTuple
 
-from sympy import Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
+from sympy import Add, Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
 
-from ..core.checks import check_scalar
+from ..algebra.budget import BUDGET, OverBudget, case_budget, charge
+from ..core.checks import check_count, check_scalar
 from ..core.inertia import check_inertia_tensor
 from ..core.screw import ScalarLike
 from ..core.tidy import tidy
@@ -102,6 +105,8 @@ MAX_EXPONENT = 300
 _LARGEST_ANGLE = 10**4
 #: an angle this close to a multiple, but not recognised, is warned about
 _NEAR_MISS = 1e-3
+#: units of the budget (about a microsecond each) per product of two terms in a frame product
+_UNITS_PER_PRODUCT = 200
 #: the joint types on a path
 _MOVING = ("revolute", "continuous", "prismatic")
 _SUPPORTED = _MOVING + ("fixed",)
@@ -200,6 +205,20 @@ class _AnglePolicy:
         warn_recognised(self.report(), self.n or 12, stacklevel=4)
 
 
+@contextmanager
+def _bounded(budget: int, name: str) -> Iterator[None]:
+    """The frames' exact arithmetic within ``budget`` (:mod:`screwsym.algebra.budget`)."""
+    with case_budget(budget, name):
+        try:
+            yield
+        except OverBudget:
+            raise ValueError(
+                f"{name}: the exact arithmetic of the file's frames needs more than budget={budget} "
+                "units (sines of many angles that are no multiple of pi/12: they are kept exact); "
+                "pass a larger budget"
+            ) from None
+
+
 def _exact(M: ImmutableMatrix) -> ImmutableMatrix:
     """``M`` in a normal form that does not grow from frame to frame.
 
@@ -216,7 +235,13 @@ def _exact(M: ImmutableMatrix) -> ImmutableMatrix:
 
 
 def _product(A: ImmutableMatrix, B: ImmutableMatrix) -> ImmutableMatrix:
-    """``A B`` in :func:`_exact`'s normal form."""
+    """``A B`` in :func:`_exact`'s normal form, its expansion charged to the budget first."""
+    a = [len(Add.make_args(e)) for e in A]
+    b = [len(Add.make_args(e)) for e in B]
+    if max(a) > 1 and max(b) > 1:
+        charge(_UNITS_PER_PRODUCT * sum(a[i * A.cols + k] * b[k * B.cols + j]
+                                        for i in range(A.rows) for j in range(B.cols)
+                                        for k in range(A.cols)))
     return _exact(A * B)
 
 
@@ -516,7 +541,8 @@ def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None =
     """
     policy = _AnglePolicy(angles, angle_tol)
     robot = _Robot(source)
-    twists, home = _twists_and_home(robot, *robot.path(base, tip), policy)
+    with _bounded(BUDGET, "urdf_twists_and_home"):
+        twists, home = _twists_and_home(robot, *robot.path(base, tip), policy)
     policy.warn()
     return twists, home
 
@@ -628,7 +654,8 @@ def read_inertials(source: Any, base: str | None = None, tip: str | None = None,
     policy = _AnglePolicy(angles, angle_tol)
     robot = _Robot(source)
     _, _, joints = robot.path(base, tip)
-    out = _inertials(robot, joints, policy)
+    with _bounded(BUDGET, "read_inertials"):
+        out = _inertials(robot, joints, policy)
     policy.warn()
     return out
 
@@ -698,13 +725,16 @@ class UrdfRobot(NamedTuple):
 
 def read_urdf(source: Any, base: str | None = None, tip: str | None = None, *,
               angles: str = "pi/12", angle_tol: ScalarLike | None = None,
-              inertials: bool = False) -> UrdfRobot:
+              inertials: bool = False, budget: int = BUDGET) -> UrdfRobot:
     r"""Read the file once: twists and home, the inertials if asked, and the recognised angles.
 
     What :meth:`Chain.from_urdf <screwsym.motion.chain.Chain.from_urdf>` uses:
     :func:`urdf_twists_and_home` and :func:`read_inertials` in one parse, with
     one :class:`~screwsym.motion.angles.RecognisedAngleWarning` listing every
-    angle recognised (the same angle of a joint is listed once).
+    angle recognised (the same angle of a joint is listed once).  The exact
+    arithmetic of the frames is bounded by ``budget`` (units of polynomial
+    arithmetic, :mod:`screwsym.algebra.budget`; a file with many angles that are
+    no multiple of pi/12 can pass it): past it, a ``ValueError``.
 
     >>> import warnings
     >>> from screwsym.motion.angles import RecognisedAngleWarning
@@ -717,10 +747,12 @@ def read_urdf(source: Any, base: str | None = None, tip: str | None = None, *,
     [('1.5707963267948966', pi/2)]
     """
     policy = _AnglePolicy(angles, angle_tol)
+    budget = check_count(budget, "budget")
     robot = _Robot(source)
     base, tip, joints = robot.path(base, tip)
-    twists, home = _twists_and_home(robot, base, tip, joints, policy)
-    bodies = _inertials(robot, joints, policy) if inertials else None
+    with _bounded(budget, "from_urdf"):
+        twists, home = _twists_and_home(robot, base, tip, joints, policy)
+        bodies = _inertials(robot, joints, policy) if inertials else None
     policy.warn()
     return UrdfRobot(tuple(twists), home, bodies, policy.report())
 

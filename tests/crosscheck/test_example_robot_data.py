@@ -73,7 +73,10 @@ ARMS = {
     "z1": ("z1_description/urdf/z1.urdf", None),
 }
 #: M and tau of these take a few seconds each (the slow set)
-SLOW_DYNAMICS = {"panda", "kinova"}
+SLOW_DYNAMICS = {"panda", "kinova", "so100"}
+#: FK and J at floats of these take a few seconds each (the slow set): the SO-100's six frames
+#: hold the sines of three angles that are no multiple of pi/12
+SLOW_KINEMATICS = {"so100"}
 STATES = 2
 TOL = 1e-9
 
@@ -164,7 +167,8 @@ def kinematics(name, chain, q):
     return numeric(chain.forward(floats(q)).matrix), numeric(chain.jacobian(floats(q)))
 
 
-@pytest.mark.parametrize("name", list(ARMS))
+@pytest.mark.parametrize("name", [pytest.param(name, marks=[pytest.mark.slow] * (name in SLOW_KINEMATICS))
+                                  for name in ARMS])
 def test_forward_kinematics_and_jacobian_against_pinocchio(name):
     chain, ref = read(name), Pinocchio(name)
     assert chain.n_joints == len(ref.joints) >= 2
