@@ -310,7 +310,7 @@ class _Engine:
         """A frame ``F_k = (R_k, o_k)`` per joint with ``$_k = Ad(F_k) $_z``, or None.
 
         ``R_k = [x, z x x, z]`` for the joint's unit direction ``z`` and the first of the
-        previous frame's ``x``, ``y``, ``z`` and the base's unit vectors that is orthogonal to ``z``
+        previous frame's ``x``, ``y``, the base's unit vectors and the previous ``z`` that is orthogonal to ``z``
         (decided modulo the circles); ``o_k`` is the foot of the perpendicular from the
         previous origin onto the axis (a revolute joint) or the previous origin (prismatic).
         """
@@ -325,9 +325,10 @@ class _Engine:
             candidates = list(units)
             if frames:
                 Rp = frames[-1][0]
-                # its x, y, and its z (an axis at right angles to the previous one's, as a
-                # robot file's wrist has: the SO-100's gripper)
-                candidates[:0] = [[Rp[i][c] for i in range(3)] for c in range(3)]
+                candidates[:0] = [[Rp[i][0] for i in range(3)], [Rp[i][1] for i in range(3)]]
+                # last, its z: an axis at right angles to the previous one's, turned by a
+                # constant angle about it (a robot file's wrist: the SO-100's gripper)
+                candidates.append([Rp[i][2] for i in range(3)])
             x = next((c for c in candidates if not self._reduce(_dot(c, z))), None)
             if x is None:
                 return None
