@@ -101,3 +101,22 @@ def test_so_arm_reading_keeps_the_files_angles():
     # 1.57079 is pi/2 truncated, not a printing of it: kept exact, never pi/2
     assert not any(t.matrix.has(pi) for t in chain.twists)
     assert any(t.matrix.has(cos(B)) for t in chain.twists)
+
+
+def test_spatial_inertia_decides_signs_of_constant_sines_by_certified_evaluation():
+    from screwsym.core.inertia import SpatialInertia
+
+    Rx = ImmutableMatrix([[1, 0, 0], [0, cos(A), -sin(A)], [0, sin(A), cos(A)]])
+    Ry = ImmutableMatrix([[cos(B), 0, sin(B)], [0, 1, 0], [-sin(B), 0, cos(B)]])
+    R = Rx * Ry
+
+    def turned(*moments):
+        return R * ImmutableMatrix.diag(*moments) * R.T
+
+    body = SpatialInertia(2, [0, 0, 0], turned(1, 2, 2))          # physical: accepted
+    assert _same_number(body.inertia.trace(), 5)
+    SpatialInertia(2, [0, 0, 0], turned(0, 1, 1))                  # a rod: det = 0, not syntactically
+    with pytest.raises(ValueError, match="triangle"):
+        SpatialInertia(2, [0, 0, 0], turned(1, 1, 3))              # 1 + 1 < 3
+    with pytest.raises(ValueError, match="positive semi-definite"):
+        SpatialInertia(2, [0, 0, 0], turned(1, -Rational(1, 10**20), 1))  # a tiny negative moment
