@@ -117,6 +117,8 @@ def exp6(twist: ScrewLike, theta: ScalarLike) -> Transform:
     if is_zero_vector(omega) is True:
         return Transform._new(ImmutableMatrix.eye(3), theta * v)
     ww = omega.dot(omega)
+    if ww.is_number:  # numbers in Q(sqrt 2, sqrt 3): a unit axis at 15 degrees gives 1, not a
+        ww = tidy(ww)  # sum of squares of sums of roots (and no sqrt of it in every angle)
     turn = rotation_minus_identity(omega, theta, sqrt(ww))  # R - I, digits kept for floats
     R = ImmutableMatrix.eye(3) + turn
     r = foot_point(omega, v)
