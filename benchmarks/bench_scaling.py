@@ -473,6 +473,42 @@ def growth_rows(limit: float, kinematics_only: bool = False) -> None:
         table("mass matrix, URDF at 15-degree multiples", range(2, 6), read_inertias, mass, mass_plain)
 
 
+def dynamics15_rows(limit: float) -> None:
+    """Per added joint, a URDF at 15-degree multiples with symbolic joint variables: the closed
+    forms (mass matrix, inverse dynamics: the ring of ``_ring_dynamics``) beside the
+    straight-line programs of ``Chain.dynamics_program`` (customised Newton-Euler), CPU s and
+    the size of each (count_ops of the closed form, operations of the program)."""
+    if not importlib.util.find_spec("defusedxml"):
+        return
+    print("\nDynamics of a k-joint URDF at 15-degree multiples, symbolic q, qd, qdd: CPU s (size)\n")
+    print("| joints | mass_matrix(q) | inverse_dynamics(q, qd, qdd) | program: mass matrix | "
+          "program: inverse dynamics |")
+    print("|---|---|---|---|---|")
+    for k in range(2, 8):
+        _, chain = cpu_timed(lambda k=k: Chain.from_urdf(urdf_15(k), angles="pi/12", inertias=True), limit)
+        if chain is None:
+            print(f"| {k} | building the chain: > {limit:g} (stopped) |")
+            continue
+        q, qd, qdd = (list(symbols(f"{x}1:{k + 1}", real=True)) for x in ("q", "qd", "qdd"))
+        cells = []
+        def program_size(p):
+            return sum(p.operations())
+
+        steps = (("mass_matrix", count_ops), ("inverse_dynamics", count_ops),
+                 ("program mass_matrix", program_size), ("program inverse_dynamics", program_size))
+        for what, size in steps:
+            def run(what=what, chain=chain, q=q, qd=qd, qdd=qdd):
+                if what == "mass_matrix":
+                    return chain.mass_matrix(q)
+                if what == "inverse_dynamics":
+                    return chain.inverse_dynamics(q, qd, qdd)
+                return chain.dynamics_program(what.split()[1])
+
+            t, out = cpu_timed(run, limit)
+            cells.append(f"> {limit:g} (stopped)" if t is None else f"{t:.2f} ({size(out):,})")
+        print(f"| {k} | " + " | ".join(cells) + " |", flush=True)
+
+
 def pose_rows(limit: float) -> None:
     """The spatial 6-link chain at a pose of 15-degree multiples (numbers in Q(sqrt 2, sqrt 3),
     as issue 33's Kinova): mass matrix, and inverse dynamics with symbolic rates."""
@@ -496,8 +532,13 @@ def main(argv=None) -> None:
     parser.add_argument("--pose", action="store_true", help="only the 6-link chain at a 15-degree pose")
     parser.add_argument("--kinematics", action="store_true",
                         help="only the FK + J tables of --growth, with the straight-line program column")
+    parser.add_argument("--dynamics15", action="store_true",
+                        help="only the dynamics of URDFs at 15-degree multiples, closed forms and programs")
     parser.add_argument("--limit", type=float, default=20.0, help="CPU seconds per row of --growth")
     args = parser.parse_args(argv)
+    if args.dynamics15:
+        dynamics15_rows(args.limit)
+        return
     parser_pose = args.pose
     if parser_pose:
         pose_rows(args.limit)

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import random
 from functools import lru_cache
+from itertools import combinations
 
 from sympy import (
     QQ,
@@ -44,6 +45,8 @@ __all__ = [
     "surd_split",
     "reduce_surds",
     "surd_normal",
+    "surd_quotient",
+    "SURD_PRIMES",
 ]
 
 
@@ -380,3 +383,62 @@ def _multiply(a: dict, b: dict) -> dict:
                 c *= p
             _merge(out, {tuple(sorted(set(ma) ^ set(mb))): c})
     return out
+
+
+#: a quotient is made a normal form (:func:`surd_quotient`) over at most this many primes' roots
+#: (the inverse is the product of the ``2**k - 1`` conjugates)
+SURD_PRIMES = 4
+
+
+def surd_quotient(e) -> object:
+    """A quotient of numbers built from rationals and square roots of rationals, in the normal
+    form of :func:`surd_normal`; None for any other number, a zero denominator, or more than
+    :data:`SURD_PRIMES` primes under the roots of the denominator.
+
+    The inverse of ``x`` in ``Q(sqrt p_1, ..., sqrt p_k)`` is the product of its conjugates
+    (each ``sqrt p_i -> -sqrt p_i`` for a non-empty set of the ``i``) over the norm ``N(x)``,
+    their product with ``x``: a non-zero rational (the Galois group of the field is
+    ``(Z/2)**k``; Besicovitch 1940 for the independence of the roots).
+
+    >>> from sympy import sqrt
+    >>> surd_quotient(sqrt(2) / (1 + sqrt(3)))
+    -sqrt(2)/2 + sqrt(6)/2
+    >>> surd_quotient(1 / (2 - sqrt(3)) / (2 + sqrt(3)))     # the norm of 2 - sqrt 3 is 1
+    1
+    >>> from sympy import Mul, Pow
+    >>> surd_quotient(Mul(1, Pow((1 + sqrt(2))**2 - 3 - 2*sqrt(2), -1, evaluate=False),
+    ...                   evaluate=False)) is None   # a denominator that is zero
+    True
+    """
+    numer, denom = e.as_numer_denom()
+    primes: dict = {}
+    top = _surd_terms(numer, primes)
+    bottom = _surd_terms(denom, {})
+    if top is None or bottom is None or not bottom:
+        return None
+    inverse = _inverse(bottom)
+    if inverse is None:
+        return None
+    out = []
+    for mono, c in sorted(_multiply(top, inverse).items()):
+        root = 1
+        for p in mono:
+            root *= p
+        out.append(Rational(c) * sqrt(Integer(root)) if root != 1 else Rational(c))
+    return Add(*out)
+
+
+def _inverse(t: dict) -> dict | None:
+    """``1/x`` for ``x`` given as :func:`_surd_terms`' dict (non-zero), by its conjugates."""
+    ps = sorted({p for m in t for p in m})
+    if len(ps) > SURD_PRIMES:
+        return None
+    conjugates: dict = {(): QQ.one}
+    for r in range(1, len(ps) + 1):
+        for flipped in combinations(ps, r):
+            sign = set(flipped)
+            conjugates = _multiply(conjugates, {m: c * (-1) ** len(sign & set(m)) for m, c in t.items()})
+    norm = _multiply(t, conjugates)
+    if set(norm) != {()}:  # pragma: no cover - the norm is rational (Galois theory)
+        return None
+    return {m: c / norm[()] for m, c in conjugates.items()}

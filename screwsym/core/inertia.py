@@ -44,6 +44,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from sympy import Abs, Expr, ImmutableMatrix, S
+from sympy.core.evalf import PrecisionExhausted
 
 from .basic import ScrewsymBasic
 from .checks import (
@@ -72,24 +73,60 @@ __all__ = ["SpatialInertia", "cross_matrix", "PARAMETER_NAMES"]
 PARAMETER_NAMES = ("m", "mc_x", "mc_y", "mc_z", "I_xx", "I_xy", "I_yy", "I_xz", "I_yz", "I_zz")
 
 
+#: digits to which :func:`_certified_negative` evaluates an exact number, and the most it lets
+#: SymPy's evalf work to reach them (an exact zero never reaches them: then "not proved")
+SIGN_DIGITS = 30
+SIGN_MAXPREC = 400
+
+
+def _certified_negative(value: Expr) -> bool:
+    """An exact number proved negative by evaluation with a guaranteed accuracy.
+
+    SymPy's ``evalf(strict=True)`` returns a value with :data:`SIGN_DIGITS` correct digits
+    (its error bounds tracked through the expression) or raises; a non-zero value so
+    evaluated has its sign.  A zero, or a number too close to zero for :data:`SIGN_MAXPREC`
+    bits, is not proved negative (False: accepted, as an undecided symbolic condition is).
+    Bounded where ``value.is_negative`` (SymPy's own evaluation, with simplification) is not:
+    an inertia turned by the sines of a robot file's angles (``cos(9/5)``) took minutes.
+    """
+    if value.is_Rational:
+        return bool(value < 0)
+    try:
+        v = value.evalf(SIGN_DIGITS, strict=True, maxn=SIGN_MAXPREC)
+    except (PrecisionExhausted, ValueError, TypeError):
+        return False
+    return bool(v.is_Float and v < 0)
+
+
 def _provably_negative(value: Expr, scale: Expr) -> bool:
     """``value < 0`` provably: exact numbers exactly, floats beyond the float policy's residue.
 
     A symbolic value is negative only when SymPy's assumptions prove it.
     """
     if value.is_number:
-        if float_tau(value, scale) is not None and is_zero_scaled(value, scale) is True:
-            return False  # a float residue of a zero
-        return bool(value.is_negative)
+        if float_tau(value, scale) is not None:
+            if is_zero_scaled(value, scale) is True:
+                return False  # a float residue of a zero
+            return bool(value.is_negative)
+        return _certified_negative(value)
     return value.is_negative is True
 
 
 def _principal_minors(A: ImmutableMatrix) -> list[tuple[str, Expr, int]]:
-    """The seven principal minors of a 3x3 matrix: ``(name, value, order)``."""
+    """The seven principal minors of a 3x3 matrix: ``(name, value, order)``.
+
+    For numbers the determinant is the cofactor sum as written (evaluated, never expanded:
+    entries with sines of constant angles made Berkowitz's expansion take minutes)."""
     out: list[tuple[str, Expr, int]] = [(f"[{i}, {i}]", A[i, i], 1) for i in range(3)]
     for i, j in ((0, 1), (0, 2), (1, 2)):
         out.append((f"[{i}{j}, {i}{j}]", A[i, i] * A[j, j] - A[i, j] * A[j, i], 2))
-    out.append(("det", A.det(method="berkowitz"), 3))
+    if all(e.is_number for e in A) and not all(e.is_Rational for e in A):
+        det = (A[0, 0] * (A[1, 1] * A[2, 2] - A[1, 2] * A[2, 1])
+               - A[0, 1] * (A[1, 0] * A[2, 2] - A[1, 2] * A[2, 0])
+               + A[0, 2] * (A[1, 0] * A[2, 1] - A[1, 1] * A[2, 0]))
+    else:
+        det = A.det(method="berkowitz")
+    out.append(("det", det, 3))
     return out
 
 
@@ -99,7 +136,9 @@ def _check_psd(A: ImmutableMatrix, name: str, what: str) -> None:
     A symmetric matrix is positive semi-definite exactly when all its principal
     minors are non-negative (not only the leading ones).
     """
-    scale = sum((Abs(e) for e in A), S.Zero)
+    # the size of the entries, for the float policy's residue (floats only: |e| of an exact
+    # entry with sines of constants is costly and unused)
+    scale = sum((Abs(e) for e in A), S.Zero) if float_tau(*A) is not None else S.One
     for label, minor, order in _principal_minors(A):
         if _provably_negative(minor, scale**order):
             raise ValueError(

@@ -348,7 +348,7 @@ class _Engine:
         """A frame ``F_k = (R_k, o_k)`` per joint with ``$_k = Ad(F_k) $_z``, or None.
 
         ``R_k = [x, z x x, z]`` for the joint's unit direction ``z`` and the first of the
-        previous frame's ``x``, ``y`` and the base's unit vectors that is orthogonal to ``z``
+        previous frame's ``x``, ``y``, the base's unit vectors and the previous ``z`` that is orthogonal to ``z``
         (decided modulo the circles); ``o_k`` is the foot of the perpendicular from the
         previous origin onto the axis (a revolute joint) or the previous origin (prismatic).
         """
@@ -364,6 +364,9 @@ class _Engine:
             if frames:
                 Rp = frames[-1][0]
                 candidates[:0] = [[Rp[i][0] for i in range(3)], [Rp[i][1] for i in range(3)]]
+                # last, its z: an axis at right angles to the previous one's, turned by a
+                # constant angle about it (a robot file's wrist: the SO-100's gripper)
+                candidates.append([Rp[i][2] for i in range(3)])
             x = next((c for c in candidates if not self._reduce(_dot(c, z))), None)
             if x is None:
                 return None
@@ -458,12 +461,14 @@ def _circle_forms(matrices: list) -> tuple[dict, list, dict]:
 
     A sine or cosine of ``sum k_i x_i + c`` (integers ``k_i``, symbols ``x_i``) is expanded by the
     angle-sum formulas (``expand_trig``) into a polynomial in ``cos(x_i), sin(x_i)``, each a
-    ``Dummy``; one of any other argument ``u`` is ``cos(u)`` or ``sin(u)`` of its own base ``u``.
+    ``Dummy``; one of any other argument ``u`` (a constant angle such as ``9/5`` included: an
+    angle of a robot file that is no multiple of pi/12) is ``cos(u)`` or ``sin(u)`` of its own
+    base ``u``.
     Returns the replacements, the bases (sorted) and ``base -> (cos Dummy, sin Dummy)``.
     """
     atoms: set = set()
     for M in matrices:
-        atoms |= {a for a in M.atoms(sin, cos) if a.free_symbols}
+        atoms |= M.atoms(sin, cos)  # of symbols, or of a constant angle (cos(9/5) of a file)
     if not atoms:
         return {}, [], {}
     linear = {a: _linear(a.args[0]) for a in atoms}

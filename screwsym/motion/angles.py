@@ -54,10 +54,18 @@ from typing import Any, NamedTuple
 
 import mpmath  # type: ignore[import-untyped]  # SymPy's dependency: pi to any precision
 import numpy as np
-from sympy import Expr, Rational, S, cos, pi, sin
+from sympy import QQ, Dummy, Expr, Float, Pow, Rational, S, cos, expand_trig, pi, sin, sqrt
+from sympy.core.sorting import default_sort_key
+from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
+from sympy.polys.rings import ring
+
+from ..algebra.budget import charge
+from ..algebra.circle import reduce_powers
+from ..algebra.numberfield import reduce_surds, surd_split
 
 __all__ = ["RecognisedAngle", "RecognisedAngleWarning", "recognise_decimal", "recognise_float",
-           "recognise_trig_float", "angle_step", "warn_recognised", "MIN_PLACES", "TRIG_TOL", "NOISE"]
+           "recognise_trig_float", "angle_step", "warn_recognised", "constant_trig_normal",
+           "MIN_PLACES", "TRIG_TOL", "NOISE"]
 
 #: the noise of double arithmetic on angles up to a turn: 4 units in the last place of a double
 #: at 2 pi (about 3.6e-15); a decimal this close to k pi/N (0 included: ``-5.19179e-17``, as a
@@ -74,6 +82,12 @@ _LARGEST = 10**4
 _ULPS = 4
 _DECIMAL = re.compile(r"([+-]?)([0-9]*)(?:\.([0-9]*))?(?:[eE]([+-]?[0-9]+))?", re.ASCII)
 
+
+#: units of the budget (screwsym.algebra.budget, about a microsecond each) charged per term
+#: of an expanded entry in constant_trig_normal (its conversion and reduction, measured)
+_UNITS_PER_TERM = 100
+#: an angle up to this many times another is written through it (constant_trig_normal)
+_MULTIPLE = 4
 
 _PI_OVER = re.compile(r"pi/([1-9][0-9]{0,3})", re.ASCII)
 
@@ -266,3 +280,93 @@ def recognise_trig_float(value: float, n: int = 12) -> Expr | None:
     x = float(value)
     best = min(_trig_values(n), key=lambda fv: abs(fv[0] - x))
     return best[1] if abs(best[0] - x) <= TRIG_TOL else None
+
+
+def constant_trig_normal(entries: Sequence[Expr]) -> list[Expr] | None:
+    r"""Numbers built from sines and cosines of constant angles, in one expanded normal form.
+
+    A robot file whose angles are no multiple of pi/12 (``-1.8``, ``0.0486795``: the
+    SO-100 arm) holds ``cos(9/5)``, ``sin(9/5)``, ... in its frames: transcendental
+    numbers, which SymPy keeps as products nested one level per frame.  Here each pair
+    ``cos(a), sin(a)`` of a constant angle ``a`` is a pair of ring generators ``c, s``
+    on the circle ``c**2 + s**2 = 1`` (as the joint angles are in the product of
+    exponentials), square roots of primes are generators with ``r**2 = p``, and the
+    entries are expanded and reduced modulo those relations (every ``s**k``, ``k >= 2``,
+    made ``s**(k mod 2) (1 - c**2)**(k // 2)``; the relations' leading terms are
+    coprime, a Groebner basis): a polynomial of bounded degree in each pair, flat, so that
+    the next product does not nest it again.  Every step is an identity, so each entry
+    is the number it was given.  An angle that is 2, 3 or 4 times another (as written)
+    is given by the multiple-angle formulas; other distinct angles are taken as
+    independent: the form is then not unique, but always exact.
+
+    Returns None when there is no sine or cosine of a constant angle, or when an entry
+    is not such a polynomial (a quotient by one, a float, pi, ...): the caller keeps its
+    own arithmetic.
+
+    >>> from sympy import Rational, cos, sin
+    >>> from screwsym.motion.angles import constant_trig_normal
+    >>> a = Rational(9, 5)
+    >>> constant_trig_normal([(cos(a)*cos(a) - sin(a)*sin(a))*cos(a) + 2*sin(a)**2*cos(a)])
+    [cos(9/5)]
+    >>> constant_trig_normal([Rational(1, 2)]) is None
+    True
+    """
+    atoms = set()
+    for e in entries:
+        atoms |= {a for a in e.atoms(sin, cos) if not a.free_symbols}
+    if not atoms or any(e.has(Float) for e in entries):  # a float is not made a rational
+        return None
+    angles = sorted({a.args[0] for a in atoms}, key=default_sort_key)
+    gens: list[Expr] = []
+    forward: dict[Expr, Expr] = {}
+    bases: list[Expr] = []
+    for b in angles:
+        # an angle that is a small multiple of another (3.14158 = 2 x 1.57079 in so100.urdf):
+        # its sine and cosine by the multiple-angle formulas, no pair of its own
+        a = next((a for a in bases if (b / a).is_Integer and 2 <= abs(b / a) <= _MULTIPLE), None)
+        if a is not None:
+            x = Dummy("x")
+            i = bases.index(a)
+            on = {cos(x): gens[2 * i], sin(x): gens[2 * i + 1]}
+            k = b / a
+            forward[cos(b)] = expand_trig(cos(k * x)).xreplace(on)
+            forward[sin(b)] = expand_trig(sin(k * x)).xreplace(on)
+            continue
+        c_, s_ = Dummy("c"), Dummy("s")
+        forward[cos(b)], forward[sin(b)] = c_, s_
+        gens += [c_, s_]
+        bases.append(b)
+    pairs = [(2 * i, 2 * i + 1) for i in range(len(bases))]
+    replaced = [e.xreplace(forward) for e in entries]
+    # square roots of rationals (15-degree angles in the same file): a generator per prime
+    roots: dict[int, Expr] = {}
+    surd_of: dict[Expr, Expr] = {}
+    for e in replaced:
+        for p in e.atoms(Pow):
+            if p.exp == S.Half and p.base.is_Rational and p.base > 0 and p not in surd_of:
+                split = surd_split(p.base)
+                if split is None:
+                    return None
+                k, primes = split
+                surd_of[p] = k * math.prod((roots.setdefault(q, Dummy("r")) for q in primes), start=S.One)
+    replaced = [e.xreplace(surd_of) for e in replaced]
+    order = list(roots)
+    gens += [roots[q] for q in order]
+    surds = [(len(gens) - len(order) + i, q) for i, q in enumerate(order)]
+    R, *_ = ring(gens, QQ)
+    back = {d: f for f, d in forward.items()}
+    back.update({roots[q]: sqrt(q) for q in order})
+    out = []
+    for e in replaced:
+        if e.atoms(sin, cos) or any(not x.is_Dummy for x in e.free_symbols):
+            return None
+        try:
+            P = R.from_expr(e) if e.free_symbols else R(QQ.from_sympy(e))
+        except (CoercionFailed, GeneratorsError, PolynomialError, ValueError):
+            return None
+        charge(_UNITS_PER_TERM * len(P.terms()))  # the bound of the call under way (from_urdf)
+        if surds:
+            P = reduce_surds(P, surds)
+        P = reduce_powers(P, pairs)
+        out.append(P.as_expr(*gens).xreplace(back))
+    return out

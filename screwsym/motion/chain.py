@@ -45,6 +45,7 @@ import numpy as np
 from sympy import Expr, ImmutableMatrix, Rational, Tuple
 from sympy.matrices import MatrixBase
 
+from ..algebra.budget import BUDGET
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_choice,
@@ -209,7 +210,7 @@ class Chain(ScrewsymBasic):
     @classmethod
     def from_urdf(cls, source: Any, base: str | None = None, tip: str | None = None, *,
                   angles: str = "pi/12", angle_tol: ScalarLike | None = None,
-                  inertias: bool = False) -> Chain:
+                  inertias: bool = False, budget: int = BUDGET) -> Chain:
         r"""The chain of the serial path from link ``base`` to link ``tip`` of a URDF robot.
 
         ``source`` is a file path or the XML text.  Numbers are read exactly
@@ -227,10 +228,11 @@ class Chain(ScrewsymBasic):
         With ``inertias=True`` the chain also carries each moving body's
         :class:`~screwsym.core.inertia.SpatialInertia`, in the space frame at
         home (:func:`screwsym.motion.urdf.read_inertials`), for the dynamics;
-        a moving body without mass, or with an inertia that is provably not
-        physical, is then an error naming its joint.  By default
+        a moving body without mass is then an error naming its joint, a link
+        with an inertia that is provably not physical one naming the link.  By default
         (``inertias=False``) the kinematics alone are read, since many URDF
-        files leave links without mass.
+        files leave links without mass.  ``budget`` bounds the exact arithmetic
+        of the reading (:func:`screwsym.motion.urdf.read_urdf`).
 
         >>> from screwsym.motion.urdf import TWO_LINK_URDF
         >>> Chain.from_urdf(TWO_LINK_URDF, angles="exact").n_joints
@@ -241,7 +243,7 @@ class Chain(ScrewsymBasic):
         ValueError: source: the body moved by joint 'shoulder' (upper) has no mass; pass inertias=False to read the kinematics alone
         """
         read = read_urdf(source, base, tip, angles=angles, angle_tol=angle_tol,
-                         inertials=check_flag(inertias, "inertias"))
+                         inertials=check_flag(inertias, "inertias"), budget=budget)
         if read.inertials is None:
             return cls(twists=read.twists, home=read.home)._with_recognised(read.recognised)
         bodies = []
@@ -251,13 +253,10 @@ class Chain(ScrewsymBasic):
                     f"source: the body moved by joint {body.joint!r} ({', '.join(body.links)}) "
                     "has no mass; pass inertias=False to read the kinematics alone"
                 )
-            try:
-                bodies.append(SpatialInertia(body.mass, body.com, body.inertia))
-            except ValueError as exc:
-                raise ValueError(
-                    f"source: the inertia of the body moved by joint {body.joint!r}: {exc} "
-                    "(inertias=False reads the kinematics alone)"
-                ) from None
+            # read_inertials checked each link's inertia where the file writes it (rational
+            # entries); turned and summed (parallel axes) they stay physical: not checked again
+            # on the turned entries (sines of the file's angles: minutes for SymPy's signs)
+            bodies.append(SpatialInertia._new(body.mass, body.com, body.inertia))
         return cls(read.twists, read.home, bodies)._with_recognised(read.recognised)
 
     def _with_recognised(self, recognised: tuple[RecognisedAngle, ...]) -> Self:

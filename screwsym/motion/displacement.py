@@ -25,7 +25,7 @@ Lynch & Park, *Modern Robotics*, Cambridge 2017, Section 3.3.3 (Proposition 3.25
 
 from __future__ import annotations
 
-from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, pi, sqrt, zeros
+from sympy import Expr, Float, ImmutableMatrix, S, acos, atan2, cos, pi, sin, sqrt, zeros
 from sympy.core.evalf import prec_to_dps
 
 from ..core.checks import check_instance, check_scalar
@@ -117,14 +117,36 @@ def exp6(twist: ScrewLike, theta: ScalarLike) -> Transform:
     if is_zero_vector(omega) is True:
         return Transform._new(ImmutableMatrix.eye(3), theta * v)
     ww = omega.dot(omega)
+    if ww.is_number:  # numbers in Q(sqrt 2, sqrt 3): a unit axis at 15 degrees gives 1, not a
+        ww = tidy(ww)  # sum of squares of sums of roots (and no sqrt of it in every angle)
     turn = rotation_minus_identity(omega, theta, sqrt(ww))  # R - I, digits kept for floats
     R = ImmutableMatrix.eye(3) + turn
     r = foot_point(omega, v)
     h = pitch_ratio(omega, v)
     p = -turn * r + (h * theta) * omega
+    if _float_with_constants(R, p):
+        # a float angle on a twist holding sines of constant angles (a robot file's -1.8):
+        # the entries are floats; evaluated at the floats' precision, where expanding the
+        # products of those sines would take minutes (the SO-100 arm)
+        dps = prec_to_dps(min(f._prec for f in (*R.atoms(Float), *p.atoms(Float))))
+        # each sine once, with guard digits (evalf would take each again in every term)
+        values = {a: a.evalf(dps + _GUARD) for a in (*R.atoms(sin, cos), *p.atoms(sin, cos))
+                  if not a.free_symbols}
+        return Transform._new(R.xreplace(values).evalf(dps), p.xreplace(values).evalf(dps))
     if all(e.is_number for e in p) or is_zero(ww - 1) is True:
         p = p.applyfunc(lambda e: e.expand())
     return tidy(Transform._new(R, p))
+
+
+#: guard digits of the sines of constant angles in a float displacement (exp6)
+_GUARD = 15
+
+
+def _float_with_constants(R: ImmutableMatrix, p: ImmutableMatrix) -> bool:
+    """Whether every entry is a number, some hold floats and some a sine or cosine of a constant."""
+    entries = [*R, *p]
+    return (all(e.is_number for e in entries) and any(e.has(Float) for e in entries)
+            and any(e.has(sin, cos) for e in entries))
 
 
 def _half_turn(c: Expr) -> bool:

@@ -69,12 +69,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, NamedTuple
 
-from sympy import Dummy, Expr, ImmutableMatrix, S, Symbol, zeros
+from sympy import Dummy, Expr, Float, ImmutableMatrix, S, Symbol, cos, sin, zeros
+from sympy.core.evalf import prec_to_dps
 
 from ..core.checks import check_scalar, check_sequence, check_vector
 from ..core.formulas import bracket, cross_matrix, moved, reciprocal_form
 from ..core.inertia import PARAMETER_NAMES, SpatialInertia, spatial_matrix
 from ..core.tidy import tidy
+from ..core.twist import Twist
 from ._ring_dynamics import ring_mass_matrix, ring_rnea
 from .displacement import exp6
 from .transform import Transform
@@ -166,12 +168,41 @@ def _joint_motions(twists: Sequence[Any], q: Sequence[Expr]) -> list[Transform]:
     return [_step(exp6(t, qi)) for t, qi in zip(twists, q, strict=True)]
 
 
+#: guard digits of the sines of constant angles evaluated at a float state (:func:`_at_floats`)
+GUARD_DIGITS = 15
+
+
+def _at_floats(twists: Sequence[Any], params: Sequence[_Params],
+               state: Sequence[Expr]) -> tuple[list[Any], list[_Params]]:
+    """The chain's sines and cosines of constant angles as floats, at a float state.
+
+    A robot file's angles that are no multiple of pi/12 (the SO-100's ``-1.8``) leave
+    ``cos(9/5)``, ... in the twists and inertias; at a state of floats the torques are
+    floats, and SymPy's products of floats with those exact numbers (kept apart, never
+    collected) took minutes.  Each such sine is evaluated once, to the state's precision
+    and :data:`GUARD_DIGITS` more; anything else (an exact state) is returned as given.
+    """
+    floats = [f for v in state for f in v.atoms(Float)]
+    if not floats:
+        return list(twists), list(params)
+    exprs = [*(t.matrix for t in twists), *(x for P in params for x in (P.m, P.h, P.I_O))]
+    atoms = {a for e in exprs for a in e.atoms(sin, cos) if not a.free_symbols}
+    if not atoms:
+        return list(twists), list(params)
+    dps = prec_to_dps(min(f._prec for f in floats)) + GUARD_DIGITS
+    values = {a: a.evalf(dps) for a in atoms}
+    return ([Twist(t.omega.xreplace(values), t.v_O.xreplace(values)) for t in twists],
+            [_Params(P.m.xreplace(values), P.h.xreplace(values), P.I_O.xreplace(values))
+             for P in params])
+
+
 def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
           qd: Sequence[Expr], qdd: Sequence[Expr], gravity: ImmutableMatrix) -> ImmutableMatrix:
     """The Newton–Euler recursion of the module docstring, in the link frames ``{i}``.
 
     In the ring of the chain (:mod:`._ring_dynamics`) where the chain is in its class, else
     on expressions, each intermediate result tidied."""
+    twists, params = _at_floats(twists, params, [*q, *qd, *qdd, *gravity])
     fast = ring_rnea(twists, Transform.identity(), params, q, qd, qdd, gravity)
     if fast is not None:
         return fast
@@ -266,15 +297,16 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
     inertias = _check_chain(chain)
     n = chain.n_joints
     q = _values(q, "q", n)
-    fast = ring_mass_matrix(chain.twists, Transform.identity(), [_params(b) for b in inertias], q)
+    twists, bodies = _at_floats(chain.twists, [_params(b) for b in inertias], q)
+    fast = ring_mass_matrix(twists, Transform.identity(), bodies, q)
     if fast is not None:  # in the ring of the chain (module docstring)
         return fast
-    E = [tidy(exp6(t, qi)) for t, qi in zip(chain.twists, q, strict=True)]
-    xi = [t.matrix for t in chain.twists]
+    E = [tidy(exp6(t, qi)) for t, qi in zip(twists, q, strict=True)]
+    xi = [t.matrix for t in twists]
     H = [[S.Zero] * n for _ in range(n)]
     composite: _Params | None = None
     for k in reversed(range(n)):
-        P = _params(inertias[k])
+        P = bodies[k]
         if composite is not None:  # links k+1 .. n, carried into frame {k}
             Q = _moved_params(composite, E[k + 1], angles=True)
             P = _Params(P.m + Q.m, _step(P.h + Q.h, True), _step(P.I_O + Q.I_O, True))

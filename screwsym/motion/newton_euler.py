@@ -67,6 +67,7 @@ from sympy import (
     sympify,
 )
 
+from ..algebra.numberfield import surd_quotient
 from ..core.checks import check_choice, check_scalar, check_sequence, check_vector
 from ..core.decide import is_zero_vector
 from ..core.inertia import PARAMETER_NAMES
@@ -269,6 +270,17 @@ def _nearest_on(p: Any, u: Any, p2: Any, u2: Any) -> Any:
     return p + t * u
 
 
+def _exact_number(x: Expr) -> Expr:
+    """``x`` expanded; a number built from square roots by sums, products and quotients (a
+    robot at 15 degrees) in its normal form ``a + b sqrt 2 + c sqrt 3 + d sqrt 6``: the
+    quotients by ``n . n`` below otherwise nest with every frame (a 2-joint program took
+    over 20 s)."""
+    if x.free_symbols:
+        return x.expand()
+    normal = surd_quotient(x)
+    return x if normal is None else normal
+
+
 def _links(chain: Chain) -> tuple[list[_Link], list[Any]]:
     """The joints' twists in their frames ``{i}`` and the frames' offsets (module docstring)."""
     axes = []
@@ -277,7 +289,7 @@ def _links(chain: Chain) -> tuple[list[_Link], list[Any]]:
         if is_zero_vector(w) is True:
             axes.append((None, v))
         else:
-            axes.append((w.cross(v) / w.dot(w), w))
+            axes.append(((w.cross(v) / w.dot(w)).applyfunc(_exact_number), w))
     origins = []
     prev = ImmutableMatrix([0, 0, 0])
     for i, (point, u) in enumerate(axes):
@@ -289,15 +301,15 @@ def _links(chain: Chain) -> tuple[list[_Link], list[Any]]:
                 o = _nearest_on(point, u, axes[i + 1][0], axes[i + 1][1])
             if o is None:
                 o = point + (prev - point).dot(u) / u.dot(u) * u
-        o = o.applyfunc(lambda x: x.expand() if x.free_symbols else x)
+        o = o.applyfunc(_exact_number)
         origins.append(o)
         prev = o
     links = []
     prev = ImmutableMatrix([0, 0, 0])
     for t, o in zip(chain.twists, origins, strict=True):
         w, v = t.matrix[:3, :], t.matrix[3:, :]
-        v_local = (v + w.cross(o)).applyfunc(lambda x: x.expand() if x.free_symbols else x)
-        links.append(_Link(_col(w), _col(v_local), _col(o - prev)))
+        v_local = (v + w.cross(o)).applyfunc(_exact_number)
+        links.append(_Link(_col(w), _col(v_local), _col((o - prev).applyfunc(_exact_number))))
         prev = o
     return links, origins
 

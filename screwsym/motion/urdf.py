@@ -69,16 +69,27 @@ import os
 import re
 import stat
 import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, NamedTuple
 
-from sympy import Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
+from sympy import Add, Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
 
-from ..core.checks import check_scalar
+from ..algebra.budget import BUDGET, OverBudget, case_budget, charge
+from ..core.checks import check_count, check_scalar
+from ..core.inertia import check_inertia_tensor
 from ..core.screw import ScalarLike
 from ..core.tidy import tidy
 from ..core.twist import Twist
-from .angles import MIN_PLACES, RecognisedAngle, angle_step, recognise_decimal, warn_recognised
+from .angles import (
+    MIN_PLACES,
+    RecognisedAngle,
+    angle_step,
+    constant_trig_normal,
+    recognise_decimal,
+    warn_recognised,
+)
 from .transform import Transform
 
 __all__ = ["urdf_twists_and_home", "read_inertials", "read_urdf", "UrdfRobot", "LinkInertial",
@@ -94,6 +105,8 @@ MAX_EXPONENT = 300
 _LARGEST_ANGLE = 10**4
 #: an angle this close to a multiple, but not recognised, is warned about
 _NEAR_MISS = 1e-3
+#: units of the budget (about a microsecond each) per product of two terms in a frame product
+_UNITS_PER_PRODUCT = 200
 #: the joint types on a path
 _MOVING = ("revolute", "continuous", "prismatic")
 _SUPPORTED = _MOVING + ("fixed",)
@@ -192,13 +205,44 @@ class _AnglePolicy:
         warn_recognised(self.report(), self.n or 12, stacklevel=4)
 
 
-def _product(A: ImmutableMatrix, B: ImmutableMatrix) -> ImmutableMatrix:
-    """``A B``, tidied: numbers built from square roots (the frames of a robot at 15-degree
-    multiples, in Q(sqrt 2, sqrt 3)) come out in one normal form ``a + b sqrt 2 + c sqrt 3 +
-    d sqrt 6`` (:mod:`screwsym.algebra.numberfield`, through ``tidy``), so that they do not
-    grow with each frame (a 7-joint robot at 15 degrees: 105 s before, 0.06 s with it).
+@contextmanager
+def _bounded(budget: int, name: str) -> Iterator[None]:
+    """The frames' exact arithmetic within ``budget`` (:mod:`screwsym.algebra.budget`)."""
+    with case_budget(budget, name):
+        try:
+            yield
+        except OverBudget:
+            raise ValueError(
+                f"{name}: the exact arithmetic of the file's frames needs more than budget={budget} "
+                "units (sines of many angles that are no multiple of pi/12: they are kept exact); "
+                "pass a larger budget"
+            ) from None
+
+
+def _exact(M: ImmutableMatrix) -> ImmutableMatrix:
+    """``M`` in a normal form that does not grow from frame to frame.
+
+    Numbers built from square roots (the frames of a robot at 15-degree multiples, in
+    Q(sqrt 2, sqrt 3)) come out as ``a + b sqrt 2 + c sqrt 3 + d sqrt 6``
+    (:mod:`screwsym.algebra.numberfield`, through ``tidy``: a 7-joint robot at 15 degrees,
+    105 s before, 0.06 s with it).  Numbers with sines and cosines of angles that are no
+    multiple of pi/12 (the SO-100's ``-1.8``) are expanded polynomials in those sines and
+    cosines reduced on their circles (:func:`~screwsym.motion.angles.constant_trig_normal`),
+    where ``tidy`` would leave them nested one level deeper per frame.
     """
-    return tidy(A * B)
+    flat = constant_trig_normal(list(M))
+    return tidy(M) if flat is None else ImmutableMatrix(M.rows, M.cols, flat)
+
+
+def _product(A: ImmutableMatrix, B: ImmutableMatrix) -> ImmutableMatrix:
+    """``A B`` in :func:`_exact`'s normal form, its expansion charged to the budget first."""
+    a = [len(Add.make_args(e)) for e in A]
+    b = [len(Add.make_args(e)) for e in B]
+    if max(a) > 1 and max(b) > 1:
+        charge(_UNITS_PER_PRODUCT * sum(a[i * A.cols + k] * b[k * B.cols + j]
+                                        for i in range(A.rows) for j in range(B.cols)
+                                        for k in range(A.cols)))
+    return _exact(A * B)
 
 
 def _compose(A: Transform, B: Transform) -> Transform:
@@ -212,7 +256,7 @@ def _rpy_matrix(r: Expr, p: Expr, y: Expr) -> ImmutableMatrix:
     Rz = ImmutableMatrix([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]])
     Ry = ImmutableMatrix([[cp, 0, sp], [0, 1, 0], [-sp, 0, cp]])
     Rx = ImmutableMatrix([[1, 0, 0], [0, cr, -sr], [0, sr, cr]])
-    return tidy(Rz * Ry * Rx)
+    return _exact(Rz * Ry * Rx)
 
 
 def _origin(element: Any, where: str, policy: _AnglePolicy) -> Transform:
@@ -497,7 +541,8 @@ def urdf_twists_and_home(source: Any, base: str | None = None, tip: str | None =
     """
     policy = _AnglePolicy(angles, angle_tol)
     robot = _Robot(source)
-    twists, home = _twists_and_home(robot, *robot.path(base, tip), policy)
+    with _bounded(BUDGET, "urdf_twists_and_home"):
+        twists, home = _twists_and_home(robot, *robot.path(base, tip), policy)
     policy.warn()
     return twists, home
 
@@ -510,7 +555,7 @@ def _twists_and_home(robot: _Robot, base: str, tip: str, joints: list[_Joint],
         if joint.type in _MOVING:
             direction = _product(T.R, _axis(joint))
             twists.append(Twist.translation(direction) if joint.type == "prismatic"
-                          else Twist.rotation(direction, point=T.p))
+                          else Twist(direction, _exact(T.p.cross(direction))))
     if not twists:
         raise ValueError(f"tip: the path from {base!r} to {tip!r} has no moving joint")
     return twists, T
@@ -552,8 +597,11 @@ def _link_inertial(robot: _Robot, name: str, T: Transform,
         raise ValueError(f"{where}: expected an <inertia> element")
     ixx, ixy, ixz, iyy, iyz, izz = (_number(el.get(k), f"{where} <inertia {k}>") for k in keys)
     I_local = ImmutableMatrix([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]])
+    # physical where the file writes it, in the inertial frame (rational entries: decided
+    # at once); the turn R I R^T keeps the eigenvalues, so the turned inertia is physical too
+    check_inertia_tensor(I_local, f"{where} <inertia>")
     R = frame.R
-    return mass, frame.p, tidy(R * I_local * R.T)
+    return mass, frame.p, _exact(R * I_local * R.T)
 
 
 def read_inertials(source: Any, base: str | None = None, tip: str | None = None, *,
@@ -606,7 +654,8 @@ def read_inertials(source: Any, base: str | None = None, tip: str | None = None,
     policy = _AnglePolicy(angles, angle_tol)
     robot = _Robot(source)
     _, _, joints = robot.path(base, tip)
-    out = _inertials(robot, joints, policy)
+    with _bounded(BUDGET, "read_inertials"):
+        out = _inertials(robot, joints, policy)
     policy.warn()
     return out
 
@@ -654,12 +703,12 @@ def _inertials(robot: _Robot, joints: list[_Joint], policy: _AnglePolicy) -> tup
         if mass == 0:
             com, inertia = zeros(3, 1), zeros(3, 3)
         else:
-            com = tidy(sum((m * c for m, c, _ in pieces), zeros(3, 1)) / mass)
+            com = _exact(sum((m * c for m, c, _ in pieces), zeros(3, 1)) / mass)
             inertia = zeros(3, 3)
             for m, c, I in pieces:
                 d = c - com
                 inertia += I + m * (d.dot(d) * ImmutableMatrix.eye(3) - d * d.T)
-            inertia = tidy(inertia)
+            inertia = _exact(inertia)
         out.append(LinkInertial(joint.name, tuple(link for link, _ in parts), mass,
                                 ImmutableMatrix(com), ImmutableMatrix(inertia)))
     return tuple(out)
@@ -676,13 +725,16 @@ class UrdfRobot(NamedTuple):
 
 def read_urdf(source: Any, base: str | None = None, tip: str | None = None, *,
               angles: str = "pi/12", angle_tol: ScalarLike | None = None,
-              inertials: bool = False) -> UrdfRobot:
+              inertials: bool = False, budget: int = BUDGET) -> UrdfRobot:
     r"""Read the file once: twists and home, the inertials if asked, and the recognised angles.
 
     What :meth:`Chain.from_urdf <screwsym.motion.chain.Chain.from_urdf>` uses:
     :func:`urdf_twists_and_home` and :func:`read_inertials` in one parse, with
     one :class:`~screwsym.motion.angles.RecognisedAngleWarning` listing every
-    angle recognised (the same angle of a joint is listed once).
+    angle recognised (the same angle of a joint is listed once).  The exact
+    arithmetic of the frames is bounded by ``budget`` (units of polynomial
+    arithmetic, :mod:`screwsym.algebra.budget`; a file with many angles that are
+    no multiple of pi/12 can pass it): past it, a ``ValueError``.
 
     >>> import warnings
     >>> from screwsym.motion.angles import RecognisedAngleWarning
@@ -695,10 +747,12 @@ def read_urdf(source: Any, base: str | None = None, tip: str | None = None, *,
     [('1.5707963267948966', pi/2)]
     """
     policy = _AnglePolicy(angles, angle_tol)
+    budget = check_count(budget, "budget")
     robot = _Robot(source)
     base, tip, joints = robot.path(base, tip)
-    twists, home = _twists_and_home(robot, base, tip, joints, policy)
-    bodies = _inertials(robot, joints, policy) if inertials else None
+    with _bounded(budget, "from_urdf"):
+        twists, home = _twists_and_home(robot, base, tip, joints, policy)
+        bodies = _inertials(robot, joints, policy) if inertials else None
     policy.warn()
     return UrdfRobot(tuple(twists), home, bodies, policy.report())
 

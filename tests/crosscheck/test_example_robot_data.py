@@ -14,11 +14,9 @@ The states are floats (``sympy.Float``): the exact chain evaluated at them.
 The default run has FK and J for every arm and M and tau for the quick ones; M and tau of the
 7-joint Panda and the Kinova (a few seconds each) are in the slow set.  The SO-100 and SO-101
 files have angles that are no multiple of pi/12 (``-1.8``, ``0.0486795``, ``1.57079``: pi/2
-truncated, not rounded); their chains hold sines of those numbers, and reading their inertias
-(``inertias=True``) does not finish in a minute (the physical check of each inertia in
-``screwsym.core.inertia`` with such entries): their M and tau are skipped, with that reason, and their FK and J are the product of
-exponentials of the chain's twists evaluated to floats (modern_robotics), as
-``Chain.forward`` at floats on such entries does not finish in a minute either.
+truncated, not rounded), read exactly: their chains hold sines and cosines of those numbers
+(kept as ring generators on their circles, ``screwsym.motion.angles.constant_trig_normal``),
+and they are compared like the others.
 """
 
 from __future__ import annotations
@@ -36,7 +34,6 @@ from screwsym import Chain
 
 pin = pytest.importorskip("pinocchio")
 pytest.importorskip("defusedxml")
-mr = pytest.importorskip("modern_robotics")
 
 from screwsym.motion.angles import recognise_decimal  # noqa: E402
 from screwsym.motion.urdf import path_joints  # noqa: E402
@@ -76,9 +73,10 @@ ARMS = {
     "z1": ("z1_description/urdf/z1.urdf", None),
 }
 #: M and tau of these take a few seconds each (the slow set)
-SLOW_DYNAMICS = {"panda", "kinova"}
-#: reading these arms' inertias does not finish (see the module docstring)
-NO_DYNAMICS = {"so100", "so101"}
+SLOW_DYNAMICS = {"panda", "kinova", "so100"}
+#: FK and J at floats of these take a few seconds each (the slow set): the SO-100's six frames
+#: hold the sines of three angles that are no multiple of pi/12
+SLOW_KINEMATICS = {"so100"}
 STATES = 2
 TOL = 1e-9
 
@@ -165,18 +163,12 @@ def numeric(m):
 
 
 def kinematics(name, chain, q):
-    """The chain's tip pose and space Jacobian at the float state ``q``: Chain.forward and
-    Chain.jacobian at Floats; for the SO arms (sines of non-multiples in every entry, where
-    those calls do not finish in a minute) the product of exponentials of the chain's twists
-    and home, evaluated to floats, by modern_robotics (FKinSpace, JacobianSpace)."""
-    if name not in NO_DYNAMICS:
-        return numeric(chain.forward(floats(q)).matrix), numeric(chain.jacobian(floats(q)))
-    M = numeric(chain.home.matrix.evalf(30))
-    S = np.array([numeric(t.matrix.evalf(30)).ravel() for t in chain.twists]).T
-    return mr.FKinSpace(M, S, np.asarray(q)), mr.JacobianSpace(S, np.asarray(q))
+    """The chain's tip pose and space Jacobian at the float state ``q``."""
+    return numeric(chain.forward(floats(q)).matrix), numeric(chain.jacobian(floats(q)))
 
 
-@pytest.mark.parametrize("name", list(ARMS))
+@pytest.mark.parametrize("name", [pytest.param(name, marks=[pytest.mark.slow] * (name in SLOW_KINEMATICS))
+                                  for name in ARMS])
 def test_forward_kinematics_and_jacobian_against_pinocchio(name):
     chain, ref = read(name), Pinocchio(name)
     assert chain.n_joints == len(ref.joints) >= 2
@@ -202,9 +194,6 @@ def _dynamics_params():
         marks = []
         if name in SLOW_DYNAMICS:
             marks.append(pytest.mark.slow)
-        if name in NO_DYNAMICS:
-            marks.append(pytest.mark.skip(reason="inertias=True does not finish: the inertia check "
-                                          "of core/inertia.py on sines of non-multiples of pi/12"))
         out.append(pytest.param(name, marks=marks))
     return out
 
