@@ -1,4 +1,5 @@
-r"""Rigid motions, SE(3): transforms, exp6/log6 of twists, serial chains, their dynamics, conventions.
+r"""Rigid motions, SE(3): transforms, exp6/log6 of twists, serial chains, their dynamics, conventions,
+the Paden–Kahan subproblems.
 
 Built on :mod:`screwsym.core` alone (Lynch & Park, *Modern Robotics*; Murray,
 Li & Sastry).  A sibling of :mod:`screwsym.systems`: neither imports the other.
@@ -24,6 +25,7 @@ from .parameters import (
     base_values,
     parameters,
 )
+from .subproblems import Branch, subproblem1, subproblem2, subproblem3
 from .transform import Transform, adjoint_matrix, skew
 
 __all__ = [
@@ -56,4 +58,8 @@ __all__ = [
     "convert_from",
     "CONVENTIONS",
     "Convention",
+    "Branch",
+    "subproblem1",
+    "subproblem2",
+    "subproblem3",
 ]

@@ -1,0 +1,402 @@
+"""The Paden–Kahan subproblems: every branch, its condition, the degenerate cases.
+
+References: B. Paden, *Kinematics and Control of Robot Manipulators*, PhD thesis,
+UC Berkeley 1985; R. M. Murray, Z. Li & S. S. Sastry, *A Mathematical Introduction
+to Robotic Manipulation*, CRC Press 1994, Section 3.2.2 (Subproblems 1-3, (3.18)-(3.32)).
+
+Each target point is built by screwsym's own exponential (``exp6``); each answer is
+then checked independently: Rodrigues' formula evaluated in mpmath at 60 digits
+(not screwsym's code), the two sides agreeing to 40 digits.  Each checker is shown
+to reject a perturbed angle.
+"""
+
+from __future__ import annotations
+
+import random
+
+import mpmath
+import pytest
+from sympy import (
+    Dummy,
+    Float,
+    ImmutableMatrix,
+    Rational,
+    S,
+    atan2,
+    lambdify,
+    pi,
+    sqrt,
+    symbols,
+)
+
+from screwsym import Twist, Wrench, exp6
+from screwsym.motion import Branch, subproblem1, subproblem2, subproblem3
+
+DPS = 60
+CLOSE = mpmath.mpf(10) ** -40
+
+#: axis directions: unit, non-unit rational, and surd
+DIRECTIONS = [
+    (0, 0, 1),
+    (Rational(3, 5), Rational(4, 5), 0),
+    (Rational(2, 3), Rational(-1, 3), Rational(2, 3)),
+    (1, 2, 2),  # |omega| = 3: exp6 turns by 3 theta
+    (1, 1, 0),  # |omega| = sqrt(2)
+    (sqrt(2) / 2, 0, sqrt(2) / 2),
+    (1, -1, 3),  # |omega| = sqrt(11)
+]
+
+#: angles with algebraic sines and cosines: multiples of pi/12 and Pythagorean angles
+ANGLES = [pi / 3, -pi / 4, 5 * pi / 6, pi / 12, 7 * pi / 12, atan2(4, 3), -atan2(12, 5),
+          atan2(24, -7), pi / 2 + atan2(8, 15)]
+
+
+def rational(rng: random.Random, lo: int = -9, hi: int = 9) -> Rational:
+    return Rational(rng.randint(lo, hi), rng.randint(1, 4))
+
+
+def point(rng: random.Random) -> ImmutableMatrix:
+    p = [rational(rng) for _ in range(3)]
+    if rng.random() < 0.3:
+        p[rng.randrange(3)] += sqrt(3) / 2
+    return ImmutableMatrix(p)
+
+
+def num(e) -> mpmath.mpf:
+    """The value of the exact number ``e`` at DPS digits, through mpmath."""
+    with mpmath.workdps(DPS):
+        return mpmath.mpf(lambdify([], e, "mpmath")())
+
+
+def rodrigues(omega, r, theta, p) -> list:
+    """``exp6(Twist.rotation(omega, point=r), theta) p`` by Rodrigues' formula in mpmath."""
+    with mpmath.workdps(DPS):
+        w = [num(x) for x in omega]
+        n = mpmath.sqrt(sum(x * x for x in w))
+        k = [x / n for x in w]
+        angle = n * num(theta)
+        x = [num(a) - num(b) for a, b in zip(p, r)]
+        c, s = mpmath.cos(angle), mpmath.sin(angle)
+        kx = sum(a * b for a, b in zip(k, x))
+        cross = [k[1] * x[2] - k[2] * x[1], k[2] * x[0] - k[0] * x[2], k[0] * x[1] - k[1] * x[0]]
+        return [x[i] * c + cross[i] * s + k[i] * kx * (1 - c) + num(r[i]) for i in range(3)]
+
+
+def axis_of(twist):
+    """(omega, a point on the axis) of a twist of pitch 0."""
+    omega = twist.omega
+    return omega, twist.foot
+
+
+def maps(twist, theta, p, q) -> bool:
+    """Whether ``exp6(twist, theta) p = q`` (to 40 digits at 60)."""
+    with mpmath.workdps(DPS):
+        got = rodrigues(*axis_of(twist), theta, p)
+        return all(abs(g - num(e)) < CLOSE for g, e in zip(got, q))
+
+
+def maps2(twist1, twist2, thetas, p, q) -> bool:
+    """Whether ``exp6(twist1, theta1) exp6(twist2, theta2) p = q``."""
+    with mpmath.workdps(DPS):
+        c = rodrigues(*axis_of(twist2), thetas[1], p)
+        got = rodrigues(*axis_of(twist1), thetas[0], [mpmath.mpf(x) for x in c])
+        return all(abs(g - num(e)) < CLOSE for g, e in zip(got, q))
+
+
+def at_distance(twist, theta, p, q, delta) -> bool:
+    """Whether ``|exp6(twist, theta) p - q| = delta``."""
+    with mpmath.workdps(DPS):
+        got = rodrigues(*axis_of(twist), theta, p)
+        d = mpmath.sqrt(sum((g - num(e)) ** 2 for g, e in zip(got, q)))
+        return abs(d - num(delta)) < CLOSE
+
+
+def same_angle(a, b, twist) -> bool:
+    """Whether ``a = b`` modulo the full turn ``2 pi / |omega|`` of ``exp6(twist, .)``."""
+    with mpmath.workdps(DPS):
+        period = 2 * mpmath.pi / mpmath.sqrt(sum(num(x) ** 2 for x in twist.omega))
+        k = (num(a) - num(b)) / period
+        return abs(k - mpmath.nint(k)) < CLOSE
+
+
+def random_twist(rng: random.Random) -> Twist:
+    return Twist.rotation(rng.choice(DIRECTIONS), point=point(rng))
+
+
+def length(omega):
+    return sqrt(sum(x**2 for x in omega))
+
+
+# ------------------------------------------------------------------ the checkers reject
+
+
+def test_the_checkers_reject_a_perturbed_angle():
+    z = Twist.rotation([0, 0, 1], point=[1, 0, 0])
+    p, q = ImmutableMatrix([2, 0, 0]), ImmutableMatrix([1, 1, 0])
+    assert maps(z, pi / 2, p, q)
+    assert not maps(z, pi / 2 + Rational(1, 10**30), p, q)
+    assert not maps(z, -pi / 2, p, q)
+    assert maps2(z, z, (pi / 4, pi / 4), p, q)
+    assert not maps2(z, z, (pi / 4, pi / 4 + Rational(1, 10**30)), p, q)
+    assert at_distance(z, pi / 2, p, [3, 1, 0], 2)
+    assert not at_distance(z, pi / 2 + Rational(1, 10**30), p, [3, 1, 0], 2)
+    assert same_angle(pi / 3, pi / 3 - 2 * pi, z)
+    assert not same_angle(pi / 3, pi / 3 + Rational(1, 10**30), z)
+    assert same_angle(pi / 3, pi / 3 + 2 * pi / 3, Twist.rotation([0, 0, 3], point=[0, 0, 0]))
+
+
+# ------------------------------------------------------------------ Subproblem 1
+
+
+def test_subproblem1_round_trip_exact_inputs():
+    """MLS (3.18)-(3.20): for random axes, points and angles, theta maps p to q."""
+    rng = random.Random(1)
+    for _ in range(12):
+        twist, p = random_twist(rng), point(rng)
+        phi = rng.choice(ANGLES) / length(twist.omega)  # exp6 turns by |omega| phi
+        q = exp6(twist, phi).apply(p)
+        branches = subproblem1(twist, p, q)
+        assert len(branches) == 1
+        (b,) = branches
+        assert b.condition is S.true
+        assert maps(twist, b.values[0], p, q)
+        assert same_angle(b.values[0], phi, twist)
+        # the same answer from the direction and a point of the axis
+        assert subproblem1(twist.omega, p, q, point=twist.foot) == branches
+
+
+def test_subproblem1_exact_values():
+    z = Twist.rotation([0, 0, 1], point=[1, 1, 0])
+    assert subproblem1(z, [2, 1, 7], [1, 2, 7]) == (Branch(S.true, (pi / 2,)),)
+    assert subproblem1(z, [2, 1, 7], [2, 1, 7]) == (Branch(S.true, (0,)),)
+    assert subproblem1(z, [2, 1, 7], [0, 1, 7]) == (Branch(S.true, (pi,)),)
+    # |omega| = 2: exp6 turns by 2 theta, so a quarter turn is theta = pi/4
+    assert subproblem1(Twist.rotation([0, 0, 2], point=[1, 1, 0]), [2, 1, 7], [1, 2, 7]) == (
+        Branch(S.true, (pi / 4,)),)
+
+
+def test_subproblem1_no_solution():
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    assert subproblem1(z, [1, 0, 0], [0, 1, 1]) == ()  # different component along the axis
+    assert subproblem1(z, [1, 0, 0], [0, 2, 0]) == ()  # different distance to the axis
+    assert subproblem1(z, [0, 0, 3], [1, 0, 3]) == ()  # p on the axis, q not
+
+
+def test_subproblem1_point_on_the_axis_leaves_theta_free():
+    axis = Twist.rotation([1, 2, 2], point=[1, 0, 0])
+    (b,) = subproblem1(axis, [2, 2, 2], [2, 2, 2])
+    assert b.condition is S.true
+    (t,) = b.values
+    assert isinstance(t, Dummy) and t.is_real
+    for value in (0, Rational(7, 3), pi / 5):
+        assert maps(axis, value, [2, 2, 2], [2, 2, 2])
+    (b2,) = subproblem1(axis, [2, 2, 2], [2, 2, 2])
+    assert b2.values[0] != t  # a fresh parameter each time
+
+
+def test_subproblem1_symbolic_inputs():
+    x, y, c = symbols("x y c", real=True)
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    branches = subproblem1(z, [x, y, c], [y, -x, c])
+    assert len(branches) == 2  # p off the axis / on it: both conditions symbolic
+    regular, free = branches
+    assert regular.condition.free_symbols == {x, y}
+    assert isinstance(free.values[0], Dummy)
+    at = {x: 3, y: 4, c: 1}
+    assert regular.condition.subs(at) is S.true
+    assert free.condition.subs(at) is S.false
+    assert maps(z, regular.values[0].subs(at), [3, 4, 1], [4, -3, 1])
+    assert free.condition.subs({x: 0, y: 0}) is S.true
+    # a symbolic axis: the condition holds for its numbers, the angle maps
+    a = symbols("a", positive=True)
+    (reg,) = subproblem1(Twist.rotation([0, 0, a], point=[0, 0, 0]), [1, 0, 0], [0, 1, 0])
+    assert reg.condition is S.true
+    assert maps(Twist.rotation([0, 0, 3], point=[0, 0, 0]), reg.values[0].subs(a, 3),
+                [1, 0, 0], [0, 1, 0])
+
+
+def test_subproblem1_bad_input():
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    with pytest.raises(ValueError, match="axis: expected a rotation.*pitch is not 0"):
+        subproblem1(Twist.screw_motion([0, 0, 1], point=[0, 0, 0], pitch=1), [1, 0, 0], [0, 1, 0])
+    h = symbols("h", real=True)
+    with pytest.raises(ValueError, match="axis:.*cannot be decided"):
+        subproblem1(Twist.screw_motion([0, 0, 1], point=[0, 0, 0], pitch=h), [1, 0, 0], [0, 1, 0])
+    with pytest.raises(ValueError, match="axis: expected a rotation.*translation"):
+        subproblem1(Twist.translation([0, 0, 1]), [1, 0, 0], [0, 1, 0])
+    with pytest.raises(TypeError, match="axis: expected a Twist"):
+        subproblem1(Wrench.force([0, 0, 1], point=[0, 0, 0]), [1, 0, 0], [0, 1, 0])
+    with pytest.raises(TypeError, match="point: a direction"):
+        subproblem1([0, 0, 1], [1, 0, 0], [0, 1, 0])
+    with pytest.raises(TypeError, match="point: give it with a direction"):
+        subproblem1(z, [1, 0, 0], [0, 1, 0], point=[0, 0, 0])
+    with pytest.raises(ValueError, match="axis: a rotation axis needs a non-zero direction"):
+        subproblem1([0, 0, 0], [1, 0, 0], [0, 1, 0], point=[0, 0, 0])
+    with pytest.raises(ValueError, match="q: expected exact entries.*float"):
+        subproblem1(z, [1, 0, 0], [0, 1.0, 0])
+    with pytest.raises(ValueError, match="axis: expected exact entries"):
+        subproblem1(Twist.rotation([0, 0, 1.0], point=[0, 0, 0]), [1, 0, 0], [0, 1, 0])
+    with pytest.raises(ValueError, match="p: expected a 3-vector"):
+        subproblem1(z, [1, 0], [0, 1, 0])
+    with pytest.raises(TypeError, match="p:"):
+        subproblem1(z, "1, 0, 0", [0, 1, 0])
+
+
+# ------------------------------------------------------------------ Subproblem 2
+
+
+def random_meeting_pair(rng: random.Random) -> tuple[Twist, Twist]:
+    """Two twists whose axes meet, given by different points of their lines."""
+    while True:
+        d1, d2 = rng.sample(DIRECTIONS, 2)
+        if ImmutableMatrix(d1).cross(ImmutableMatrix(d2)).expand() != ImmutableMatrix([0, 0, 0]):
+            break
+    r = point(rng)
+    return (Twist.rotation(d1, point=r + rational(rng) * ImmutableMatrix(d1)),
+            Twist.rotation(d2, point=r - rational(rng) * ImmutableMatrix(d2)))
+
+
+def test_subproblem2_round_trip_exact_inputs():
+    """MLS (3.24)-(3.28): both branches map p to q, the generating pair is one of them."""
+    rng = random.Random(2)
+    for _ in range(8):
+        t1, t2 = random_meeting_pair(rng)
+        p = point(rng)
+        phi = (rng.choice(ANGLES) / length(t1.omega), rng.choice(ANGLES) / length(t2.omega))
+        q = exp6(t1, phi[0]).apply(exp6(t2, phi[1]).apply(p))
+        branches = subproblem2(t1, t2, p, q)
+        assert len(branches) in (1, 2)
+        for b in branches:
+            assert b.condition is S.true
+            assert maps2(t1, t2, b.values, p, q)
+        assert any(same_angle(b.values[0], phi[0], t1) and same_angle(b.values[1], phi[1], t2)
+                   for b in branches)
+
+
+def test_subproblem2_one_solution_and_none():
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    x = Twist.rotation([1, 0, 0], point=[0, 0, 0])
+    # c = (1, 0, 1) lies in the plane of the axes: g = 0, one solution
+    assert subproblem2(z, x, [1, 1, 0], [0, 1, 1]) == (Branch(S.true, (pi / 2, pi / 2)),)
+    assert maps2(z, x, (pi / 2, pi / 2), [1, 1, 0], [0, 1, 1])
+    assert subproblem2(z, x, [1, 1, 0], [0, 2, 1]) == ()  # |u| != |v|
+    assert subproblem2(z, x, [1, 0, 0], [0, 0, 1]) == ()  # g^2 = -1 < 0: out of reach
+
+
+def test_subproblem2_points_on_the_axes():
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    x = Twist.rotation([1, 0, 0], point=[0, 0, 0])
+    # p on axis 2: theta2 free, theta1 a quarter turn
+    (b,) = subproblem2(z, x, [2, 0, 0], [0, 2, 0])
+    assert b.condition is S.true and b.values[0] == pi / 2 and isinstance(b.values[1], Dummy)
+    assert maps2(z, x, (b.values[0], Rational(5, 7)), [2, 0, 0], [0, 2, 0])
+    # q on axis 1: theta1 free
+    (b,) = subproblem2(z, x, [0, 2, 0], [0, 0, 2])
+    assert isinstance(b.values[0], Dummy) and b.values[1] == pi / 2
+    # p = q = the common point: both free
+    (b,) = subproblem2(z, x, [0, 0, 0], [0, 0, 0])
+    assert all(isinstance(t, Dummy) for t in b.values)
+
+
+def test_subproblem2_directions_with_the_common_point():
+    rng = random.Random(3)
+    t1, t2 = random_meeting_pair(rng)
+    p = point(rng)
+    q = exp6(t1, pi / 3).apply(exp6(t2, -pi / 4).apply(p))
+    r = (t1.foot + (t2.foot - t1.foot).cross(t2.omega).dot(t1.omega.cross(t2.omega))
+         / t1.omega.cross(t2.omega).dot(t1.omega.cross(t2.omega)) * t1.omega)
+    by_twists = subproblem2(t1, t2, p, q)
+    by_point = subproblem2(t1.omega, t2.omega, p, q, point=r)
+    assert len(by_point) == len(by_twists) == 2
+    for b in by_point:
+        assert maps2(t1, t2, b.values, p, q)
+
+
+def test_subproblem2_symbolic_inputs():
+    a, b = symbols("a b", real=True)
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    x = Twist.rotation([1, 0, 0], point=[0, 0, 0])
+    q = ImmutableMatrix([a, b, 1])
+    branches = subproblem2(z, x, [1, 1, 0], q)
+    assert branches and all(br.condition.free_symbols <= {a, b} for br in branches)
+    # at a = 1, b = 0: |u| = |v|, g^2 = 0: the single branch, and it maps
+    at = {a: 0, b: 1}
+    live = [br for br in branches if br.condition.subs(at) is S.true]
+    assert len(live) == 1
+    assert maps2(z, x, [t.subs(at) for t in live[0].values], [1, 1, 0], [0, 1, 1])
+    # where |q| != |p| no branch holds
+    assert all(br.condition.subs({a: 3, b: 0}) is S.false for br in branches)
+
+
+def test_subproblem2_bad_input():
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    with pytest.raises(ValueError, match="axis1, axis2:.*parallel"):
+        subproblem2(z, Twist.rotation([0, 0, 2], point=[1, 0, 0]), [1, 0, 0], [0, 1, 0])
+    with pytest.raises(ValueError, match="axis1, axis2:.*skew"):
+        subproblem2(z, Twist.rotation([1, 0, 0], point=[0, 1, 0]),
+                    [1, 0, 0], [0, 1, 0])
+    with pytest.raises(TypeError, match="axis1, axis2: give two Twists"):
+        subproblem2(z, [1, 0, 0], [1, 0, 0], [0, 1, 0], point=[0, 0, 0])
+    with pytest.raises(ValueError, match="axis2: expected a rotation"):
+        subproblem2(z, Twist.screw_motion([1, 0, 0], point=[0, 0, 0], pitch=2),
+                    [1, 0, 0], [0, 1, 0])
+
+
+# ------------------------------------------------------------------ Subproblem 3
+
+
+def test_subproblem3_round_trip_exact_inputs():
+    """MLS (3.29)-(3.32): every branch puts p at distance delta from q."""
+    rng = random.Random(4)
+    for _ in range(10):
+        twist, p, q = random_twist(rng), point(rng), point(rng)
+        phi = rng.choice(ANGLES) / length(twist.omega)
+        d = exp6(twist, phi).apply(p) - q
+        delta = sqrt(d.dot(d))
+        branches = subproblem3(twist, p, q, delta)
+        assert len(branches) in (1, 2)
+        for b in branches:
+            assert b.condition is S.true
+            assert at_distance(twist, b.values[0], p, q, delta)
+        assert any(same_angle(b.values[0], phi, twist) for b in branches)
+
+
+def test_subproblem3_tangent_free_and_none():
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    (b,) = subproblem3(z, [1, 0, 0], [2, 0, 0], 1)  # the circle touches the sphere
+    assert b.condition is S.true and b.values == (0,)
+    (b,) = subproblem3(z, [1, 0, 0], [3, 0, 0], 4)  # touches on the far side
+    assert at_distance(z, b.values[0], [1, 0, 0], [3, 0, 0], 4) and b.values == (pi,)
+    assert subproblem3(z, [1, 0, 0], [5, 0, 0], 1) == ()  # too far
+    assert subproblem3(z, [1, 0, 0], [0, 0, 0], 2) == ()  # q on the axis, wrong distance
+    # q on the axis: every angle is at the distance sqrt(2)
+    (b,) = subproblem3(z, [1, 0, 0], [0, 0, 1], sqrt(2))
+    assert isinstance(b.values[0], Dummy)
+    assert at_distance(z, Rational(2, 3), [1, 0, 0], [0, 0, 1], sqrt(2))
+    # two solutions, exact
+    assert {b.values[0] for b in subproblem3(z, [1, 0, 0], [1, 1, 0], 1)} == {0, pi / 2}
+
+
+def test_subproblem3_symbolic_delta():
+    delta = symbols("delta", nonnegative=True)
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    branches = subproblem3(z, [1, 0, 0], [2, 0, 0], delta)
+    assert len(branches) == 3  # two, tangent; q and p off the axis: never free
+    for value, alive in ((Rational(3, 2), 2), (1, 1), (3, 1), (4, 0)):
+        live = [b for b in branches if b.condition.subs(delta, value) is S.true]
+        assert len(live) == alive
+        for b in live:
+            assert at_distance(z, b.values[0].subs(delta, value), [1, 0, 0], [2, 0, 0], value)
+
+
+def test_subproblem3_bad_input():
+    z = Twist.rotation([0, 0, 1], point=[0, 0, 0])
+    with pytest.raises(ValueError, match="delta: expected a distance"):
+        subproblem3(z, [1, 0, 0], [2, 0, 0], -1)
+    with pytest.raises(ValueError, match="delta: expected exact entries"):
+        subproblem3(z, [1, 0, 0], [2, 0, 0], Float(0.5))
+    with pytest.raises(ValueError, match="axis: expected a rotation"):
+        subproblem3(Twist.screw_motion([0, 0, 1], point=[0, 0, 0], pitch=1),
+                    [1, 0, 0], [2, 0, 0], 1)
+    with pytest.raises(TypeError, match="delta"):
+        subproblem3(z, [1, 0, 0], [2, 0, 0], "1")
