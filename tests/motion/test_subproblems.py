@@ -75,9 +75,9 @@ def rodrigues(omega, r, theta, p) -> list:
         n = mpmath.sqrt(sum(x * x for x in w))
         k = [x / n for x in w]
         angle = n * num(theta)
-        x = [num(a) - num(b) for a, b in zip(p, r)]
+        x = [num(a) - num(b) for a, b in zip(p, r, strict=True)]
         c, s = mpmath.cos(angle), mpmath.sin(angle)
-        kx = sum(a * b for a, b in zip(k, x))
+        kx = sum(a * b for a, b in zip(k, x, strict=True))
         cross = [k[1] * x[2] - k[2] * x[1], k[2] * x[0] - k[0] * x[2], k[0] * x[1] - k[1] * x[0]]
         return [x[i] * c + cross[i] * s + k[i] * kx * (1 - c) + num(r[i]) for i in range(3)]
 
@@ -92,7 +92,7 @@ def maps(twist, theta, p, q) -> bool:
     """Whether ``exp6(twist, theta) p = q`` (to 40 digits at 60)."""
     with mpmath.workdps(DPS):
         got = rodrigues(*axis_of(twist), theta, p)
-        return all(abs(g - num(e)) < CLOSE for g, e in zip(got, q))
+        return all(abs(g - num(e)) < CLOSE for g, e in zip(got, q, strict=True))
 
 
 def maps2(twist1, twist2, thetas, p, q) -> bool:
@@ -100,14 +100,14 @@ def maps2(twist1, twist2, thetas, p, q) -> bool:
     with mpmath.workdps(DPS):
         c = rodrigues(*axis_of(twist2), thetas[1], p)
         got = rodrigues(*axis_of(twist1), thetas[0], [mpmath.mpf(x) for x in c])
-        return all(abs(g - num(e)) < CLOSE for g, e in zip(got, q))
+        return all(abs(g - num(e)) < CLOSE for g, e in zip(got, q, strict=True))
 
 
 def at_distance(twist, theta, p, q, delta) -> bool:
     """Whether ``|exp6(twist, theta) p - q| = delta``."""
     with mpmath.workdps(DPS):
         got = rodrigues(*axis_of(twist), theta, p)
-        d = mpmath.sqrt(sum((g - num(e)) ** 2 for g, e in zip(got, q)))
+        d = mpmath.sqrt(sum((g - num(e)) ** 2 for g, e in zip(got, q, strict=True)))
         return abs(d - num(delta)) < CLOSE
 
 
