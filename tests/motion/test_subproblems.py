@@ -400,3 +400,46 @@ def test_subproblem3_bad_input():
                     [1, 0, 0], [2, 0, 0], 1)
     with pytest.raises(TypeError, match="delta"):
         subproblem3(z, [1, 0, 0], [2, 0, 0], "1")
+
+
+# ------------------------------------------------------------------ exact checks, undecided numbers
+
+
+def test_exact_round_trips_on_rational_data():
+    """The answers checked exactly (screwsym's exp6, zero decided exactly), not only at 60 digits."""
+    from screwsym.core.decide import is_zero_vector
+
+    axis = Twist.rotation([Rational(3, 5), Rational(4, 5), 0], point=[1, -2, Rational(1, 2)])
+    p = ImmutableMatrix([2, Rational(1, 3), -1])
+    q = exp6(axis, atan2(4, 3)).apply(p)
+    (b,) = subproblem1(axis, p, q)
+    assert is_zero_vector(exp6(axis, b.values[0]).apply(p) - q) is True
+    assert is_zero_vector(exp6(axis, b.values[0] + Rational(1, 10**6)).apply(p) - q) is False
+    z = Twist.rotation([0, 0, 1], point=[1, 1, 0])
+    p, q = ImmutableMatrix([4, 1, 2]), ImmutableMatrix([1, 2, 0])
+    # |u'| = 3, |v'| = 1, 2 apart along the axis: the distances squared fill [8, 20]
+    assert subproblem3(z, p, q, sqrt(Rational(29, 4))) == ()
+    delta = 3
+    branches = subproblem3(z, p, q, delta)
+    assert len(branches) == 2
+    for b in branches:
+        d = exp6(z, b.values[0]).apply(p) - q
+        assert (d.dot(d) - delta**2).expand() == 0
+        d = exp6(z, b.values[0] + Rational(1, 10**6)).apply(p) - q
+        assert (d.dot(d) - delta**2).expand() != 0
+
+
+def test_a_number_the_decision_cannot_settle_keeps_its_condition():
+    """None means undecided: a condition on a number SymPy cannot reduce stays an ``Eq``.
+
+    ``exp6`` of a non-unit axis at ``atan(8/15)`` leaves ``cos(3 atan(8/15))`` in ``q``:
+    the branch is kept with its condition unevaluated, never dropped or guessed.
+    """
+    axis = Twist.rotation([1, 2, 2], point=[0, 0, 0])
+    p = ImmutableMatrix([1, 0, 0])
+    q = exp6(axis, atan2(8, 15)).apply(p)  # a turn by 3 atan(8/15)
+    branches = subproblem1(axis, p, q)
+    assert branches and all(b.condition not in (S.true, S.false) for b in branches)
+    regular = [b for b in branches if not isinstance(b.values[0], Dummy)]
+    assert len(regular) == 1 and maps(axis, regular[0].values[0], p, q)
+    assert same_angle(regular[0].values[0], atan2(8, 15), axis)
