@@ -21,7 +21,10 @@ fresh real ``Dummy`` stands for it), Subproblem 2 has two solutions or one,
 Subproblem 3 two, one (tangent) or a free angle.  With numbers the conditions
 are decided exactly (``True`` or ``False``, no tolerance) and only the branches
 that exist are returned (none: the empty tuple); with symbols they stay
-symbolic, the symbols taken as real.  Angles are modulo a full turn.
+symbolic, the symbols taken as real.  Angles are modulo a full turn.  A number
+the exact decision cannot settle (``cos(3 atan(8/15))``, which SymPy leaves
+unreduced) is treated like a symbol: its condition stays an unevaluated ``Eq``
+and the branch is kept, never dropped on a guess.
 
 An axis is a :class:`~screwsym.core.twist.Twist` of pitch 0 (a pure
 rotation), or a direction with ``point=``, read as

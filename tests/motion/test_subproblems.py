@@ -443,3 +443,33 @@ def test_a_number_the_decision_cannot_settle_keeps_its_condition():
     regular = [b for b in branches if not isinstance(b.values[0], Dummy)]
     assert len(regular) == 1 and maps(axis, regular[0].values[0], p, q)
     assert same_angle(regular[0].values[0], atan2(8, 15), axis)
+
+
+def test_subproblem3_finds_every_solution():
+    """Completeness, independently: the sign changes of |R(t) p - q|^2 - delta^2 on a fine grid
+    (NumPy, float) over a full turn number the distinct angles returned."""
+    import numpy as np
+
+    rng = random.Random(5)
+    counts = set()
+    for _ in range(8):
+        twist, p, q = random_twist(rng), point(rng), point(rng)
+        delta = abs(rational(rng, 1, 12))
+        branches = subproblem3(twist, p, q, delta)
+        w = float(length(twist.omega))
+        ts = np.linspace(0, 2 * np.pi / w, 20001)
+        with mpmath.workdps(15):
+            omega, r = axis_of(twist)
+            k = np.array([float(x) for x in omega]) / w
+            x = np.array([float(a - b) for a, b in zip(p, r, strict=True)])
+            rr = np.array([float(e) for e in r])
+            qq = np.array([float(e) for e in q])
+        c, s = np.cos(w * ts)[:, None], np.sin(w * ts)[:, None]
+        moved = x * c + np.cross(k, x) * s + np.outer(1 - c, k * k.dot(x)).reshape(-1, 3) + rr
+        f = ((moved - qq) ** 2).sum(axis=1) - float(delta) ** 2
+        changes = int((np.sign(f[1:]) != np.sign(f[:-1])).sum())
+        assert len(branches) == changes
+        counts.add(changes)
+        for b in branches:
+            assert at_distance(twist, b.values[0], p, q, delta)
+    assert counts == {0, 2}  # both cases met by these draws
