@@ -184,14 +184,22 @@ def _length(ww: Expr) -> Expr:
 # --------------------------------------------------------------------- Subproblem 1
 
 
-def _project(omega: ImmutableMatrix, ww: Expr, u: ImmutableMatrix) -> ImmutableMatrix:
-    """``u'``: ``u`` less its component along ``omega``."""
-    return (u - omega * (omega.dot(u) / ww)).applyfunc(_clean)
+def _moment2(omega: ImmutableMatrix, u: ImmutableMatrix) -> Expr:
+    """``|omega x u|^2 = |omega|^2 |u'|^2``: a polynomial, zero exactly where ``u'`` is."""
+    m = omega.cross(u)
+    return _clean(m.dot(m))
 
 
-def _turn(omega: ImmutableMatrix, w: Expr, up: ImmutableMatrix, vp: ImmutableMatrix) -> Expr:
-    """The angle ``atan2(omega . (u' x v'), |omega| u' . v') / |omega|`` from ``u'`` to ``v'``."""
-    return atan2(_clean(omega.dot(up.cross(vp))), _clean(w * up.dot(vp))) / w
+def _turn(omega: ImmutableMatrix, ww: Expr, u: ImmutableMatrix, v: ImmutableMatrix) -> Expr:
+    """The angle from ``u'`` to ``v'`` about ``omega``, over ``|omega|`` (exp6's units).
+
+    ``atan2(omega^ . (u' x v'), u' . v')`` with ``omega . (u' x v') = omega . (u x v)``
+    and ``|omega|^2 u' . v' = |omega|^2 u . v - (omega . u)(omega . v)``, both sides
+    scaled by the positive ``|omega|``: polynomials, no quotient to expand.
+    """
+    w = _length(ww)
+    return atan2(_clean(w * omega.dot(u.cross(v))),
+                 _clean(ww * u.dot(v) - omega.dot(u) * omega.dot(v))) / w
 
 
 def subproblem1(axis: Any, p: Any, q: Any, *, point: Any = None) -> tuple[Branch, ...]:
@@ -250,13 +258,11 @@ def subproblem1(axis: Any, p: Any, q: Any, *, point: Any = None) -> tuple[Branch
 def _sp1(omega: ImmutableMatrix, ww: Expr, u: ImmutableMatrix, v: ImmutableMatrix,
          given: list[Boolean], free: str, check_norms: bool) -> list[Branch]:
     """The branches of Subproblem 1 under the conditions ``given`` (the norms' too if asked)."""
-    up, vp = _project(omega, ww, u), _project(omega, ww, v)
-    uu = _clean(up.dot(up))
+    uu = _moment2(omega, u)
     if check_norms:
-        given = [*given, _zero(_clean(vp.dot(vp) - uu))]
-    w = _length(ww)
+        given = [*given, _zero(_clean(_moment2(omega, v) - uu))]
     return [
-        Branch(And(*given, _nonzero(uu)), (_turn(omega, w, up, vp),)),
+        Branch(And(*given, _nonzero(uu)), (_turn(omega, ww, u, v),)),
         Branch(And(*given, _zero(uu)), (Dummy(free, real=True),)),
     ]
 
@@ -427,13 +433,13 @@ def subproblem3(axis: Any, p: Any, q: Any, delta: Any, *, point: Any = None) -> 
         raise ValueError(f"delta: expected a distance (>= 0), got {delta}")
     u, v = pp - r, qq - r
     ww = _clean(omega.dot(omega))
-    up, vp = _project(omega, ww, u), _project(omega, ww, v)
-    uu, vv = _clean(up.dot(up)), _clean(vp.dot(vp))
+    # everything scaled by |omega|^2 (resp. its square), polynomials: uu = |omega|^2 |u'|^2, ...
+    uu, vv = _moment2(omega, u), _moment2(omega, v)
     along = _clean(omega.dot(pp - qq))
-    c = _clean(uu + vv - delta**2 + along**2 / ww)
+    c = _clean(uu + vv - ww * delta**2 + along**2)
     D = _clean(4 * uu * vv - c**2)
     w = _length(ww)
-    theta0 = _turn(omega, w, up, vp)
+    theta0 = _turn(omega, ww, u, v)
     moving = _nonzero(_clean(uu * vv))
     two = And(moving, _positive(D, or_zero=False))
     branches = [
