@@ -184,22 +184,20 @@ def _length(ww: Expr) -> Expr:
 # --------------------------------------------------------------------- Subproblem 1
 
 
-def _moment2(omega: ImmutableMatrix, u: ImmutableMatrix) -> Expr:
-    """``|omega x u|^2 = |omega|^2 |u'|^2``: a polynomial, zero exactly where ``u'`` is."""
-    m = omega.cross(u)
-    return _clean(m.dot(m))
-
-
-def _turn(omega: ImmutableMatrix, ww: Expr, u: ImmutableMatrix, v: ImmutableMatrix) -> Expr:
+def _turn(omega: ImmutableMatrix, ww: Expr, A: ImmutableMatrix, B: ImmutableMatrix) -> Expr:
     """The angle from ``u'`` to ``v'`` about ``omega``, over ``|omega|`` (exp6's units).
 
-    ``atan2(omega^ . (u' x v'), u' . v')`` with ``omega . (u' x v') = omega . (u x v)``
-    and ``|omega|^2 u' . v' = |omega|^2 u . v - (omega . u)(omega . v)``, both sides
-    scaled by the positive ``|omega|``: polynomials, no quotient to expand.
+    With ``A = omega x u``, ``B = omega x v`` (``u'``, ``v'`` turned a quarter and
+    scaled by ``|omega|``): ``atan2(omega . (A x B), |omega| A . B) / |omega|``,
+    polynomials in the data, no quotient to expand.
     """
     w = _length(ww)
-    return atan2(_clean(w * omega.dot(u.cross(v))),
-                 _clean(ww * u.dot(v) - omega.dot(u) * omega.dot(v))) / w
+    return atan2(_clean(omega.dot(A.cross(B))), _clean(w * A.dot(B))) / w
+
+
+def _moment(omega: ImmutableMatrix, m: ImmutableMatrix, x: ImmutableMatrix) -> ImmutableMatrix:
+    """``omega x (x - r) = omega x x + m`` for the axis's ``m = r x omega`` (a twist's ``v_O``)."""
+    return (omega.cross(x) + m).applyfunc(_clean)
 
 
 def subproblem1(axis: Any, p: Any, q: Any, *, point: Any = None) -> tuple[Branch, ...]:
@@ -249,20 +247,25 @@ def subproblem1(axis: Any, p: Any, q: Any, *, point: Any = None) -> tuple[Branch
     subproblem2, subproblem3, screwsym.motion.displacement.exp6
     """
     omega, r = _axis(axis, point, "axis")
-    u = _exact_point(p, "p") - r
-    v = _exact_point(q, "q") - r
+    pp, qq = _exact_point(p, "p"), _exact_point(q, "q")
+    m = axis.v_O if isinstance(axis, Twist) else r.cross(omega)  # r x omega, polynomial
+    A, B = _moment(omega, m, pp), _moment(omega, m, qq)
     ww = _clean(omega.dot(omega))
-    return _kept(_sp1(omega, ww, u, v, [_zero(_clean(omega.dot(u - v)))], "theta", True))
+    return _kept(_sp1(omega, ww, A, B, [_zero(_clean(omega.dot(pp - qq)))], "theta", True))
 
 
-def _sp1(omega: ImmutableMatrix, ww: Expr, u: ImmutableMatrix, v: ImmutableMatrix,
+def _sp1(omega: ImmutableMatrix, ww: Expr, A: ImmutableMatrix, B: ImmutableMatrix,
          given: list[Boolean], free: str, check_norms: bool) -> list[Branch]:
-    """The branches of Subproblem 1 under the conditions ``given`` (the norms' too if asked)."""
-    uu = _moment2(omega, u)
+    """Subproblem 1's branches from ``A = omega x u``, ``B = omega x v``, under ``given``.
+
+    ``|A| = |omega| |u'|``: ``u'`` is zero exactly where ``A . A`` is; with
+    ``check_norms`` the condition ``|u'| = |v'|`` is added.
+    """
+    uu = _clean(A.dot(A))
     if check_norms:
-        given = [*given, _zero(_clean(_moment2(omega, v) - uu))]
+        given = [*given, _zero(_clean(B.dot(B) - uu))]
     return [
-        Branch(And(*given, _nonzero(uu)), (_turn(omega, ww, u, v),)),
+        Branch(And(*given, _nonzero(uu)), (_turn(omega, ww, A, B),)),
         Branch(And(*given, _zero(uu)), (Dummy(free, real=True),)),
     ]
 
@@ -365,8 +368,10 @@ def subproblem2(axis1: Any, axis2: Any, p: Any, q: Any, *,
         if here is S.false:
             continue
         z = (o1 * a + o2 * b + n * g).applyfunc(_clean)
-        second = _sp1(o2, g22, u, z, [here], "theta2", False)
-        first = _sp1(o1, g11, z, v, [here], "theta1", False)
+        second = _sp1(o2, g22, o2.cross(u).applyfunc(_clean), o2.cross(z).applyfunc(_clean),
+                      [here], "theta2", False)
+        first = _sp1(o1, g11, o1.cross(z).applyfunc(_clean), o1.cross(v).applyfunc(_clean),
+                     [here], "theta1", False)
         for b2 in second:
             for b1 in first:
                 if g != 0 and (b1.values[0].is_Dummy or b2.values[0].is_Dummy):
@@ -431,15 +436,16 @@ def subproblem3(axis: Any, p: Any, q: Any, delta: Any, *, point: Any = None) -> 
     _refuse_floats(delta, "delta")
     if delta.is_negative:
         raise ValueError(f"delta: expected a distance (>= 0), got {delta}")
-    u, v = pp - r, qq - r
     ww = _clean(omega.dot(omega))
     # everything scaled by |omega|^2 (resp. its square), polynomials: uu = |omega|^2 |u'|^2, ...
-    uu, vv = _moment2(omega, u), _moment2(omega, v)
+    m = axis.v_O if isinstance(axis, Twist) else r.cross(omega)  # r x omega, polynomial
+    A, B = _moment(omega, m, pp), _moment(omega, m, qq)
+    uu, vv = _clean(A.dot(A)), _clean(B.dot(B))
     along = _clean(omega.dot(pp - qq))
     c = _clean(uu + vv - ww * delta**2 + along**2)
     D = _clean(4 * uu * vv - c**2)
     w = _length(ww)
-    theta0 = _turn(omega, ww, u, v)
+    theta0 = _turn(omega, ww, A, B)
     moving = _nonzero(_clean(uu * vv))
     two = And(moving, _positive(D, or_zero=False))
     branches = [
