@@ -88,9 +88,21 @@ class Branch(NamedTuple):
 # --------------------------------------------------------------------- conditions
 
 
+#: a symbolic condition with more terms than this is left undecided (its exact zero
+#: decision could take minutes): the branch keeps its ``Eq``/``Ne``, never a guess
+MAX_DECIDED_TERMS = 200
+
+
+def _decided(e: Expr) -> bool | None:
+    """:func:`is_zero`, or None for a large symbolic polynomial (see :data:`MAX_DECIDED_TERMS`)."""
+    if not e.is_number and len(e.args) > MAX_DECIDED_TERMS:
+        return None
+    return is_zero(e)
+
+
 def _zero(e: Expr) -> Boolean:
     """``e = 0`` as a Boolean: ``True``/``False`` where decided exactly, else ``Eq(e, 0)``."""
-    d = is_zero(e)
+    d = _decided(e)
     if d is None:
         return Eq(e, 0)
     return S.true if d else S.false
@@ -98,7 +110,7 @@ def _zero(e: Expr) -> Boolean:
 
 def _nonzero(e: Expr) -> Boolean:
     """``e != 0`` as a Boolean (see :func:`_zero`)."""
-    d = is_zero(e)
+    d = _decided(e)
     if d is None:
         return Ne(e, 0)
     return S.false if d else S.true
@@ -110,7 +122,7 @@ def _positive(e: Expr, *, or_zero: bool) -> Boolean:
     A number is first decided zero or not exactly (:func:`is_zero`); a non-zero
     number's sign is then SymPy's (its evaluation at increasing precision).
     """
-    d = is_zero(e)
+    d = _decided(e)
     if d is True:
         return S.true if or_zero else S.false
     if d is False and e.is_number:
