@@ -35,6 +35,7 @@ from typing import Any
 
 from sympy import Dummy, Expr, Float, ImmutableMatrix, S, Symbol, cos, sin
 
+from ..algebra.budget import charge
 from ..algebra.numberfield import surd_normal
 from . import _poe
 
@@ -60,13 +61,16 @@ class _Ring:
         self.el = engine._el
 
     def mv(self, M: list, v: list) -> list:
+        charge(sum(len(M[i][j]) * len(v[j]) for i in range(3) for j in range(3)))
         return [self.red(M[i][0] * v[0] + M[i][1] * v[1] + M[i][2] * v[2]) for i in range(3)]
 
     def cross(self, a: list, b: list) -> list:
+        charge(2 * (len(a[0]) + len(a[1]) + len(a[2])) * (len(b[0]) + len(b[1]) + len(b[2])) // 3)
         return [self.red(x) for x in
                 (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])]
 
     def dot(self, a: list, b: list) -> Any:
+        charge(sum(len(x) * len(y) for x, y in zip(a, b, strict=True)))
         return self.red(sum((x * y for x, y in zip(a, b, strict=True)), self.R.zero))
 
     def motions(self) -> list[tuple[list, list]]:
