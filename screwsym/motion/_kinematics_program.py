@@ -30,12 +30,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from sympy import Expr, ImmutableMatrix, Symbol, cos, sin, sympify
+from sympy import ImmutableMatrix, Symbol, cos, sin
 
 from ..core.checks import check_choice
 from ..core.tidy import tidy
 from .displacement import exp6
-from .newton_euler import Program
+from .newton_euler import Program, _Writer  # the dynamics programs' writer, shared
 
 if TYPE_CHECKING:
     from .chain import Chain
@@ -45,32 +45,7 @@ __all__ = ["kinematics_program"]
 WHAT = ("forward", "jacobian")
 
 
-class _Assign:
-    """Appends assignments; an atom (a symbol, a number) or a negated symbol is used as it is."""
-
-    def __init__(self, taken: set[str]) -> None:
-        self.assigns: list[tuple[Symbol, Expr]] = []
-        self.seen: dict[Expr, Symbol] = {}
-        self.taken = set(taken)
-
-    def let(self, expr: Any, name: str) -> Expr:
-        e = sympify(expr, strict=True)
-        if not e.args or (e.is_Mul and len(e.args) == 2 and e.args[0] == -1 and not e.args[1].args):
-            return e
-        if e in self.seen:  # an entry equal to one before (r_yy = r_xx about z): its symbol
-            return self.seen[e]
-        if -e in self.seen:
-            return -self.seen[-e]
-        while name in self.taken:
-            name += "'"
-        self.taken.add(name)
-        t = Symbol(name, real=True)
-        self.assigns.append((t, e))
-        self.seen[e] = t
-        return t
-
-
-def _exponential(W: _Assign, twist: Any, qk: Symbol, k: int) -> tuple[list, list]:
+def _exponential(W: _Writer, twist: Any, qk: Symbol, k: int) -> tuple[list, list]:
     """``exp6($_k, q_k)`` as ``(R, p)`` entries in ``c_k, s_k`` (assigned) and constants.
 
     A prismatic joint: ``(I, v q)``.  A unit ``omega`` (revolute or helical, pitch ``h = omega . v``):
@@ -131,7 +106,7 @@ def kinematics_program(chain: Chain, what: str = "forward") -> Program:
     what = check_choice(what, "what", WHAT)
     n = chain.n_joints
     q = ImmutableMatrix([Symbol(f"q{i + 1}", real=True) for i in range(n)])
-    W = _Assign({str(x) for x in q} | {str(s) for t in chain.twists for s in t.matrix.free_symbols}
+    W = _Writer({str(x) for x in q} | {str(s) for t in chain.twists for s in t.matrix.free_symbols}
                 | {str(s) for s in chain.home.matrix.free_symbols})
     axes = "xyz"
     R: list[list[Any]] = [[int(i == j) for j in range(3)] for i in range(3)]

@@ -21,10 +21,15 @@ from sympy import Add, Expr, Mul, Pow, Symbol, cos, count_ops, sin
 from sympy.core.basic import Basic
 from sympy.polys.domains import QQ
 
+from ..algebra.budget import charge
+
 __all__: list[str] = []
 
 #: forms whose estimated cost is within this of the least are measured with ``count_ops``
 MARGIN = 2
+
+#: units of the budget (about a microsecond each, measured) per term written back to an expression
+WRITE_UNITS = 60
 
 # packed monomials (the writer's gathering): 16 bits per generator's exponent
 _FIELD = 1 << 16
@@ -122,6 +127,7 @@ class _Writer:
 
     def expr(self, P: Any) -> Expr:
         terms = P.terms()
+        charge(WRITE_UNITS * len(terms))  # the budget of the call under way (_poe.bounded)
         if any(sum(monom) >= _FIELD for monom, _ in terms):  # exponents beyond a packed field
             return self.write(self.to_dict(P))
         D = {_pack(monom): coeff for monom, coeff in terms}

@@ -45,7 +45,7 @@ import numpy as np
 from sympy import Expr, ImmutableMatrix, Rational, Tuple
 from sympy.matrices import MatrixBase
 
-from ..algebra.budget import BUDGET
+from ..algebra.budget import BUDGET, charge
 from ..core.basic import ScrewsymBasic
 from ..core.checks import (
     check_choice,
@@ -309,35 +309,53 @@ class Chain(ScrewsymBasic):
         values = check_sequence(q, "q", "joint values", self.n_joints)
         return tuple(check_scalar(v, f"q[{i}]") for i, v in enumerate(values))
 
-    def forward(self, q: JointValues) -> Transform:
+    def forward(self, q: JointValues, *, budget: int = BUDGET) -> Transform:
         r"""The forward kinematics ``T(q) = exp6($_1, q_1) ... exp6($_n, q_n) M``, tidied.
 
-        >>> from sympy import pi
+        ``budget`` bounds the exact arithmetic (default
+        :data:`~screwsym.algebra.budget.BUDGET`, 20,000,000 units of about a
+        microsecond: a product of polynomials of ``a`` and ``b`` terms costs
+        ``a b``, a term written back 60; the CPU time is bounded to ``SLACK``
+        microseconds a unit).  Past it, a ``ValueError`` naming the method: a
+        long chain with symbolic joint values grows fast, where
+        :meth:`kinematics_program` grows linearly.
+
+        >>> from sympy import pi, symbols
         >>> from screwsym import Chain, Transform, Twist
         >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0])], Transform.translation([1, 0, 0]))
         >>> arm.forward([pi/2])
         Transform(R=[[0, -1, 0], [1, 0, 0], [0, 0, 1]], p=[0, 1, 0])
+        >>> arm.forward(symbols("q1", real=True, seq=True), budget=10)
+        Traceback (most recent call last):
+        ...
+        ValueError: forward: the exact arithmetic needs more than budget=10 units (a long chain, or symbolic joint values with angles that are no multiple of pi/12); pass a larger budget, or use Chain.kinematics_program (Chain.dynamics_program for the dynamics) for a straight-line program that grows linearly
         """
         q = self._check_q(q)
-        fast = _poe.fast_forward(self.twists, self.home, q)
-        if fast is not None:
-            return Transform._new(*fast)
-        return self._forward_stepwise(q)
+        with _poe.bounded(budget, "forward"):
+            fast = _poe.fast_forward(self.twists, self.home, q)
+            if fast is not None:
+                return Transform._new(*fast)
+            return self._forward_stepwise(q)
 
     def _forward_stepwise(self, q: tuple[Expr, ...]) -> Transform:
         """The general path: each product of an exponential tidied (numbers, helical joints, ...)."""
         T = Transform.identity()
         for twist, qi in zip(self.twists, q, strict=True):
+            charge(_poe.STEP_UNITS)
             T = tidy(T @ exp6(twist, qi))
         return tidy(T @ self.home)
 
-    def jacobian(self, q: JointValues, frame: str = "space") -> ImmutableMatrix:
+    def jacobian(self, q: JointValues, frame: str = "space", *,
+                 budget: int = BUDGET) -> ImmutableMatrix:
         r"""The 6 x n Jacobian in ray order, ``frame="space"`` or ``"body"``, tidied.
 
         Column ``i`` is joint ``i``'s twist at the configuration ``q``,
         ``(omega_i; v_i)``: in the space frame (moments about the base origin)
         for ``"space"``, in the end frame (moments about the end frame's origin)
-        for ``"body"``.  The twist of the end body is ``J dq/dt``.
+        for ``"body"``.  The twist of the end body is ``J dq/dt``.  ``budget``
+        bounds the exact arithmetic as in :meth:`forward` (default
+        :data:`~screwsym.algebra.budget.BUDGET`); past it, a ``ValueError``
+        naming ``jacobian``.
 
         >>> from sympy import symbols
         >>> from screwsym import Chain, Twist
@@ -353,13 +371,14 @@ class Chain(ScrewsymBasic):
         """
         q = self._check_q(q)
         frame = check_choice(frame, "frame", ("space", "body"))
-        if frame == "space":
-            fast = _poe.fast_space_jacobian(self.twists, self.home, q)
-        else:
-            fast = _poe.fast_body_jacobian(self.body_twists(), self.home, q)
-        if fast is not None:
-            return fast
-        return self._jacobian_stepwise(q, frame)
+        with _poe.bounded(budget, "jacobian"):
+            if frame == "space":
+                fast = _poe.fast_space_jacobian(self.twists, self.home, q)
+            else:
+                fast = _poe.fast_body_jacobian(self.body_twists(), self.home, q)
+            if fast is not None:
+                return fast
+            return self._jacobian_stepwise(q, frame)
 
     def _jacobian_stepwise(self, q: tuple[Expr, ...], frame: str) -> ImmutableMatrix:
         """The general path of :meth:`jacobian`: each product tidied."""
@@ -367,11 +386,13 @@ class Chain(ScrewsymBasic):
         T = Transform.identity()
         if frame == "space":
             for twist, qi in zip(self.twists, q, strict=True):
+                charge(_poe.STEP_UNITS)
                 columns.append(_carried_column(T, twist))
                 T = tidy(T @ exp6(twist, qi))
         else:
             # J_b column i = Ad(exp6(B_n, -q_n) ... exp6(B_{i+1}, -q_{i+1})) B_i
             for twist, qi in zip(reversed(self.body_twists()), reversed(q), strict=True):
+                charge(_poe.STEP_UNITS)
                 columns.append(_carried_column(T, twist))
                 T = tidy(T @ exp6(twist, -qi))
             columns.reverse()
@@ -387,26 +408,28 @@ class Chain(ScrewsymBasic):
 
     # ---------------------------------------------------------------- dynamics
     def inverse_dynamics(self, q: JointValues, qd: JointValues, qdd: JointValues,
-                         gravity: Any = None) -> ImmutableMatrix:
-        """The joint torques by Newton–Euler: :func:`screwsym.motion.dynamics.inverse_dynamics`."""
-        return _dynamics.inverse_dynamics(self, q, qd, qdd, gravity)
+                         gravity: Any = None, *, budget: int = BUDGET) -> ImmutableMatrix:
+        """The joint torques by Newton–Euler: :func:`screwsym.motion.dynamics.inverse_dynamics` (``budget``: as there)."""
+        return _dynamics.inverse_dynamics(self, q, qd, qdd, gravity, budget=budget)
 
-    def mass_matrix(self, q: JointValues) -> ImmutableMatrix:
-        """The mass matrix by composite rigid bodies: :func:`screwsym.motion.dynamics.mass_matrix`."""
-        return _dynamics.mass_matrix(self, q)
+    def mass_matrix(self, q: JointValues, *, budget: int = BUDGET) -> ImmutableMatrix:
+        """The mass matrix by composite rigid bodies: :func:`screwsym.motion.dynamics.mass_matrix` (``budget``: as there)."""
+        return _dynamics.mass_matrix(self, q, budget=budget)
 
-    def coriolis_matrix(self, q: JointValues, qd: JointValues) -> ImmutableMatrix:
-        """The Christoffel-form Coriolis matrix: :func:`screwsym.motion.dynamics.coriolis_matrix`."""
-        return _dynamics.coriolis_matrix(self, q, qd)
+    def coriolis_matrix(self, q: JointValues, qd: JointValues, *,
+                        budget: int = BUDGET) -> ImmutableMatrix:
+        """The Christoffel-form Coriolis matrix: :func:`screwsym.motion.dynamics.coriolis_matrix` (``budget``: as there)."""
+        return _dynamics.coriolis_matrix(self, q, qd, budget=budget)
 
-    def gravity_torques(self, q: JointValues, gravity: Any = None) -> ImmutableMatrix:
-        """The gravity torques: :func:`screwsym.motion.dynamics.gravity_torques`."""
-        return _dynamics.gravity_torques(self, q, gravity)
+    def gravity_torques(self, q: JointValues, gravity: Any = None, *,
+                        budget: int = BUDGET) -> ImmutableMatrix:
+        """The gravity torques: :func:`screwsym.motion.dynamics.gravity_torques` (``budget``: as there)."""
+        return _dynamics.gravity_torques(self, q, gravity, budget=budget)
 
     def regressor(self, q: JointValues, qd: JointValues, qdd: JointValues,
-                  gravity: Any = None) -> ImmutableMatrix:
-        """The torques' regressor in the inertial parameters: :func:`screwsym.motion.dynamics.regressor`."""
-        return _dynamics.regressor(self, q, qd, qdd, gravity)
+                  gravity: Any = None, *, budget: int = BUDGET) -> ImmutableMatrix:
+        """The torques' regressor in the inertial parameters: :func:`screwsym.motion.dynamics.regressor` (``budget``: as there)."""
+        return _dynamics.regressor(self, q, qd, qdd, gravity, budget=budget)
 
     def dynamics_program(self, what: str = "inverse_dynamics",
                          gravity: Any = None, **options: Any) -> _newton_euler.Program:

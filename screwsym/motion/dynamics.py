@@ -72,11 +72,13 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 from sympy import Dummy, Expr, Float, ImmutableMatrix, S, Symbol, cos, sin, zeros
 from sympy.core.evalf import prec_to_dps
 
+from ..algebra.budget import BUDGET, charge
 from ..core.checks import check_scalar, check_sequence, check_vector
 from ..core.formulas import bracket, cross_matrix, moved, reciprocal_form
 from ..core.inertia import PARAMETER_NAMES, SpatialInertia, spatial_matrix
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from ._poe import STEP_UNITS, bounded
 from ._ring_dynamics import ring_mass_matrix, ring_rnea
 from .displacement import exp6
 from .transform import Transform
@@ -106,6 +108,7 @@ def _step(x: Any, angles: bool = False) -> Any:
     the UR5: 15 s instead of 50 s), the composite inertias with it (10 s instead of 27 s:
     they stay small enough to gain from it).
     """
+    charge(STEP_UNITS)
     return tidy(x, max_size=INTERMEDIATE_SIZE, sum_of_angles=angles)
 
 
@@ -229,7 +232,7 @@ def _rnea(twists: Sequence[Any], params: Sequence[_Params], q: Sequence[Expr],
 
 
 def inverse_dynamics(chain: Chain, q: Any, qd: Any, qdd: Any,
-                     gravity: Any = None) -> ImmutableMatrix:
+                     gravity: Any = None, *, budget: int = BUDGET) -> ImmutableMatrix:
     r"""The joint torques (forces, for prismatic joints) ``tau(q, qd, qdd)``: an n x 1 column.
 
     The recursive Newton–Euler algorithm in screw form (module docstring; Park,
@@ -238,6 +241,14 @@ def inverse_dynamics(chain: Chain, q: Any, qd: Any, qdd: Any,
     gravitational acceleration, pointing down (default ``(0, 0, -g)`` with a
     positive symbol ``g``; ``[0, 0, -9.81]`` as modern_robotics and pinocchio
     take it).  The chain needs inertias (``Chain(..., inertias=...)``).
+
+    ``budget`` bounds the exact arithmetic (default :data:`~screwsym.algebra.budget.BUDGET`,
+    20,000,000 units of about a microsecond, and ``SLACK`` microseconds of CPU time a
+    unit; :meth:`~screwsym.motion.chain.Chain.forward` says how they are counted): past
+    it, a ``ValueError`` naming the function called, where
+    :meth:`~screwsym.motion.chain.Chain.dynamics_program` grows linearly.  The same
+    holds for :func:`gravity_torques`, :func:`mass_matrix`, :func:`coriolis_matrix`
+    and :func:`regressor`; one calling another stays within the outer budget.
 
     >>> from sympy import symbols
     >>> from screwsym import Chain, Twist
@@ -251,10 +262,12 @@ def inverse_dynamics(chain: Chain, q: Any, qd: Any, qdd: Any,
     inertias = _check_chain(chain)
     n = chain.n_joints
     q, qd, qdd = (_values(v, name, n) for v, name in ((q, "q"), (qd, "qd"), (qdd, "qdd")))
-    return _rnea(chain.twists, [_params(b) for b in inertias], q, qd, qdd, _gravity(gravity))
+    with bounded(budget, "inverse_dynamics"):
+        return _rnea(chain.twists, [_params(b) for b in inertias], q, qd, qdd, _gravity(gravity))
 
 
-def gravity_torques(chain: Chain, q: Any, gravity: Any = None) -> ImmutableMatrix:
+def gravity_torques(chain: Chain, q: Any, gravity: Any = None, *,
+                    budget: int = BUDGET) -> ImmutableMatrix:
     r"""The torques that hold the chain still against gravity, ``g(q) = tau(q, 0, 0)``.
 
     The gradient of the potential energy: below, a mass 2 at ``x = 1`` turning about
@@ -270,10 +283,11 @@ def gravity_torques(chain: Chain, q: Any, gravity: Any = None) -> ImmutableMatri
     Matrix([[-20*cos(q)]])
     """
     zero = [S.Zero] * chain.n_joints
-    return inverse_dynamics(chain, q, zero, zero, gravity)
+    with bounded(budget, "gravity_torques"):
+        return inverse_dynamics(chain, q, zero, zero, gravity)
 
 
-def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
+def mass_matrix(chain: Chain, q: Any, *, budget: int = BUDGET) -> ImmutableMatrix:
     r"""The joint-space mass matrix ``H(q)`` by composite rigid bodies: symmetric, n x n, tidied.
 
     ``H_ij = $_i o (Ad(E_{i+1} ... E_k) M^c_k $_k)`` with ``k = max(i, j)`` and ``M^c_k`` the
@@ -297,6 +311,13 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
     inertias = _check_chain(chain)
     n = chain.n_joints
     q = _values(q, "q", n)
+    with bounded(budget, "mass_matrix"):
+        return _composite(chain, inertias, q)
+
+
+def _composite(chain: Chain, inertias: Sequence[SpatialInertia], q: tuple) -> ImmutableMatrix:
+    """:func:`mass_matrix` within the budget under way."""
+    n = chain.n_joints
     twists, bodies = _at_floats(chain.twists, [_params(b) for b in inertias], q)
     fast = ring_mass_matrix(twists, Transform.identity(), bodies, q)
     if fast is not None:  # in the ring of the chain (module docstring)
@@ -315,12 +336,13 @@ def mass_matrix(chain: Chain, q: Any) -> ImmutableMatrix:
         for i in reversed(range(k + 1)):
             if i < k:
                 W = _carry(E[i + 1], W, angles=True)
+            charge(STEP_UNITS)
             H[i][k] = H[k][i] = tidy(reciprocal_form(xi[i], W))
     return ImmutableMatrix(H)
 
 
-def coriolis_matrix(chain: Chain, q: Any, qd: Any, *,
-                    mass_matrix: ImmutableMatrix | None = None) -> ImmutableMatrix:
+def coriolis_matrix(chain: Chain, q: Any, qd: Any, *, mass_matrix: ImmutableMatrix | None = None,
+                    budget: int = BUDGET) -> ImmutableMatrix:
     r"""The Coriolis matrix ``C(q, qd)`` in the Christoffel form, n x n, tidied.
 
     ``C_ij = sum_k c_ijk qd_k`` with the Christoffel symbols
@@ -353,24 +375,33 @@ def coriolis_matrix(chain: Chain, q: Any, qd: Any, *,
         if not all(isinstance(v, Symbol) for v in q) or len(set(q)) != n:
             raise ValueError("q: with mass_matrix=, expected the distinct symbols it is a function of")
         x: list[Any] = list(q)
-        H = mass_matrix
+        H: ImmutableMatrix | None = mass_matrix
     else:
         x = [Dummy(f"q{i}", real=True) for i in range(n)]
-        H = _mass_matrix(chain, x)
-    dH = [H.diff(xk) for xk in x]
-    C = [[S.Zero] * n for _ in range(n)]
-    for i in range(n):
-        for j in range(n):
-            C[i][j] = sum(
-                ((dH[k][i, j] + dH[j][i, k] - dH[i][j, k]) * qd[k] for k in range(n)), S.Zero
-            ) / 2
-    return tidy(ImmutableMatrix(C).xreplace(dict(zip(x, q, strict=True))))
+        H = None
+    with bounded(budget, "coriolis_matrix"):
+        if H is None:
+            H = _mass_matrix(chain, x)
+        dH = []
+        for xk in x:
+            charge(STEP_UNITS)
+            dH.append(H.diff(xk))
+        C = [[S.Zero] * n for _ in range(n)]
+        for i in range(n):
+            for j in range(n):
+                charge(STEP_UNITS)
+                C[i][j] = sum(
+                    ((dH[k][i, j] + dH[j][i, k] - dH[i][j, k]) * qd[k] for k in range(n)), S.Zero
+                ) / 2
+        charge(STEP_UNITS)
+        return tidy(ImmutableMatrix(C).xreplace(dict(zip(x, q, strict=True))))
 
 
 _mass_matrix = mass_matrix
 
 
-def regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None) -> ImmutableMatrix:
+def regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None, *,
+              budget: int = BUDGET) -> ImmutableMatrix:
     r"""The n x 10n matrix ``Y`` with ``tau(q, qd, qdd) = Y pi``, linear in the inertial parameters.
 
     ``pi`` stacks the ten parameters of each link, link 1 first, each in the
@@ -399,7 +430,9 @@ def regressor(chain: Chain, q: Any, qd: Any, qdd: Any, gravity: Any = None) -> I
         m, hx, hy, hz, xx, xy, yy, xz, yz, zz = p
         params.append(_Params(m, ImmutableMatrix([hx, hy, hz]),
                               ImmutableMatrix([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])))
-    tau = _rnea(chain.twists, params, q, qd, qdd, _gravity(gravity))
-    flat = [x for p in pis for x in p]
-    # tau is linear in the parameters: each column is a derivative, free of them
-    return tidy(tau.jacobian(flat))
+    with bounded(budget, "regressor"):
+        tau = _rnea(chain.twists, params, q, qd, qdd, _gravity(gravity))
+        flat = [x for p in pis for x in p]
+        # tau is linear in the parameters: each column is a derivative, free of them
+        charge(STEP_UNITS)
+        return tidy(tau.jacobian(flat))

@@ -59,6 +59,7 @@ def _chain_urdf(n, rpy, inertia="0.01 0 0 0.02 0 0.03"):
 
 
 def test_a_huge_file_stops_with_the_budget_error():
+    pytest.importorskip("defusedxml")  # the URDF reader's parser (extra "urdf")
     # 14 joints, three new angles each (no multiple of pi/12): the exact frames grow without end
     text = _chain_urdf(14, lambda i: f"{0.1 + 0.01 * i:.2f} {0.2 + 0.013 * i:.3f} {0.3 + 0.017 * i:.3f}")
     with pytest.raises(ValueError, match=r"from_urdf: .*budget=200000 units"):
@@ -71,6 +72,7 @@ def test_a_huge_file_stops_with_the_budget_error():
 
 
 def test_an_unphysical_inertia_is_refused_where_the_file_writes_it():
+    pytest.importorskip("defusedxml")  # the URDF reader's parser (extra "urdf")
     # principal moments 1, 1, 3 break the triangle inequality; turned by -1.8 about x
     bad = _chain_urdf(2, lambda i: "-1.8 0 0", inertia="1 0 0 1 0 3")
     with warnings.catch_warnings():
@@ -96,6 +98,7 @@ def test_a_float_displacement_on_constant_sines_is_its_exact_value():
 
 
 def test_so_arm_reading_keeps_the_files_angles():
+    pytest.importorskip("defusedxml")  # the URDF reader's parser (extra "urdf")
     text = _chain_urdf(3, lambda i: "1.57079 0 -1.8" if i % 2 else "0 3.14158 0")
     chain = read_urdf(text)
     # 1.57079 is pi/2 truncated, not a printing of it: kept exact, never pi/2
@@ -173,6 +176,7 @@ def test_newton_euler_programs_build_at_15_degrees_and_equal_the_closed_forms():
     """The programs' frames hold quotients by n . n in Q(sqrt 2, sqrt 3) (newton_euler._links):
     in normal form (surd_quotient) a 3-joint program builds in about a second (it took over
     20 s at 2 joints), and it computes exactly the closed forms."""
+    pytest.importorskip("defusedxml")  # the URDF reader's parser (extra "urdf")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         chain = Chain.from_urdf(_urdf_15(2), inertias=True)
