@@ -4,6 +4,7 @@ Built on :mod:`screwsym.core` and :mod:`screwsym.algebra` alone (Huang, Li & Din
 sibling of :mod:`screwsym.motion`: neither imports the other.
 """
 
+from .assembly import AssemblyFamily, AssemblyModes, PlanarMode, direct_kinematics, leg_lengths
 from .joints import (
     Cylindrical,
     Helical,
@@ -41,4 +42,9 @@ __all__ = [
     "MechanismMobility",
     "SecondOrder",
     "lie_bracket",
+    "direct_kinematics",
+    "leg_lengths",
+    "AssemblyModes",
+    "PlanarMode",
+    "AssemblyFamily",
 ]
