@@ -4,7 +4,14 @@ Built on :mod:`screwsym.core` and :mod:`screwsym.algebra` alone (Huang, Li & Din
 sibling of :mod:`screwsym.motion`: neither imports the other.
 """
 
-from .assembly import AssemblyFamily, AssemblyModes, PlanarMode, direct_kinematics, leg_lengths
+from .assembly import (
+    AssemblyFamily,
+    AssemblyModes,
+    PlanarMode,
+    SpatialMode,
+    direct_kinematics,
+    leg_lengths,
+)
 from .joints import (
     Cylindrical,
     Helical,
@@ -47,4 +54,5 @@ __all__ = [
     "AssemblyModes",
     "PlanarMode",
     "AssemblyFamily",
+    "SpatialMode",
 ]

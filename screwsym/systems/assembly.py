@@ -40,12 +40,15 @@ from sympy import (
     CRootOf,
     Expr,
     Float,
+    ImmutableMatrix,
     Integer,
+    Matrix,
     Poly,
     Rational,
     Symbol,
     atan,
     cos,
+    eye,
     factor_list,
     minimal_polynomial,
     pi,
@@ -57,7 +60,15 @@ from sympy.core.evalf import PrecisionExhausted
 from sympy.polys.polyerrors import CoercionFailed, NotAlgebraic, PolynomialError
 
 from ..algebra.budget import BUDGET, case_budget, charge
-from ..core.checks import check_count, check_scalar, check_sequence, describe
+from ..core.checks import (
+    check_count,
+    check_matrix,
+    check_scalar,
+    check_sequence,
+    check_vector,
+    describe,
+)
+from ._gough_stewart import SpatialMode, paired_legs, paired_modes
 from ._root_field import RealRoot, real_roots_of
 
 __all__ = [
@@ -66,6 +77,7 @@ __all__ = [
     "AssemblyModes",
     "PlanarMode",
     "AssemblyFamily",
+    "SpatialMode",
 ]
 
 #: the variable of the univariate polynomials: ``t = tan(phi/2)``
@@ -169,6 +181,10 @@ class AssemblyModes:
         """
         lengths = leg_lengths(self.base_points, self.platform_points, pose)
         with case_budget(BUDGET, "closes"):
+            if len(self.base_points[0]) == 3:  # a rotation, exactly: R^T R = 1, det R = 1
+                R = _exact(check_matrix(pose[1], "pose[1]", (3, 3)))
+                if not all(_is_zero_number(e) for e in (R.T * R - eye(3))) or not _is_zero_number(R.det(method="berkowitz") - 1):
+                    return False
             return all(
                 _is_zero_number(length**2 - l2)
                 for length, l2 in zip(lengths, self.squared_lengths, strict=True)
@@ -401,6 +417,8 @@ def direct_kinematics(
 ) -> AssemblyModes:
     r"""Every real assembly mode of a parallel mechanism for given leg lengths, exact.
 
+    Floats, in every case, are taken as the exact rationals of their binary values.
+
     The planar 3-RPR: ``base_points`` three 2-D points on the base, ``platform_points`` three
     2-D points in the platform's frame, ``lengths`` the three leg lengths.  A pose is
     ``(x, y, phi)``: the platform's origin and its angle.  The answer
@@ -435,6 +453,25 @@ def direct_kinematics(
     >>> len(m.isolated_modes)
     2
 
+    The Gough-Stewart platforms (3-D points, six legs) whose legs meet in pairs at three
+    platform points (the octahedral 3-3, the 6-3) or at three base points (the 3-6): a pose
+    is ``(position, rotation)`` (:class:`SpatialMode`), the polynomial of degree at most 16
+    (Nanua, Waldron & Murthy 1990) is in one coordinate of a platform point, every
+    coordinate of a mode a polynomial in its root.  The 3-3 below has eight real modes, four
+    pairs mirrored in the base plane:
+
+    >>> A, B = [(0, 0, 0), (6, 0, 0), (2, 5, 0)], [(0, 0, 0), (3, 0, 0), (1, 2, 0)]
+    >>> base, platform = [A[0], A[1], A[1], A[2], A[2], A[0]], [B[0], B[0], B[1], B[1], B[2], B[2]]
+    >>> m = direct_kinematics(base, platform, [5, 5, 5, 5, 5, 5])
+    >>> m.polynomial.degree(), len(m.modes)
+    (16, 8)
+    >>> sorted(round(float(mode.position[2]), 6) for mode in m.modes)
+    [-3.987801, -3.769533, -2.692076, -2.571284, 2.571284, 2.692076, 3.769533, 3.987801]
+    >>> m.closes(m.modes[0].pose)
+    True
+
+    The general 6-6 (40 complex modes, Husty 1996) is not handled (``NotImplementedError``).
+
     Bad input is refused:
 
     >>> direct_kinematics([(0, 0), (1, 0)], [(0, 0), (1, 0), (0, 1)], [1, 1, 1])
@@ -444,14 +481,47 @@ def direct_kinematics(
     """
     budget = check_count(budget, "budget")
     dim = _dimension(base_points, "base_points")
-    if dim != 2:
-        raise NotImplementedError("direct_kinematics: only the planar 3-RPR (2-D points) so far")
-    a = _points(base_points, "base_points", 2, 3)
-    b = _points(platform_points, "platform_points", 2, 3)
-    items = check_sequence(lengths, "lengths", "leg lengths", 3)
+    legs = 3 if dim == 2 else 6
+    a = _points(base_points, "base_points", dim, legs)
+    b = _points(platform_points, "platform_points", dim, legs)
+    items = check_sequence(lengths, "lengths", "leg lengths", legs)
     l2 = tuple(_squared_length(v, f"lengths[{i}]") for i, v in enumerate(items))
     with case_budget(budget, "direct_kinematics"):
-        return _planar(a, b, l2)
+        if dim == 2:
+            return _planar(a, b, l2)
+        return _spatial(a, b, l2)
+
+
+def _spatial(a: tuple, b: tuple, l2: tuple) -> AssemblyModes:
+    """The Gough-Stewart platforms whose legs pair at three platform points (or, inverted, at
+    three base points): :mod:`screwsym.systems._gough_stewart`."""
+    for pts in (a, b):
+        if len(set(pts)) == 3:
+            p, q, r = (Matrix(v) for v in dict.fromkeys(pts))
+            if (q - p).cross(r - p).is_zero_matrix:
+                raise ValueError(
+                    "direct_kinematics: the three distinct points of the base or the platform "
+                    "are collinear (a degenerate Gough-Stewart platform)"
+                )
+    pairs = paired_legs(a, b)
+    if pairs is not None:
+        poly, modes = paired_modes(a, b, l2, pairs)
+    else:
+        pairs = paired_legs(b, a)
+        if pairs is None:
+            raise NotImplementedError(
+                "direct_kinematics: only the Gough-Stewart platforms whose six legs meet in pairs "
+                "at three platform (or three base) points (3-3, 6-3, 3-6); the general 6-6 "
+                "(40 complex modes, Husty 1996) is not handled"
+            )
+        poly, inverse = paired_modes(b, a, l2, pairs)
+        # the inverted mechanism's pose (p', R') is the inverse of ours: R = R'^T, p = -R p'
+        modes = []
+        for m in inverse:
+            rot = m.rotation.T
+            modes.append(SpatialMode(ImmutableMatrix(-(rot * m.position)), rot, m.root, m.multiplicity))
+    modes.sort(key=lambda m: m.root.evalf(30))
+    return AssemblyModes(poly, tuple(modes), (), a, b, l2)
 
 
 def _cos_sin(phi: Expr) -> tuple[Expr, Expr]:
@@ -478,10 +548,13 @@ def leg_lengths(base_points: Sequence, platform_points: Sequence, pose: Sequence
     (0, sqrt(17), sqrt(10))
     """
     dim = _dimension(base_points, "base_points")
-    if dim != 2:
-        raise NotImplementedError("leg_lengths: only planar mechanisms (2-D points) so far")
-    a = _points(base_points, "base_points", 2, None)
-    b = _points(platform_points, "platform_points", 2, len(a))
+    a = _points(base_points, "base_points", dim, None)
+    b = _points(platform_points, "platform_points", dim, len(a))
+    if dim == 3:
+        items = check_sequence(pose, "pose", "parts (position, rotation)", 2)
+        p = _exact(check_vector(items[0], "pose[0]"))
+        R = _exact(check_matrix(items[1], "pose[1]", (3, 3)))
+        return tuple(sqrt(_squared(p + R * Matrix(bi) - Matrix(ai))) for ai, bi in zip(a, b, strict=True))
     x, y, phi = (check_scalar(v, f"pose[{i}]") for i, v in enumerate(check_sequence(pose, "pose", "values (x, y, phi)", 3)))
     x, y = (Rational(v) if isinstance(v, Float) else v for v in (x, y))
     c, s = _cos_sin(phi)
@@ -491,6 +564,15 @@ def leg_lengths(base_points: Sequence, platform_points: Sequence, pose: Sequence
         dy = y + s * bx + c * by - ay
         out.append(sqrt(dx**2 + dy**2))
     return tuple(out)
+
+
+def _exact(M: Any) -> ImmutableMatrix:
+    """``M`` with its floats taken as their exact binary values."""
+    return ImmutableMatrix(M.applyfunc(lambda v: Rational(v) if isinstance(v, Float) else v))
+
+
+def _squared(v: Any) -> Expr:
+    return sum((e**2 for e in v), Integer(0))
 
 
 def _is_zero_number(e: Expr) -> bool:
