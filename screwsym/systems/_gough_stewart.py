@@ -144,7 +144,10 @@ def paired_modes(base: tuple, platform: tuple, l2: tuple, pairs: list) -> tuple[
     bpts = [Matrix(p[0]) for p in pairs]
     for j, k in ((0, 1), (1, 2), (2, 0)):
         d = B[j] - B[k]
-        eqs.append(Poly(d.dot(d) - (bpts[j] - bpts[k]).dot(bpts[j] - bpts[k]), *xs, *ys, domain="QQ"))
+        side = Poly(d.dot(d) - (bpts[j] - bpts[k]).dot(bpts[j] - bpts[k]), *xs, *ys, domain="QQ")
+        # less the two circles: bilinear in (x_j, y_j, 1) and (x_k, y_k, 1) (u_j . v_j = 0),
+        # the same ideal, and its Groebner basis is much cheaper
+        eqs.append(side - eqs[j] - eqs[k])
     charge(_price(eqs))
     for last in (2, 1, 0):
         others = [g for j, g in enumerate(ys) if j != last]

@@ -13,13 +13,14 @@ alone (Cramer's rule in floating point), and by NumPy's roots of the polynomial.
 
 from __future__ import annotations
 
+import functools
 import random
 from fractions import Fraction
 
 import mpmath
 import numpy as np
 import pytest
-from sympy import Rational, atan, pi, sqrt, sympify
+from sympy import Matrix, Rational, atan, diag, eye, pi, sqrt, sympify
 
 from screwsym.systems import AssemblyModes, direct_kinematics, leg_lengths
 
@@ -225,4 +226,179 @@ def test_leg_lengths_is_the_inverse_kinematics():
     want = mp_lengths(BASE, PLATFORM, pose)
     with mpmath.workdps(50):
         assert all(abs(mpmath.mpf(str(g.evalf(60))) - w) < mpmath.mpf(10) ** -40 for g, w in zip(got, want, strict=True))
+    assert all((g**2).is_Rational for g in got)
+
+
+# --------------------------------------------------------------------------------------
+# Gough-Stewart platforms whose legs meet in pairs (3-3 octahedral, 6-3, 3-6)
+# --------------------------------------------------------------------------------------
+
+A3 = [(0, 0, 0), (6, 0, 0), (2, 5, 0)]
+B3 = [(0, 0, 0), (3, 0, 0), (1, 2, 0)]
+# the octahedral 3-3: B1-A1, B1-A2, B2-A2, B2-A3, B3-A3, B3-A1
+OCTA_BASE = [A3[0], A3[1], A3[1], A3[2], A3[2], A3[0]]
+OCTA_PLATFORM = [B3[0], B3[0], B3[1], B3[1], B3[2], B3[2]]
+
+
+def rotation_from_quaternion(w, x, y, z):
+    """A rational rotation (Euler-Rodrigues), exact."""
+    n = w * w + x * x + y * y + z * z
+    return Matrix(
+        [
+            [w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z],
+        ]
+    ) / n
+
+
+POSE = (Matrix([1, 2, Rational(7, 2)]), rotation_from_quaternion(1, Rational(1, 3), Rational(-1, 2), Rational(1, 4)))
+
+
+def mp_points(platform, mode_or_pose, dps=50):
+    p, R = mode_or_pose
+    with mpmath.workdps(dps):
+        P = mpmath.matrix([mpmath.mpf(str(sympify(v).evalf(dps + 10))) for v in p])
+        M = mpmath.matrix([[mpmath.mpf(str(sympify(R[i, j]).evalf(dps + 10))) for j in range(3)] for i in range(3)])
+        return [P + M * mpmath.matrix(list(b)) for b in platform]
+
+
+def mp_leg_errors(base, platform, pose, l2, dps=50):
+    with mpmath.workdps(dps):
+        pts = mp_points(platform, pose, dps)
+        return [
+            abs(sum((pts[i][k] - a[k]) ** 2 for k in range(3)) - mpmath.mpf(Fraction(str(q)).numerator) / Fraction(str(q)).denominator)
+            for i, (a, q) in enumerate(zip(base, l2, strict=True))
+        ]
+
+
+def newton_solutions(base, platform, l2, starts=400, seed=0):
+    """Every real solution a batched Newton finds from random starts, with NumPy alone: the
+    three platform points as nine unknowns, the six legs and the platform's three sides."""
+    rnd = np.random.default_rng(seed)
+    pts = sorted(set(platform), key=platform.index)
+    idx = [pts.index(b) for b in platform]
+    A = np.array(base, float)
+    L2 = np.array([float(q) for q in l2])
+    P = np.array(pts, float)
+    sides = [(0, 1), (1, 2), (2, 0)]
+    D2 = np.array([np.sum((P[j] - P[k]) ** 2) for j, k in sides])
+    z = rnd.normal(scale=6, size=(starts, 3, 3))
+    for _ in range(60):
+        F = np.zeros((starts, 9))
+        J = np.zeros((starts, 9, 9))
+        for i in range(6):
+            d = z[:, idx[i]] - A[i]
+            F[:, i] = np.sum(d**2, -1) - L2[i]
+            J[:, i, 3 * idx[i]: 3 * idx[i] + 3] = 2 * d
+        for r, (j, k) in enumerate(sides):
+            d = z[:, j] - z[:, k]
+            F[:, 6 + r] = np.sum(d**2, -1) - D2[r]
+            J[:, 6 + r, 3 * j: 3 * j + 3] = 2 * d
+            J[:, 6 + r, 3 * k: 3 * k + 3] = -2 * d
+        try:
+            step = np.linalg.solve(J, F[..., None])[..., 0]
+        except np.linalg.LinAlgError:
+            step = np.linalg.lstsq(J[0], F[0], rcond=None)[0][None] * 0
+        z = z - step.reshape(starts, 3, 3)
+    ok = np.max(np.abs(F), -1) < 1e-9
+    found = []
+    for sol in z[ok]:
+        if not any(np.allclose(sol, f, atol=1e-6) for f in found):
+            found.append(sol)
+    return found
+
+
+@functools.lru_cache(maxsize=1)
+def octahedral():
+    lengths = leg_lengths(OCTA_BASE, OCTA_PLATFORM, POSE)
+    return lengths, direct_kinematics(OCTA_BASE, OCTA_PLATFORM, lengths)
+
+
+def test_octahedral_3_3_round_trip_and_every_mode_closes():
+    lengths, m = octahedral()
+    l2 = [L**2 for L in lengths]
+    assert m.polynomial.degree() == 16  # Nanua, Waldron & Murthy 1990: 16 complex modes
+    assert (POSE[0], POSE[1]) in [mode.pose for mode in m.modes]  # exactly
+    assert len(m.modes) % 2 == 0
+    S = diag(1, 1, -1)
+    mirrored = [(S * mode.position, S * mode.rotation * S) for mode in m.modes]
+    for mode in m.modes:
+        errs = mp_leg_errors(OCTA_BASE, OCTA_PLATFORM, mode.pose, l2)
+        assert max(errs) < mpmath.mpf(10) ** -30
+        R = mode.rotation.evalf(40)
+        assert (R.T * R - eye(3)).norm() < 1e-35 and abs(R.det() - 1) < 1e-35
+    # the mirror image of each mode in the base plane is a mode (the platform is planar)
+    for p, R in mirrored:
+        assert any((p - q.position).evalf(30).norm() < 1e-25 and (R - q.rotation).evalf(30).norm() < 1e-25 for q in m.modes)
+    # completeness, independently: Newton from random starts (NumPy) finds no other mode
+    found = newton_solutions(OCTA_BASE, OCTA_PLATFORM, l2)
+    ours = [np.array([[float(v) for v in (mode.position + mode.rotation * Matrix(b)).evalf(20)] for b in B3]) for mode in m.modes]
+    assert len(found) == len(ours)
+    assert all(any(np.allclose(f, o, atol=1e-6) for o in ours) for f in found)
+
+
+def test_the_spatial_checker_rejects_a_perturbed_or_improper_pose():
+    lengths, m = octahedral()
+    mode = next(mode for mode in m.modes if mode.pose == POSE)
+    assert m.closes(mode.pose)
+    eps = Rational(1, 10**40)
+    assert not m.closes((mode.position + Matrix([eps, 0, 0]), mode.rotation))
+    assert not m.closes((mode.position, mode.rotation * (1 + eps)))
+    # a reflection closes every leg of a planar platform, but is no pose
+    S = diag(1, 1, -1)
+    assert leg_lengths(OCTA_BASE, OCTA_PLATFORM, (POSE[0], POSE[1] * S)) == lengths
+    assert not m.closes((POSE[0], POSE[1] * S))
+
+
+def check_round_trip(base, plat, pose):
+    lengths = leg_lengths(base, plat, pose)
+    m = direct_kinematics(base, plat, lengths)
+    assert m.polynomial.degree() <= 16 and pose in [mode.pose for mode in m.modes]
+    for mode in m.modes:
+        assert max(mp_leg_errors(base, plat, mode.pose, [L**2 for L in lengths])) < mpmath.mpf(10) ** -30
+        assert m.closes(mode.pose) if mode.pose == pose else True
+
+
+PLATFORM63 = [B3[0], B3[0], B3[1], B3[1], B3[2], B3[2]]
+POSE63 = (Matrix([2, 3, 5]), rotation_from_quaternion(2, -1, Rational(1, 2), 1))
+
+
+BASE6 = [(0, 0, 0), (4, -1, 0), (7, 1, 0), (5, 6, 0), (1, 7, 0), (-2, 3, 0)]  # a planar base
+
+
+def test_6_3_round_trip():
+    check_round_trip(BASE6, PLATFORM63, POSE63)
+
+
+@pytest.mark.slow
+def test_3_6_round_trip():
+    # inverted: three base points, six platform points (about 12 s)
+    check_round_trip(PLATFORM63, BASE6, POSE63)
+
+
+@pytest.mark.slow
+def test_6_3_with_a_base_out_of_plane():
+    # SymPy's Groebner basis takes about 70 s here (2 s with a planar base): slow
+    base6 = [(0, 0, 0), (4, -1, 0), (7, 1, 1), (5, 6, 0), (1, 7, -1), (-2, 3, 0)]
+    check_round_trip(base6, PLATFORM63, POSE63)
+
+
+def test_spatial_input_refused_or_not_handled():
+    with pytest.raises(NotImplementedError, match="general 6-6"):
+        direct_kinematics([(i, i * i, 0) for i in range(6)], [(i, 1, i * i) for i in range(6)], [5] * 6)
+    with pytest.raises(ValueError, match="collinear"):
+        direct_kinematics([(0, 0, 0), (1, 0, 0), (1, 0, 0), (2, 0, 0), (2, 0, 0), (0, 0, 0)], OCTA_PLATFORM, [5] * 6)
+    with pytest.raises(ValueError, match="expected 6 leg lengths"):
+        direct_kinematics(OCTA_BASE, OCTA_PLATFORM, [5] * 3)
+    with pytest.raises(ValueError, match="direct_kinematics: the case split needs more work"):
+        direct_kinematics(OCTA_BASE, OCTA_PLATFORM, [5] * 6, budget=1000)
+    with pytest.raises(ValueError, match="pose\\[1\\]"):
+        leg_lengths(OCTA_BASE, OCTA_PLATFORM, (POSE[0], [[1, 0], [0, 1]]))
+
+
+def test_spatial_leg_lengths_is_the_inverse_kinematics():
+    got = leg_lengths(OCTA_BASE, OCTA_PLATFORM, POSE)
+    errs = mp_leg_errors(OCTA_BASE, OCTA_PLATFORM, POSE, [g**2 for g in got])
+    assert max(errs) < mpmath.mpf(10) ** -40
     assert all((g**2).is_Rational for g in got)
