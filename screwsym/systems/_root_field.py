@@ -72,6 +72,12 @@ class RealRoot:
         v = h((low + high) / 2)
         return 1 if v > 0 else (-1 if v < 0 else 0)
 
+    def inverse(self, h: Poly) -> Poly:
+        """``1/h(r)`` in ``Q(r)`` (``h(r) != 0``: the caller checked)."""
+        h = self.reduce(h)
+        charge(self.g.degree() ** 2 * 10)
+        return Poly(1 / h.LC(), self.g.gen, domain="QQ") if h.is_ground else h.invert(self.g)
+
     def value(self, h: Poly) -> Any:
         """``h(r)`` as a SymPy expression (a polynomial in the root, of degree below ``g``'s)."""
         h = self.reduce(h)
