@@ -168,9 +168,6 @@ class AssemblyModes:
             )
         return self.isolated_modes
 
-    def __len__(self) -> int:
-        return len(self.modes)
-
     def closes(self, pose: Sequence) -> bool:
         """Whether ``pose`` gives every leg its length, decided exactly (a float is taken as
         its exact binary value, so a rounded pose does not close).
