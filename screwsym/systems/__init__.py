@@ -4,6 +4,14 @@ Built on :mod:`screwsym.core` and :mod:`screwsym.algebra` alone (Huang, Li & Din
 sibling of :mod:`screwsym.motion`: neither imports the other.
 """
 
+from .assembly import (
+    AssemblyFamily,
+    AssemblyModes,
+    PlanarMode,
+    SpatialMode,
+    direct_kinematics,
+    leg_lengths,
+)
 from .joints import (
     Cylindrical,
     Helical,
@@ -41,4 +49,10 @@ __all__ = [
     "MechanismMobility",
     "SecondOrder",
     "lie_bracket",
+    "direct_kinematics",
+    "leg_lengths",
+    "AssemblyModes",
+    "PlanarMode",
+    "AssemblyFamily",
+    "SpatialMode",
 ]
