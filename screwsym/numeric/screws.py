@@ -69,7 +69,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from sympy import And, Eq, Integer, Piecewise, Rational, nan
+from sympy import And, Eq, ImmutableMatrix, Integer, Ne, Or, Piecewise, Rational, nan, zeros
 
 from ..codegen import code_digest, compiler, lambdify, load_index, resolve_backend, save_index
 from ..core import screw as _core
@@ -182,18 +182,27 @@ def _is_zero(v: Any) -> Any:
     return And(*(Eq(x, 0) for x in v))
 
 
-def _in_range(s: Screw) -> Any:
-    """Where the plain formula of a pitch or foot point is accurate in floats.
+def _in_range(s: Screw) -> tuple[Any, Any]:
+    """Where the plain formula of a pitch or foot point is accurate in floats: two cases.
 
-    ``S . S`` within ``[_LOW, _HIGH]``, and ``S0 . S0`` too unless ``S0`` is
-    zero.  Outside (a screw scaled by ``1e-200`` or ``1e200``, a couple, a
-    part not finite) the generated kernel gives ``nan`` and
+    ``S . S`` within ``[_LOW, _HIGH]`` and ``S0 . S0`` too (the common case,
+    four comparisons), or ``S . S`` within it and ``S0`` zero (a line through
+    the origin).  Outside both (a screw scaled by ``1e-200`` or ``1e200``, a
+    couple, a part not finite) the generated kernel gives ``nan`` and
     :func:`_scale_free` recomputes those elements, and only those, on the
     parts scaled to size 1.  One branch per element: no pass over the array.
+    The cases are separate branches of the ``Piecewise`` (not one ``|``), so
+    that the test of ``S0`` for zero is made only where ``S0 . S0`` is out of
+    range, not for every screw.
     """
     SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
-    return ((SS >= _LOW) & (SS <= _HIGH)
-            & (((S0S0 >= _LOW) & (S0S0 <= _HIGH)) | _is_zero(s.S0)))
+    good = (SS >= _LOW) & (SS <= _HIGH)
+    return good & (S0S0 >= _LOW) & (S0S0 <= _HIGH), good & _is_zero(s.S0)
+
+
+def _is_couple(s: Screw) -> Any:
+    """``S`` zero and ``S0`` not (written with ``Ne``: no test shared with :func:`_in_range`'s)."""
+    return _is_zero(s.S) & Or(*(Ne(x, 0) for x in s.S0))
 
 
 #: the generated functions' definitions, in the order of :data:`NAMES`
@@ -218,13 +227,15 @@ def _pitch() -> _Made:
     array([ 1., inf, nan])
     """
     s = Screw(vector("S"), vector("S0"))
-    # The first branch is the book's formula where the parts are in range (the common case
-    # first: one test per screw); the second says what the symbolic pitch gives for a couple
-    # (oo); the zero screw has none (nan here, an error there), and out of range the nan is
-    # recomputed scaled by the wrapper (see _in_range, which implies S != 0).
+    # The first two branches are the book's formula where the parts are in range (the common
+    # case first: four comparisons per screw); the third says what the symbolic pitch gives
+    # for a couple (oo); the zero screw has none (nan here, an error there), and out of range
+    # the nan is recomputed scaled by the wrapper (see _in_range, which implies S != 0).
+    common, through_origin = _in_range(s)
     return {"s": s}, Piecewise(
-        (_core.pitch(s), _in_range(s)),
-        (_core.pitch(Screw.couple(s.S0)), _is_zero(s.S) & ~_is_zero(s.S0)),
+        (_core.pitch(s), common),
+        (_core.pitch(Screw(s.S, zeros(3, 1))), through_origin),  # 0: S0 is zero there
+        (_core.pitch(Screw.couple(s.S0)), _is_couple(s)),
         (nan, True),
     )
 
@@ -245,8 +256,11 @@ def _foot() -> _Made:
     array([ 0. ,  0. , -0.5])
     """
     s = Screw(vector("S"), vector("S0"))
-    good = _in_range(s)  # else nan, then recomputed scaled by the wrapper (see _in_range)
-    return {"s": s}, _core.foot(s).applyfunc(lambda e: Piecewise((e, good), (nan, True)))
+    common, through_origin = _in_range(s)  # else nan, recomputed scaled by the wrapper
+    at_origin = _core.foot(Screw(s.S, zeros(3, 1)))  # zero: S0 is zero there
+    return {"s": s}, ImmutableMatrix(
+        [Piecewise((e, common), (o, through_origin), (nan, True))
+         for e, o in zip(_core.foot(s), at_origin, strict=True)])
 
 
 @numeric_definition
@@ -390,14 +404,48 @@ def _scale_free(fn: Callable, name: str) -> Callable:
     (:func:`_in_range`, one branch per element) leaves ``nan`` where ``S . S``
     or ``S0 . S0`` is out of range.  Only those elements (``nan`` results:
     also the zero screw, a couple's foot point and non-finite input, which
-    come back the same) are computed again by :func:`_rescaled`.  The one
-    extra pass is ``isnan`` over the result.  Input that is not a float or
-    integer array ending in 6 is answered by ``fn`` (its own checks).
+    come back the same) are computed again by :func:`_rescaled`.  The C
+    kernel counts the rows it left ``nan`` as it goes (see
+    :func:`screwsym.codegen._emit.c_source`): for a contiguous ``float64``
+    batch the wrapper calls it directly and looks at the result again only
+    where that count is not zero; other input, and the other back ends, take
+    the generated function's own path and one ``isnan`` pass over the result.
+    Input that is not a float or integer array ending in 6 is answered by
+    ``fn`` (its own checks).
     """
 
-    pitch, float64, isnan = name == "pitch", np.float64, math.isnan
+    pitch, float64, isnan, ndarray = name == "pitch", np.float64, math.isnan, np.ndarray
+    kernel = getattr(fn, "kernel", None)  # the C loop, which returns its count of nan rows
+    trailing = () if pitch else (3,)
+    empty, may_share = np.empty, np.may_share_memory
+
+    def redo(s: Any, r: Any, first: Any) -> None:
+        """Recompute the rows of ``r`` (``first``: its first number per screw) that are nan."""
+        where = np.nonzero(np.isnan(first))
+        a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
+        r[where] = _rescaled(fn, a[where], name)
+
+    def direct(s: ndarray, out: Any) -> Any:
+        """The C loop on a contiguous float64 batch (and a fitting ``out``), or None."""
+        shape = s.shape[:-1]
+        if out is None:
+            r = empty(shape + trailing)
+        elif (type(out) is ndarray and out.dtype == float64 and out.shape == shape + trailing
+              and out.flags.c_contiguous and out.flags.writeable and not may_share(out, s)):
+            r = out
+        else:
+            return None
+        n = s.size // 6
+        if kernel(n, s.reshape(n, 6), r.reshape(n, -1) if trailing else r.reshape(n)):
+            redo(s, r, r if pitch else r[..., 0])
+        return r
 
     def scaled(s: Any, *, out: Any = None) -> Any:
+        if (kernel is not None and type(s) is ndarray and s.ndim > 1 and s.dtype == float64
+                and s.shape[-1] == 6 and s.flags.c_contiguous):
+            done = direct(s, out)
+            if done is not None:
+                return done
         result = fn(s, out=out)
         r = result if out is None else out
         # one number per screw (a float for one screw: r[..., 0] would be a 0-d array)
@@ -415,9 +463,7 @@ def _scale_free(fn: Callable, name: str) -> Callable:
         # (isnan(first).any() wrote one), and the flags only where a nan is
         if r.size == 0 or not isnan(np.minimum.reduce(r, axis=None)):  # r: contiguous, often
             return result
-        where = np.nonzero(np.isnan(first))
-        a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
-        r[where] = _rescaled(fn, a[where], name)
+        redo(s, r, first)
         return result
 
     scaled.__name__ = scaled.__qualname__ = fn.__name__
