@@ -69,7 +69,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from sympy import And, Eq, ImmutableMatrix, Integer, Ne, Or, Piecewise, Rational, nan, zeros
+from sympy import And, Eq, Integer, Ne, Or, Piecewise, Rational, cancel, nan, zeros
 
 from ..codegen import code_digest, compiler, lambdify, load_index, resolve_backend, save_index
 from ..core import screw as _core
@@ -78,6 +78,7 @@ from ..core.screw import Screw
 from ..core.twist import Twist
 from ..core.vectors import vector
 from ..core.wrench import Wrench
+from ._direct import direct
 
 #: what a definition returns: its generic arguments by parameter name, in order, and the
 #: core's operation applied to them
@@ -189,7 +190,7 @@ def _in_range(s: Screw) -> tuple[Any, Any]:
     four comparisons), or ``S . S`` within it and ``S0`` zero (a line through
     the origin).  Outside both (a screw scaled by ``1e-200`` or ``1e200``, a
     couple, a part not finite) the generated kernel gives ``nan`` and
-    :func:`_scale_free` recomputes those elements, and only those, on the
+    :func:`_wrapped` recomputes those elements, and only those, on the
     parts scaled to size 1.  One branch per element: no pass over the array.
     The cases are separate branches of the ``Piecewise`` (not one ``|``), so
     that the test of ``S0`` for zero is made only where ``S0 . S0`` is out of
@@ -256,11 +257,13 @@ def _foot() -> _Made:
     array([ 0. ,  0. , -0.5])
     """
     s = Screw(vector("S"), vector("S0"))
-    common, through_origin = _in_range(s)  # else nan, recomputed scaled by the wrapper
-    at_origin = _core.foot(Screw(s.S, zeros(3, 1)))  # zero: S0 is zero there
-    return {"s": s}, ImmutableMatrix(
-        [Piecewise((e, common), (o, through_origin), (nan, True))
-         for e, o in zip(_core.foot(s), at_origin, strict=True)])
+    # (1.16) as S x S0 times one factor 1/S.S, which carries the guard: one Piecewise per
+    # screw (not one per component, each testing S0 for zero); the factor is 0 where S0 is
+    # zero (the foot is the origin there) and nan out of range, recomputed by the wrapper
+    SS = s.S.dot(s.S)
+    cross = _core.foot(s).applyfunc(lambda e: cancel(e * SS))  # S x S0, from the core's (1.16)
+    common, through_origin = _in_range(s)
+    return {"s": s}, cross * Piecewise((1 / SS, common), (0, through_origin), (nan, True))
 
 
 @numeric_definition
@@ -397,27 +400,28 @@ def _rescaled(fn: Callable, a: np.ndarray, name: str) -> Any:
         return np.ldexp(fn(x), shift)
 
 
-def _scale_free(fn: Callable, name: str) -> Callable:
-    """``fn`` (whose kernel gives ``nan`` where its parts are out of range) made scale-free.
+def _wrapped(fn: Callable, name: str) -> Callable:
+    """``fn`` with the direct call of its C loop on plain batches, and scale-free where it must be.
 
-    The kernel runs once over the whole array at memory speed; its guard
-    (:func:`_in_range`, one branch per element) leaves ``nan`` where ``S . S``
-    or ``S0 . S0`` is out of range.  Only those elements (``nan`` results:
-    also the zero screw, a couple's foot point and non-finite input, which
-    come back the same) are computed again by :func:`_rescaled`.  The C
-    kernel counts the rows it left ``nan`` as it goes (see
-    :func:`screwsym.codegen._emit.c_source`): for a contiguous ``float64``
-    batch the wrapper calls it directly and looks at the result again only
-    where that count is not zero; other input, and the other back ends, take
-    the generated function's own path and one ``isnan`` pass over the result.
+    For a C function, a plain batch (see :mod:`screwsym.numeric._direct`) runs
+    the loop directly, into a recycled result where the last one was let go;
+    anything else takes the generated function's own path.  For the pitch and
+    the foot point (:data:`SCALE_FREE`) the kernel's guard (:func:`_in_range`,
+    one branch per element) leaves ``nan`` where ``S . S`` or ``S0 . S0`` is out
+    of range; only those elements (``nan`` results: also the zero screw, a
+    couple's foot point and non-finite input, which come back the same) are
+    computed again by :func:`_rescaled`.  The C loop counts the rows it left
+    ``nan``, so the direct path looks at the result again only where that count
+    is not zero; the other paths take one ``isnan`` pass over the result.
     Input that is not a float or integer array ending in 6 is answered by
-    ``fn`` (its own checks).
+    ``fn`` (its own checks).  Returns ``fn`` itself where there is nothing to add
+    (no C loop, not scale-free).
     """
-
-    pitch, float64, isnan, ndarray = name == "pitch", np.float64, math.isnan, np.ndarray
-    kernel = getattr(fn, "kernel", None)  # the C loop, which returns its count of nan rows
-    trailing = () if pitch else (3,)
-    empty, may_share = np.empty, np.may_share_memory
+    call = direct(fn)
+    scale_free = name in SCALE_FREE
+    if call is None and not scale_free:
+        return fn
+    pitch, float64, isnan = name == "pitch", np.float64, math.isnan
 
     def redo(s: Any, r: Any, first: Any) -> None:
         """Recompute the rows of ``r`` (``first``: its first number per screw) that are nan."""
@@ -425,28 +429,18 @@ def _scale_free(fn: Callable, name: str) -> Callable:
         a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
         r[where] = _rescaled(fn, a[where], name)
 
-    def direct(s: ndarray, out: Any) -> Any:
-        """The C loop on a contiguous float64 batch (and a fitting ``out``), or None."""
-        shape = s.shape[:-1]
-        if out is None:
-            r = empty(shape + trailing)
-        elif (type(out) is ndarray and out.dtype == float64 and out.shape == shape + trailing
-              and out.flags.c_contiguous and out.flags.writeable and not may_share(out, s)):
-            r = out
-        else:
-            return None
-        n = s.size // 6
-        if kernel(n, s.reshape(n, 6), r.reshape(n, -1) if trailing else r.reshape(n)):
-            redo(s, r, r if pitch else r[..., 0])
-        return r
-
-    def scaled(s: Any, *, out: Any = None) -> Any:
-        if (kernel is not None and type(s) is ndarray and s.ndim > 1 and s.dtype == float64
-                and s.shape[-1] == 6 and s.flags.c_contiguous):
-            done = direct(s, out)
+    def wrapper(*args: Any, out: Any = None, **kwargs: Any) -> Any:
+        if call is not None and not kwargs:
+            done = call(args, out)
             if done is not None:
-                return done
-        result = fn(s, out=out)
+                r, count = done
+                if count and scale_free:
+                    redo(args[0], r, r if pitch else r[..., 0])
+                return r
+        result = fn(*args, out=out, **kwargs)
+        if not scale_free:
+            return result
+        s = args[0] if args else next(iter(kwargs.values()))
         r = result if out is None else out
         # one number per screw (a float for one screw: r[..., 0] would be a 0-d array)
         first = r if pitch else r[0] if r.ndim == 1 else r[..., 0]
@@ -466,11 +460,11 @@ def _scale_free(fn: Callable, name: str) -> Callable:
         redo(s, r, first)
         return result
 
-    scaled.__name__ = scaled.__qualname__ = fn.__name__
-    scaled.__doc__ = fn.__doc__
-    scaled.__wrapped__ = fn  # type: ignore[attr-defined]
-    scaled.__dict__.update({k: v for k, v in vars(fn).items() if k != "__wrapped__"})
-    return scaled
+    wrapper.__name__ = wrapper.__qualname__ = fn.__name__
+    wrapper.__doc__ = fn.__doc__
+    wrapper.__wrapped__ = fn  # type: ignore[attr-defined]
+    wrapper.__dict__.update({k: v for k, v in vars(fn).items() if k != "__wrapped__"})
+    return wrapper
 
 
 def default_backend() -> str:
@@ -499,17 +493,16 @@ def _function(name: str, backend: str | None = None) -> Callable:
     if fn is None:
         with _LOCK:
             fn = _BUILT.get(key)
-            definition = DEFINITIONS[name]
-            tag = f"{name}-{code_digest()}"
-            if fn is None:
+            if fn is None:  # (another thread may have made it meanwhile)
+                definition = DEFINITIONS[name]
+                tag = f"{name}-{code_digest()}"
                 fn = load_index(tag, definition.doc, backend)
-            if fn is None:
-                args, expr, names = definition.build()
-                fn = lambdify(args, expr, backend, name=name, names=names, doc=definition.doc)
-                save_index(tag, fn)
-            if name in SCALE_FREE:
-                fn = _scale_free(fn, name)
-            _BUILT[key] = fn
+                if fn is None:
+                    args, expr, names = definition.build()
+                    fn = lambdify(args, expr, backend, name=name, names=names,
+                                  doc=definition.doc)
+                    save_index(tag, fn)
+                fn = _BUILT[key] = _wrapped(fn, name)
     return fn
 
 
