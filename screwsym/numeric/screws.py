@@ -78,7 +78,7 @@ from ..core.screw import Screw
 from ..core.twist import Twist
 from ..core.vectors import vector
 from ..core.wrench import Wrench
-from ._direct import direct
+from ._direct import direct, entry
 
 #: what a definition returns: its generic arguments by parameter name, in order, and the
 #: core's operation applied to them
@@ -429,38 +429,44 @@ def _wrapped(fn: Callable, name: str) -> Callable:
         a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
         r[where] = _rescaled(fn, a[where], name)
 
-    def wrapper(*args: Any, out: Any = None, **kwargs: Any) -> Any:
-        if call is not None and not kwargs:
+    def one(s: Any, result: Any, out: Any = None) -> Any:
+        """``result`` of one screw ``s``, recomputed scaled where it is nan."""
+        if not isnan(result if pitch else result[0]):  # the common case (math.isnan: 40 ns)
+            return result
+        again = _rescaled(fn, np.asarray(s, dtype=np.float64), name)
+        if out is None:
+            return again
+        out[...] = again
+        return result if isinstance(result, np.ndarray) else out[()]  # a 0-d out
+
+    def rest(args: tuple, out: Any) -> Any:
+        """Everything but one screw: the direct call of the C loop, else the generated path."""
+        if call is not None:
             done = call(args, out)
             if done is not None:
                 r, count = done
                 if count and scale_free:
                     redo(args[0], r, r if pitch else r[..., 0])
                 return r
-        result = fn(*args, out=out, **kwargs)
+        result = fn(*args, out=out)
         if not scale_free:
             return result
-        s = args[0] if args else next(iter(kwargs.values()))
         r = result if out is None else out
         # one number per screw (a float for one screw: r[..., 0] would be a 0-d array)
         first = r if pitch else r[0] if r.ndim == 1 else r[..., 0]
         if type(first) is float64 or first.ndim == 0:  # one screw (np.ndim: 2 us a call)
-            if not isnan(first):  # the common case (math.isnan: 40 ns; np.isnan 1 us)
-                return result
-            a = np.asarray(s, dtype=np.float64)
-            again = _rescaled(fn, a, name)
-            if out is None:
-                return again
-            out[...] = again
-            return result if isinstance(result, np.ndarray) else out[()]  # a 0-d out
+            return one(args[0], result, out)
         # numpy.minimum propagates nan: one read of the result, no array of flags made
         # (isnan(first).any() wrote one), and the flags only where a nan is
         if r.size == 0 or not isnan(np.minimum.reduce(r, axis=None)):  # r: contiguous, often
             return result
-        redo(s, r, first)
+        redo(args[0], r, first)
         return result
 
+    # one screw: the C extension's point function first, as in the generated function
+    wrapper = entry(fn, rest, one if scale_free else None)
     wrapper.__name__ = wrapper.__qualname__ = fn.__name__
+    wrapper.__module__ = __name__  # pickled by reference: screws.<name> (see __getattr__)
     wrapper.__doc__ = fn.__doc__
     wrapper.__wrapped__ = fn  # type: ignore[attr-defined]
     wrapper.__dict__.update({k: v for k, v in vars(fn).items() if k != "__wrapped__"})
