@@ -312,14 +312,16 @@ def _c_chunks(plan: Plan, cname: str, printer: CPrinter,
 
 #: how far ahead the loop asks for its input rows, in bytes of the widest row, in each of
 #: its :data:`STRETCHES`: a loop with a few operations per row leaves too few cache misses
-#: in flight to read at the memory's speed (``numeric.pitch`` on 10^6 screws, C alone:
-#: 4.2 ns a screw for one stretch 6 KB ahead, 3.1 for four stretches 3 KB ahead each)
+#: in flight to read at the memory's speed (``numeric.pitch`` on 10^6 screws, at the time
+#: of a PLT call per row: 7.2 -> 5.6 ns a screw with 6 KB ahead; distances of 1.5-6 KB
+#: measure alike since)
 PREFETCH_BYTES = 3072
 
 #: the loop reads the rows in this many stretches in turn (row ``i`` of each, then row
-#: ``i + 1`` of each): one core has more reads in flight over four streams than over one
-#: (a bare sum of the 6 doubles of 10^6 screws: 4.7 ns a screw in one pass, 4.1 with the
-#: prefetch, 3.4 in four stretches, the time of ``memcpy`` of the same bytes)
+#: ``i + 1`` of each): one core can have more reads in flight over several streams (a
+#: bare sum of the 6 doubles of 10^6 screws in hand C, load average 2: 4.7 ns a screw in
+#: one pass, 4.0 with the prefetch, 3.4-3.6 in four stretches; under a load of 6, one and
+#: four stretches measure alike)
 STRETCHES = 4
 
 #: the loop is compiled twice where GCC and glibc can (function multiversioning: the

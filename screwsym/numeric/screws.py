@@ -37,6 +37,13 @@ without SymPy work (and numba's cache spares it the compilation, the C
 library is loaded as it is).  :func:`functions_for` gives the same set
 for a chosen back end, e.g. ``functions_for("numpy")`` or ``functions_for("c")``.
 
+With the C back end a batch of C-contiguous ``float64`` arrays goes to the
+compiled loop directly, and a large result (1 to 64 MB) that the caller has let
+go is handed out again by the next call of the same function, instead of fresh
+memory that the system must zero first (:mod:`screwsym.numeric._direct`): a
+result still referenced in any way (a name, a view, a list) is never reused, and
+at most one such array per function stays held after its last use.
+
 Examples
 ========
 
