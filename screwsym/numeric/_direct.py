@@ -182,11 +182,12 @@ def _no_point(*args: Any) -> None:
 
 
 def entry(fn: Any, rest: Callable, one: Callable | None = None) -> Callable:
-    """A function of ``fn``'s parameters (by position or name, and ``out=``) that calls
+    """A function of ``fn``'s parameters (by position or name) and ``out=``, calling its C parts.
 
-    the C extension's one-point function of ``fn`` first (for one point it returns the
-    result, passed through ``one(arg0, result)`` where given), and ``rest(args, out)``
-    for everything else (a batch, ``out=``, or no extension).
+    It calls the C extension's one-point function of ``fn`` first (for one
+    point that returns the result, passed through ``one(arg0, result)`` where
+    given), and ``rest(args, out)`` for everything else (a batch, ``out=``, or
+    no extension).
 
     >>> def rest(args, out):
     ...     return ("rest", args, out)
