@@ -277,12 +277,13 @@ def c_source(
     Explanation
     ===========
 
-    Two functions are written: ``screwsym_NAME_point`` evaluates one point
+    Two functions are exported: ``screwsym_NAME_point`` evaluates one point
     (a scalar argument is a ``double``, a vector or screw a pointer to its 3
-    or 6 doubles, each result a pointer to its doubles), and
+    or 6 doubles, each result a pointer to its doubles; its code is the
+    ``static inline`` ``screwsym_NAME_eval``, which the loop inlines), and
     ``screwsym_NAME`` loops over ``n`` points, reading row ``i`` of each
     input at ``ptr + i*step`` (``step`` is the row length, or 0 to broadcast
-    one row).  Screws are in the book's order ``(S; S0)``.  Link with
+    one row), and returns the number of points whose first result is ``nan``.  Screws are in the book's order ``(S; S0)``.  Link with
     ``-lm``.  Every identifier is screwsym's (``_a0``, ``_x0``, ``_c0``,
     ``_o0``); ``NAME`` is checked to be an identifier and prefixed.  The
     semantics are those of :func:`lambdify` (see the package docstring).
@@ -294,9 +295,9 @@ def c_source(
     >>> from screwsym.codegen import c_source
     >>> s1, s2 = Screw(vector("S"), vector("S0")), Screw(vector("T"), vector("T0"))
     >>> src = c_source([s1, s2], reciprocal_product(s1, s2), name="recip", names=["s1", "s2"])
-    >>> start, end = src.index("void screwsym_recip_point"), src.index("void screwsym_recip(")
+    >>> start, end = src.index("static inline void screwsym_recip_eval"), src.index("void screwsym_recip_point")
     >>> print(src[start:end].strip())
-    void screwsym_recip_point(const double *restrict _a0, const double *restrict _a1, double *restrict _o0)
+    static inline void screwsym_recip_eval(const double *restrict _a0, const double *restrict _a1, double *restrict _o0)
     {
         const double _x0 = _a0[0];
         const double _x1 = _a0[1];

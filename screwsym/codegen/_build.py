@@ -535,16 +535,16 @@ def _c_function(plan: Plan, lib: Any, text: str, doc: str, point: Any = None) ->
         argtypes += [ptr, ctypes.c_ssize_t]
     argtypes += [ptr] * len(plan.outs)
     cfunc.argtypes = argtypes
-    cfunc.restype = None
+    cfunc.restype = ctypes.c_size_t  # the rows whose first result is nan
     steps = [spec.size for spec in plan.specs]
 
-    def kernel(n: int, *arrays: np.ndarray) -> None:
+    def kernel(n: int, *arrays: np.ndarray) -> int:
         ins, outs = arrays[: len(steps)], arrays[len(steps) :]
         call: list = [n]
         for arr, step in zip(ins, steps, strict=True):
             call += [arr.ctypes.data_as(ptr), step if arr.shape[0] != 1 else 0]
         call += [o.ctypes.data_as(ptr) for o in outs]
-        cfunc(*call)
+        return cfunc(*call)
 
     ns = _namespace(plan)
     ns["_kernel"] = kernel

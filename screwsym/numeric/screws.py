@@ -37,6 +37,13 @@ without SymPy work (and numba's cache spares it the compilation, the C
 library is loaded as it is).  :func:`functions_for` gives the same set
 for a chosen back end, e.g. ``functions_for("numpy")`` or ``functions_for("c")``.
 
+With the C back end a batch of C-contiguous ``float64`` arrays goes to the
+compiled loop directly, and a large result (1 to 64 MB) that the caller has let
+go is handed out again by the next call of the same function, instead of fresh
+memory that the system must zero first (:mod:`screwsym.numeric._direct`): a
+result still referenced in any way (a name, a view, a list) is never reused, and
+at most one such array per function stays held after its last use.
+
 Examples
 ========
 
@@ -69,7 +76,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from sympy import And, Eq, Integer, Piecewise, Rational, nan
+from sympy import And, Eq, Integer, Ne, Or, Piecewise, Rational, cancel, nan, zeros
 
 from ..codegen import code_digest, compiler, lambdify, load_index, resolve_backend, save_index
 from ..core import screw as _core
@@ -78,6 +85,7 @@ from ..core.screw import Screw
 from ..core.twist import Twist
 from ..core.vectors import vector
 from ..core.wrench import Wrench
+from ._direct import direct, entry
 
 #: what a definition returns: its generic arguments by parameter name, in order, and the
 #: core's operation applied to them
@@ -182,18 +190,27 @@ def _is_zero(v: Any) -> Any:
     return And(*(Eq(x, 0) for x in v))
 
 
-def _in_range(s: Screw) -> Any:
-    """Where the plain formula of a pitch or foot point is accurate in floats.
+def _in_range(s: Screw) -> tuple[Any, Any]:
+    """Where the plain formula of a pitch or foot point is accurate in floats: two cases.
 
-    ``S . S`` within ``[_LOW, _HIGH]``, and ``S0 . S0`` too unless ``S0`` is
-    zero.  Outside (a screw scaled by ``1e-200`` or ``1e200``, a couple, a
-    part not finite) the generated kernel gives ``nan`` and
-    :func:`_scale_free` recomputes those elements, and only those, on the
+    ``S . S`` within ``[_LOW, _HIGH]`` and ``S0 . S0`` too (the common case,
+    four comparisons), or ``S . S`` within it and ``S0`` zero (a line through
+    the origin).  Outside both (a screw scaled by ``1e-200`` or ``1e200``, a
+    couple, a part not finite) the generated kernel gives ``nan`` and
+    :func:`_wrapped` recomputes those elements, and only those, on the
     parts scaled to size 1.  One branch per element: no pass over the array.
+    The cases are separate branches of the ``Piecewise`` (not one ``|``), so
+    that the test of ``S0`` for zero is made only where ``S0 . S0`` is out of
+    range, not for every screw.
     """
     SS, S0S0 = s.S.dot(s.S), s.S0.dot(s.S0)
-    return ((SS >= _LOW) & (SS <= _HIGH)
-            & (((S0S0 >= _LOW) & (S0S0 <= _HIGH)) | _is_zero(s.S0)))
+    good = (SS >= _LOW) & (SS <= _HIGH)
+    return good & (S0S0 >= _LOW) & (S0S0 <= _HIGH), good & _is_zero(s.S0)
+
+
+def _is_couple(s: Screw) -> Any:
+    """``S`` zero and ``S0`` not (written with ``Ne``: no test shared with :func:`_in_range`'s)."""
+    return _is_zero(s.S) & Or(*(Ne(x, 0) for x in s.S0))
 
 
 #: the generated functions' definitions, in the order of :data:`NAMES`
@@ -218,13 +235,15 @@ def _pitch() -> _Made:
     array([ 1., inf, nan])
     """
     s = Screw(vector("S"), vector("S0"))
-    # The first branch is the book's formula where the parts are in range (the common case
-    # first: one test per screw); the second says what the symbolic pitch gives for a couple
-    # (oo); the zero screw has none (nan here, an error there), and out of range the nan is
-    # recomputed scaled by the wrapper (see _in_range, which implies S != 0).
+    # The first two branches are the book's formula where the parts are in range (the common
+    # case first: four comparisons per screw); the third says what the symbolic pitch gives
+    # for a couple (oo); the zero screw has none (nan here, an error there), and out of range
+    # the nan is recomputed scaled by the wrapper (see _in_range, which implies S != 0).
+    common, through_origin = _in_range(s)
     return {"s": s}, Piecewise(
-        (_core.pitch(s), _in_range(s)),
-        (_core.pitch(Screw.couple(s.S0)), _is_zero(s.S) & ~_is_zero(s.S0)),
+        (_core.pitch(s), common),
+        (_core.pitch(Screw(s.S, zeros(3, 1))), through_origin),  # 0: S0 is zero there
+        (_core.pitch(Screw.couple(s.S0)), _is_couple(s)),
         (nan, True),
     )
 
@@ -245,8 +264,13 @@ def _foot() -> _Made:
     array([ 0. ,  0. , -0.5])
     """
     s = Screw(vector("S"), vector("S0"))
-    good = _in_range(s)  # else nan, then recomputed scaled by the wrapper (see _in_range)
-    return {"s": s}, _core.foot(s).applyfunc(lambda e: Piecewise((e, good), (nan, True)))
+    # (1.16) as S x S0 times one factor 1/S.S, which carries the guard: one Piecewise per
+    # screw (not one per component, each testing S0 for zero); the factor is 0 where S0 is
+    # zero (the foot is the origin there) and nan out of range, recomputed by the wrapper
+    SS = s.S.dot(s.S)
+    cross = _core.foot(s).applyfunc(lambda e: cancel(e * SS))  # S x S0, from the core's (1.16)
+    common, through_origin = _in_range(s)
+    return {"s": s}, cross * Piecewise((1 / SS, common), (0, through_origin), (nan, True))
 
 
 @numeric_definition
@@ -383,48 +407,77 @@ def _rescaled(fn: Callable, a: np.ndarray, name: str) -> Any:
         return np.ldexp(fn(x), shift)
 
 
-def _scale_free(fn: Callable, name: str) -> Callable:
-    """``fn`` (whose kernel gives ``nan`` where its parts are out of range) made scale-free.
+def _wrapped(fn: Callable, name: str) -> Callable:
+    """``fn`` with the direct call of its C loop on plain batches, and scale-free where it must be.
 
-    The kernel runs once over the whole array at memory speed; its guard
-    (:func:`_in_range`, one branch per element) leaves ``nan`` where ``S . S``
-    or ``S0 . S0`` is out of range.  Only those elements (``nan`` results:
-    also the zero screw, a couple's foot point and non-finite input, which
-    come back the same) are computed again by :func:`_rescaled`.  The one
-    extra pass is ``isnan`` over the result.  Input that is not a float or
-    integer array ending in 6 is answered by ``fn`` (its own checks).
+    For a C function, a plain batch (see :mod:`screwsym.numeric._direct`) runs
+    the loop directly, into a recycled result where the last one was let go;
+    anything else takes the generated function's own path.  For the pitch and
+    the foot point (:data:`SCALE_FREE`) the kernel's guard (:func:`_in_range`,
+    one branch per element) leaves ``nan`` where ``S . S`` or ``S0 . S0`` is out
+    of range; only those elements (``nan`` results: also the zero screw, a
+    couple's foot point and non-finite input, which come back the same) are
+    computed again by :func:`_rescaled`.  The C loop counts the rows it left
+    ``nan``, so the direct path looks at the result again only where that count
+    is not zero; the other paths take one ``isnan`` pass over the result.
+    Input that is not a float or integer array ending in 6 is answered by
+    ``fn`` (its own checks).  Returns ``fn`` itself where there is nothing to add
+    (no C loop, not scale-free).
     """
-
+    call = direct(fn)
+    scale_free = name in SCALE_FREE
+    if call is None and not scale_free:
+        return fn
     pitch, float64, isnan = name == "pitch", np.float64, math.isnan
 
-    def scaled(s: Any, *, out: Any = None) -> Any:
-        result = fn(s, out=out)
+    def redo(s: Any, r: Any, first: Any) -> None:
+        """Recompute the rows of ``r`` (``first``: its first number per screw) that are nan."""
+        where = np.nonzero(np.isnan(first))
+        a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
+        r[where] = _rescaled(fn, a[where], name)
+
+    def one(s: Any, result: Any, out: Any = None) -> Any:
+        """``result`` of one screw ``s``, recomputed scaled where it is nan."""
+        if not isnan(result if pitch else result[0]):  # the common case (math.isnan: 40 ns)
+            return result
+        again = _rescaled(fn, np.asarray(s, dtype=np.float64), name)
+        if out is None:
+            return again
+        out[...] = again
+        return result if isinstance(result, np.ndarray) else out[()]  # a 0-d out
+
+    def rest(args: tuple, out: Any) -> Any:
+        """Everything but one screw: the direct call of the C loop, else the generated path."""
+        if call is not None:
+            done = call(args, out)
+            if done is not None:
+                r, count = done
+                if count and scale_free:
+                    redo(args[0], r, r if pitch else r[..., 0])
+                return r
+        result = fn(*args, out=out)
+        if not scale_free:
+            return result
         r = result if out is None else out
         # one number per screw (a float for one screw: r[..., 0] would be a 0-d array)
         first = r if pitch else r[0] if r.ndim == 1 else r[..., 0]
         if type(first) is float64 or first.ndim == 0:  # one screw (np.ndim: 2 us a call)
-            if not isnan(first):  # the common case (math.isnan: 40 ns; np.isnan 1 us)
-                return result
-            a = np.asarray(s, dtype=np.float64)
-            again = _rescaled(fn, a, name)
-            if out is None:
-                return again
-            out[...] = again
-            return result if isinstance(result, np.ndarray) else out[()]  # a 0-d out
+            return one(args[0], result, out)
         # numpy.minimum propagates nan: one read of the result, no array of flags made
         # (isnan(first).any() wrote one), and the flags only where a nan is
         if r.size == 0 or not isnan(np.minimum.reduce(r, axis=None)):  # r: contiguous, often
             return result
-        where = np.nonzero(np.isnan(first))
-        a = np.broadcast_to(np.asarray(s, dtype=np.float64), first.shape + (6,))
-        r[where] = _rescaled(fn, a[where], name)
+        redo(args[0], r, first)
         return result
 
-    scaled.__name__ = scaled.__qualname__ = fn.__name__
-    scaled.__doc__ = fn.__doc__
-    scaled.__wrapped__ = fn  # type: ignore[attr-defined]
-    scaled.__dict__.update({k: v for k, v in vars(fn).items() if k != "__wrapped__"})
-    return scaled
+    # one screw: the C extension's point function first, as in the generated function
+    wrapper = entry(fn, rest, one if scale_free else None)
+    wrapper.__name__ = wrapper.__qualname__ = fn.__name__
+    wrapper.__module__ = __name__  # pickled by reference: screws.<name> (see __getattr__)
+    wrapper.__doc__ = fn.__doc__
+    wrapper.__wrapped__ = fn  # type: ignore[attr-defined]
+    wrapper.__dict__.update({k: v for k, v in vars(fn).items() if k != "__wrapped__"})
+    return wrapper
 
 
 def default_backend() -> str:
@@ -453,17 +506,16 @@ def _function(name: str, backend: str | None = None) -> Callable:
     if fn is None:
         with _LOCK:
             fn = _BUILT.get(key)
-            definition = DEFINITIONS[name]
-            tag = f"{name}-{code_digest()}"
-            if fn is None:
+            if fn is None:  # (another thread may have made it meanwhile)
+                definition = DEFINITIONS[name]
+                tag = f"{name}-{code_digest()}"
                 fn = load_index(tag, definition.doc, backend)
-            if fn is None:
-                args, expr, names = definition.build()
-                fn = lambdify(args, expr, backend, name=name, names=names, doc=definition.doc)
-                save_index(tag, fn)
-            if name in SCALE_FREE:
-                fn = _scale_free(fn, name)
-            _BUILT[key] = fn
+                if fn is None:
+                    args, expr, names = definition.build()
+                    fn = lambdify(args, expr, backend, name=name, names=names,
+                                  doc=definition.doc)
+                    save_index(tag, fn)
+                fn = _BUILT[key] = _wrapped(fn, name)
     return fn
 
 

@@ -277,7 +277,7 @@ def test_c_source_is_plain_c99_from_sympy_printers():
     src = c_source([s], pitch(s), name="p")
     assert "#include <math.h>" in src
     assert "void screwsym_p_point(const double *restrict _a0, double *restrict _o0)" in src
-    assert "void screwsym_p(size_t n, const double *_a0, ptrdiff_t _s0, double *_o0)" in src
+    assert "size_t screwsym_p(size_t n, const double *_a0, ptrdiff_t _s0, double *_o0)" in src
     assert "pow(_x0, 2.0)" in src  # SymPy's C99 printer, integers as doubles
 
 
