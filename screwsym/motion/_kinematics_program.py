@@ -46,6 +46,9 @@ __all__ = ["kinematics_program"]
 
 WHAT = ("forward", "jacobian")
 
+#: the forms of ``Chain.forward`` and ``Chain.jacobian``: tidied (the default), the nested product
+FORMS = ("tidy", "product")
+
 
 def _exponential(W: _Writer, twist: Any, qk: Symbol, k: int) -> tuple[list, list]:
     """``exp6($_k, q_k)`` as ``(R, p)`` entries in ``c_k, s_k`` (assigned) and constants.
@@ -219,11 +222,13 @@ def product_forward(twists: Any, home: Any, q: tuple) -> tuple[ImmutableMatrix, 
     >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
     ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])], Transform.translation([2, 0, 0]))
     >>> q = symbols("q1 q2", real=True)
-    >>> R, p = product_forward(arm.twists, arm.home, q)
-    >>> R[0, 0], arm.forward(q).R[0, 0]
+    >>> T = arm.forward(q, form="product")
+    >>> T.R[0, 0], arm.forward(q).R[0, 0]
     (-sin(q1)*sin(q2) + cos(q1)*cos(q2), cos(q1 + q2))
-    >>> p[0]
-    2*(-sin(q1)*sin(q2) + cos(q1)*cos(q2))*1 + ...
+    >>> T.p[0]
+    (1 - cos(q2))*cos(q1) - sin(q1)*sin(q2) + 2*cos(q1)*cos(q2)
+    >>> arm.jacobian(q, form="product")[3:, 1].T
+    Matrix([[sin(q1), -cos(q1), 0]])
     """
     R, p = _products(twists, q).upto(len(twists))[-1]
     HR = [[sympify(home.R[i, j], strict=True) for j in range(3)] for i in range(3)]
