@@ -150,3 +150,45 @@ def test_packing_round_trips(k):
     for P in [x for row in R for x in row] + p:
         for monom, _ in P.terms():
             assert writer._unpack(_pack(monom)) == tuple((g, e) for g, e in enumerate(monom) if e)
+
+
+def test_sums_and_products_of_the_writer_equal_add_and_mul_argument_for_argument():
+    # _sum (Add without flatten) and _times (Mul without flatten) against Add(*...) and Mul(*...)
+    from sympy import Add
+
+    from screwsym.motion._poe_writer import _sum
+
+    m = symbols("m", positive=True)
+    zdd, a = symbols("zdd a", real=True)
+    q = symbols("q1:4", real=True)
+    chain = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]), Twist.rotation([0, 1, 0], point=[a, 0, 0]),
+                   Twist.translation([1, 0, 0])])
+    engine = _poe._Engine(list(chain.twists), chain.home, q, extra=[m, zdd])
+    writer = _Writer(engine)
+    gens = list(range(len(writer.expr_of)))
+    rng = random.Random(8)
+
+    def monomial():
+        chosen = sorted(rng.sample(gens, rng.randint(0, 3)))
+        return tuple((g, rng.choice([1, 1, 2])) for g in chosen)
+
+    def same(x, y):
+        return x == y and srepr(x) == srepr(y) and hash(x) == hash(y)
+
+    for _ in range(200):
+        terms = [writer._term(mono, QQ(rng.choice([1, -1, 2, -3]), rng.choice([1, 1, 5])))
+                 for mono in (monomial() for _ in range(rng.randint(1, 6)))]
+        if rng.random() < 0.2:
+            terms.append(rng.choice(terms) * 3)  # like terms: _sum must combine them as Add does
+        if rng.random() < 0.2:
+            terms.append(Add(*terms[:2]))  # a sum among the terms
+        assert same(_sum(list(terms)), Add(*terms))
+        inner = Add(*terms)
+        monos = (monomial(), monomial())
+        c = QQ(rng.choice([1, -1, 3]), rng.choice([1, 2]))
+        expected = Mul(Rational(c.numerator, c.denominator), *(writer._monomial_expr(k) for k in monos), inner)
+        assert same(writer._times(c, monos, inner), expected)
+    # the check tells apart a sum built unsorted (what _from_args would give without the sort)
+    x = writer.expr_of[0]
+    wrong = Add._from_args((x * writer.expr_of[1], Integer(2)))
+    assert not same(wrong, Add(x * writer.expr_of[1], 2))
