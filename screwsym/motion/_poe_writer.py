@@ -17,9 +17,8 @@ from functools import cmp_to_key
 from itertools import combinations
 from typing import Any, cast
 
-from sympy import Add, Expr, Mul, Pow, S, Symbol, cos, count_ops, sin
+from sympy import Add, Expr, Mul, Pow, Symbol, cos, count_ops, sin
 from sympy.core.basic import Basic
-from sympy.core.parameters import global_parameters
 from sympy.polys.domains import QQ
 
 from ..algebra.budget import charge
@@ -344,42 +343,19 @@ class _Writer:
     def _build(self, plan: tuple) -> Expr:
         kind = plan[0]
         if kind == "flat":
-            return _sum([self._term(m, c) for m, c in plan[1].items()])
+            return Add(*(self._term(m, c) for m, c in plan[1].items()))
         if kind == "pulled":
             _, content, common, inner = plan
-            return self._times(content, (common,), self._build(inner))
-        return _sum([self._product(k, sub) for k, sub in plan[1]])
+            return Mul(QQ.to_sympy(content), self._monomial_expr(common), self._build(inner))
+        return Add(*(self._product(k, sub) for k, sub in plan[1]))
 
     def _product(self, k: tuple, sub: tuple) -> Expr:
         """``k * sub`` as one product (``-(a + b)*k`` stays so, where ``-1*(a + b)`` would distribute)."""
         if sub[0] == "pulled":
             _, content, common, inner = sub
-            return self._times(content, (common, k), self._build(inner))
-        return self._times(QQ.one, (k,), self._build(sub))
-
-    def _times(self, c: Any, monomials: tuple, inner: Expr) -> Expr:
-        """``Mul(c, *monomials, inner)``, built without ``Mul.flatten`` where that is the same.
-
-        For a sum ``inner``, a rational ``c`` and at least one generator, all of them Symbols or
-        unevaluated ``cos``/``sin`` (:meth:`_monomial_expr`) with distinct bases, ``Mul.flatten``
-        combines no two factors (distinct bases, positive integer exponents; the sum is no
-        power of a generator), distributes nothing (it distributes a number over a sum only
-        when those are its only two factors) and returns ``c`` (unless 1) and then the factors
-        sorted by ``Basic.compare``: this builds that directly.  Anything else takes ``Mul``."""
-        exprs = [self._monomial_expr(m) for m in monomials]
-        if inner.is_Add and global_parameters.evaluate and all(self._plain_monos[m] for m in monomials):
-            factors = [inner]
-            gens = 0
-            for m, e in zip(monomials, exprs, strict=True):
-                if m:
-                    factors.extend(e.args if e.is_Mul else (e,))
-                    gens += len(m)
-            if gens and len({g for m in monomials for g, _ in m}) == gens:
-                factors.sort(key=_args_sortkey)
-                if c != 1:
-                    factors.insert(0, QQ.to_sympy(c))
-                return Mul._from_args(factors, inner.is_commutative)
-        return Mul(QQ.to_sympy(c), *exprs, inner)
+            return Mul(QQ.to_sympy(content), self._monomial_expr(common), self._monomial_expr(k),
+                       self._build(inner))
+        return self._monomial_expr(k) * self._build(sub)
 
     def _gen_cost(self, g: int) -> int:
         """``count_ops`` of a generator: 0 for a symbol, of ``cos(sum k_i x_i)`` for an angle (remembered)."""
@@ -478,43 +454,6 @@ class _Writer:
         if m and self._plain_monos[m]:  # as in _monomial_expr: the coefficient first
             return Mul._from_args((QQ.to_sympy(c), *(mono.args if mono.is_Mul else (mono,))))
         return QQ.to_sympy(c) * mono
-
-
-def _sum(terms: list) -> Expr:
-    """``Add(*terms)`` of terms in SymPy's canonical form, built without ``Add.flatten`` where
-    that is provably the same expression.
-
-    When no term is a sum, an order term, noncommutative or a power of a number, and the terms
-    other than numbers differ in their parts without the numerical coefficient (``as_coeff_Mul``),
-    ``Add.flatten`` combines no two terms, rebuilds each ``c*s`` as it was (a canonical ``Mul``
-    keeps its coefficient first: ``s._new_rawargs(c, *s.args)``) and returns the number (the sum
-    of the numbers, if not zero) first, then the other terms sorted by ``Basic.compare``
-    (``sympy.core.add._addsort``): this builds that directly.  Anything else takes ``Add``
-    (tests/motion/test_poe.py compares the two argument for argument)."""
-    if not global_parameters.evaluate:
-        return Add(*terms)
-    number: Expr = S.Zero
-    rest = []
-    seen = set()
-    for t in terms:
-        if t.is_Rational:
-            number += t
-            continue
-        if t.is_Add or t.is_Number or t.is_Order or not t.is_commutative or t.is_Pow and t.base.is_Number:
-            return Add(*terms)
-        part = t.as_coeff_Mul()[1] if t.is_Mul else t
-        if part in seen:
-            return Add(*terms)
-        seen.add(part)
-        rest.append(t)
-    if not rest:
-        return number
-    if len(rest) == 1 and number is S.Zero:
-        return rest[0]
-    rest.sort(key=_args_sortkey)
-    if number is not S.Zero:
-        rest.insert(0, number)
-    return Add._from_args(rest, True)  # every term commutative (checked above)
 
 
 def _is_unit(plan: tuple) -> bool:
