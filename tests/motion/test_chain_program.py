@@ -187,3 +187,9 @@ def test_the_product_form_with_numbers_and_a_bad_form():
         chain.forward([0, 0, 0], form="expanded")
     with pytest.raises(ValueError, match="form"):
         chain.jacobian([0, 0, 0], form="nested")
+    # bounded like the default form: past the budget, a ValueError naming the method
+    q = symbols("u1:4", real=True)
+    with pytest.raises(ValueError, match="forward: the exact arithmetic needs more than budget=10"):
+        chain.forward(q, form="product", budget=10)
+    with pytest.raises(ValueError, match="jacobian: the exact arithmetic needs more than budget=10"):
+        chain.jacobian(q, form="product", budget=10)
