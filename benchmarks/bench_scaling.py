@@ -38,7 +38,9 @@ results are SymPy's ``count_ops`` (the peers' results converted to SymPy to coun
    joint; then the 6-link chain at a pose of 15-degree multiples (``--pose`` alone).  Run it
    with ``PYTHONPATH`` pointing to another checkout to measure that one.  ``--kinematics``:
    the FK + J tables alone, with a column for ``Chain.kinematics_program`` (FK and J as
-   straight-line programs, whose size grows linearly with the joints).
+   straight-line programs, whose size grows linearly with the joints).  The FK + J tables
+   have a column for ``forward(q, form="product")`` + ``jacobian(q, form="product")`` (the
+   untidied nested product, opt-in) beside the default tidied forms.
 
 Nothing here is asserted; the figures go to ``benchmarks/README.md`` and
 ``notebooks/benchmarks.md``.
@@ -384,8 +386,9 @@ def growth_rows(limit: float, kinematics_only: bool = False) -> None:
     peers = engines()
 
     def table(title: str, ks: range, build: Callable, ours: Callable, theirs: Callable | None,
-              program: Callable | None = None) -> None:
-        labels = ["screwsym"] + ([name for name in peers] if theirs else [])
+              program: Callable | None = None, product: Callable | None = None) -> None:
+        labels = ["screwsym"] + (["screwsym form='product'"] if product else []) \
+            + ([name for name in peers] if theirs else [])
         if program is not None:
             labels.append("screwsym program")
         print(f"\n{title}: CPU s (count_ops of the result) [growth per added joint]\n")
@@ -402,6 +405,8 @@ def growth_rows(limit: float, kinematics_only: bool = False) -> None:
             for label in labels:
                 if label == "screwsym":
                     t, out = cpu_timed(lambda chain=chain, q=q: ours(chain, q), limit)
+                elif label == "screwsym form='product'":
+                    t, out = cpu_timed(lambda chain=chain, q=q: product(chain, q), limit)  # type: ignore[misc]
                 elif label == "screwsym program":
                     t, out = cpu_timed(lambda chain=chain: program(chain), limit)  # type: ignore[misc]
                 else:
@@ -430,6 +435,10 @@ def growth_rows(limit: float, kinematics_only: bool = False) -> None:
         T, cols = plain_products(chain.twists, chain.home, q, sin, cos, num)
         return T + cols
 
+    def fk_j_product(chain, q):
+        _kp._RECENT.clear()  # no partial products kept from an earlier call
+        return list(chain.forward(q, form="product").matrix[:3, :]) + list(chain.jacobian(q, form="product"))
+
     def fk_j_program(chain):
         total = 0
         for what in ("forward", "jacobian"):
@@ -444,13 +453,17 @@ def growth_rows(limit: float, kinematics_only: bool = False) -> None:
         return plain_crba(chain.twists, chain.inertias, q, sin, cos, num)
 
     program = fk_j_program if hasattr(Chain, "kinematics_program") else None  # not on older trees
-    table("FK + J (space), spatial k-joint chain", range(3, 10), spatial_chain, fk_j, fk_j_plain, program)
+    _kp = importlib.import_module("screwsym.motion._kinematics_program")
+    product = fk_j_product if hasattr(_kp, "FORMS") else None  # not on older trees
+    table("FK + J (space), spatial k-joint chain", range(3, 10), spatial_chain, fk_j, fk_j_plain, program,
+          product)
     if kinematics_only:
         if importlib.util.find_spec("defusedxml"):
             def read15(k):
                 return Chain.from_urdf(urdf_15(k), angles="pi/12")
 
-            table("FK + J (space), URDF at 15-degree multiples", range(3, 7), read15, fk_j, fk_j_plain, program)
+            table("FK + J (space), URDF at 15-degree multiples", range(3, 7), read15, fk_j, fk_j_plain, program,
+                  product)
         return
     table("mass matrix, spatial k-link chain", range(2, 8), spatial_chain, mass, mass_plain)
     if importlib.util.find_spec("defusedxml"):
@@ -469,7 +482,7 @@ def growth_rows(limit: float, kinematics_only: bool = False) -> None:
                 t, _ = cpu_timed(lambda k=k, fn=fn: fn(k), limit)
                 cells.append(f"> {limit:g} (stopped)" if t is None else f"{t:.3f}")
             print(f"| {k} | " + " | ".join(cells) + " |")
-        table("FK + J (space), URDF at 15-degree multiples", range(3, 7), read, fk_j, fk_j_plain)
+        table("FK + J (space), URDF at 15-degree multiples", range(3, 7), read, fk_j, fk_j_plain, None, product)
         table("mass matrix, URDF at 15-degree multiples", range(2, 6), read_inertias, mass, mass_plain)
 
 

@@ -60,6 +60,7 @@ from ..core.inertia import SpatialInertia
 from ..core.screw import ScalarLike, ScrewLike, check_screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
+from . import _kinematics_program as _kp
 from . import _poe
 from . import dynamics as _dynamics
 from . import newton_euler as _newton_euler
@@ -309,8 +310,9 @@ class Chain(ScrewsymBasic):
         values = check_sequence(q, "q", "joint values", self.n_joints)
         return tuple(check_scalar(v, f"q[{i}]") for i, v in enumerate(values))
 
-    def forward(self, q: JointValues, *, budget: int = BUDGET) -> Transform:
-        r"""The forward kinematics ``T(q) = exp6($_1, q_1) ... exp6($_n, q_n) M``, tidied.
+    def forward(self, q: JointValues, *, budget: int = BUDGET, form: str = "tidy") -> Transform:
+        r"""The forward kinematics ``T(q) = exp6($_1, q_1) ... exp6($_n, q_n) M``, tidied
+        (``form="product"``: the untidied nested product instead, :func:`~screwsym.motion._kinematics_program.product_forward`).
 
         ``budget`` bounds the exact arithmetic (default
         :data:`~screwsym.algebra.budget.BUDGET`, 20,000,000 units of about a
@@ -332,6 +334,8 @@ class Chain(ScrewsymBasic):
         """
         q = self._check_q(q)
         with _poe.bounded(budget, "forward"):
+            if check_choice(form, "form", _kp.FORMS) == "product":
+                return Transform._new(*_kp.product_forward(self.twists, self.home, q))
             fast = _poe.fast_forward(self.twists, self.home, q)
             if fast is not None:
                 return Transform._new(*fast)
@@ -346,8 +350,8 @@ class Chain(ScrewsymBasic):
         return tidy(T @ self.home)
 
     def jacobian(self, q: JointValues, frame: str = "space", *,
-                 budget: int = BUDGET) -> ImmutableMatrix:
-        r"""The 6 x n Jacobian in ray order, ``frame="space"`` or ``"body"``, tidied.
+                 budget: int = BUDGET, form: str = "tidy") -> ImmutableMatrix:
+        r"""The 6 x n Jacobian in ray order, ``frame="space"`` or ``"body"``, tidied (``form``: as in :meth:`forward`).
 
         Column ``i`` is joint ``i``'s twist at the configuration ``q``,
         ``(omega_i; v_i)``: in the space frame (moments about the base origin)
@@ -372,6 +376,9 @@ class Chain(ScrewsymBasic):
         q = self._check_q(q)
         frame = check_choice(frame, "frame", ("space", "body"))
         with _poe.bounded(budget, "jacobian"):
+            if check_choice(form, "form", _kp.FORMS) == "product":
+                return (_kp.product_space_jacobian(self.twists, q) if frame == "space"
+                        else _kp.product_body_jacobian(self.body_twists(), q))
             if frame == "space":
                 fast = _poe.fast_space_jacobian(self.twists, self.home, q)
             else:
