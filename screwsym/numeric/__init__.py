@@ -16,6 +16,7 @@ Built on :mod:`screwsym.codegen`, :mod:`screwsym.core`, :mod:`screwsym.systems` 
 from collections.abc import Callable
 
 from . import screws
+from ._direct import recycle_results
 from .dynamics import DynamicsFunctions, dynamics_functions, forward_dynamics
 from .mobility import MobilityMap, mobility_map
 from .screws import NAMES, functions_for
@@ -23,7 +24,8 @@ from .transmission import TransmissionMap, jacobian_map, transmission_map
 
 __all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map",
            "DynamicsFunctions", "dynamics_functions", "forward_dynamics",
-           "TransmissionMap", "transmission_map", "jacobian_map"]
+           "TransmissionMap", "transmission_map", "jacobian_map",
+           "recycle_results"]
 
 
 def __getattr__(name: str) -> Callable:

@@ -39,6 +39,38 @@ RECYCLE_MIN = 1 << 20
 RECYCLE_MAX = 1 << 26
 
 
+#: the switch of :func:`recycle_results` (one for the process)
+_RECYCLING = {"on": True}
+
+
+def recycle_results(enabled: bool | None = None) -> bool:
+    """Whether the screw kernels hand out a large result again once it is let go.
+
+    With the C back end, a result of 1 to 64 MB that the caller no longer holds
+    in any way is reused by the next call of the same function (no fresh
+    pages to zero: see the module's explanation).  ``recycle_results(False)``
+    turns that off for the process (every result fresh, and nothing held after
+    its last use); ``recycle_results()`` says whether it is on.  Returns the
+    setting in force after the call.
+
+    >>> from screwsym.numeric import recycle_results
+    >>> recycle_results(False)
+    False
+    >>> recycle_results(True)
+    True
+    >>> recycle_results("yes")
+    Traceback (most recent call last):
+      ...
+    TypeError: recycle_results: expected enabled to be True, False or None, got str
+    """
+    if enabled is not None:
+        if not isinstance(enabled, bool):
+            raise TypeError("recycle_results: expected enabled to be True, False or None, "
+                            f"got {type(enabled).__name__}")
+        _RECYCLING["on"] = enabled
+    return _RECYCLING["on"]
+
+
 def _refcounts_exact() -> bool:
     """CPython with its GIL: ``sys.getrefcount`` says exactly who holds an array."""
     gil = getattr(sys, "_is_gil_enabled", None)
@@ -73,7 +105,9 @@ class Recycler:
 
     def empty(self, shape: tuple[int, ...]) -> np.ndarray:
         """A C-contiguous writeable ``float64`` array of ``shape``, its values undefined."""
-        if not self._on or not RECYCLE_MIN <= 8 * math.prod(shape) <= RECYCLE_MAX:
+        if not _RECYCLING["on"]:
+            self._last = None  # turned off: let the one kept go at this function's next call
+        if not (self._on and _RECYCLING["on"]) or not RECYCLE_MIN <= 8 * math.prod(shape) <= RECYCLE_MAX:
             return np.empty(shape)
         with self._lock:
             last = self._last

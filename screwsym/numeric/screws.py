@@ -42,7 +42,8 @@ compiled loop directly, and a large result (1 to 64 MB) that the caller has let
 go is handed out again by the next call of the same function, instead of fresh
 memory that the system must zero first (:mod:`screwsym.numeric._direct`): a
 result still referenced in any way (a name, a view, a list) is never reused, and
-at most one such array per function stays held after its last use.
+at most one such array per function stays held after its last use
+(:func:`screwsym.numeric.recycle_results` turns this off).
 
 Examples
 ========

@@ -136,3 +136,28 @@ def test_small_large_and_read_only_results_are_not_recycled():
         del r
         # the recycler held it until now: a new array cannot have its id
         assert (id(recycler.empty((40_000, 6))) == r_id) is writeable
+
+
+def test_recycling_can_be_turned_off():
+    import weakref
+
+    f = numeric.functions_for("c").shift_origin
+    x = args_for("shift_origin", BIG, 1)
+    was = numeric.recycle_results()
+    try:
+        first = f(*x)
+        ref = weakref.ref(first)
+        del first
+        assert ref() is not None  # on (the default): kept after its last use, for the next call
+        assert f(*x) is ref()
+        assert numeric.recycle_results(False) is False
+        f(*x)
+        assert ref() is None  # off: the one kept is let go at the next call
+        kept = f(*x)
+        ref = weakref.ref(kept)
+        del kept
+        assert ref() is None  # off: nothing held after its last use
+    finally:
+        numeric.recycle_results(was)
+    with pytest.raises(TypeError, match="recycle_results: expected enabled"):
+        numeric.recycle_results(1)
