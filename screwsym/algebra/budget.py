@@ -37,6 +37,7 @@ __all__ = [
     "MAX_CASES",
     "BUDGET",
     "SLACK",
+    "MIN_CPU",
 ]
 
 
@@ -54,6 +55,9 @@ BUDGET = 20_000_000
 #: a budget of ``n`` units also bounds the call's CPU time to ``SLACK * n`` microseconds (the
 #: units are calibrated at about a microsecond each; the slack is for the unpriced steps)
 SLACK = 5
+#: ... and never to less than this many seconds: a budget of a few units (a test's) would
+#: otherwise stop on a garbage collection or a page fault between two charges
+MIN_CPU = 0.005
 
 
 class TooManyCases(Exception):
@@ -117,7 +121,7 @@ def case_budget(budget: int, name: str) -> Iterator[None]:
         return
     token = _LEFT.set([budget])
     name_token = _NAME.set(name)
-    deadline_token = _DEADLINE.set(process_time() + SLACK * budget * 1e-6)
+    deadline_token = _DEADLINE.set(process_time() + max(SLACK * budget * 1e-6, MIN_CPU))
     try:
         yield
     except OverBudget:

@@ -182,3 +182,23 @@ def test_the_budget_bounds_the_cpu_time_of_unpriced_work():
     with case_budget(units, "singularities"):
         charge(1)
         charge(1)
+
+
+def test_a_tiny_budget_still_allows_a_few_milliseconds_of_cpu():
+    # a budget of a few units bounds the time to MIN_CPU, not to SLACK * units microseconds (35 us
+    # for 7 units: a garbage collection between two charges would stop it; seen under load)
+    import time
+
+    from screwsym.algebra.budget import MIN_CPU, SLACK, case_budget, charge
+
+    assert SLACK * 7 * 1e-6 < MIN_CPU / 10
+    with case_budget(7, "rank_conditions"):
+        start = time.process_time()
+        while time.process_time() - start < MIN_CPU / 5:
+            pass
+        charge(7)
+    with pytest.raises(ValueError, match="its CPU time"), case_budget(7, "rank_conditions"):
+        start = time.process_time()
+        while time.process_time() - start < 2 * MIN_CPU:
+            pass
+        charge(1)
