@@ -50,10 +50,13 @@ Examples
 
 >>> from screwsym.motion.chain import ur5
 >>> from screwsym.plot import view
->>> v = view(ur5(), [0, 0.5, -1, 0, 0.5, 0], twists=True)     # doctest: +SKIP
->>> v.kinds["joint:revolute"], v.kinds["screws"]              # doctest: +SKIP
+>>> v = view(ur5(), [0, 0.5, -1, 0, 0.5, 0], twists=True)
+>>> v.kinds["joint:revolute"], v.kinds["screws"]
 (6, 6)
+>>> v
+<View: 7 traces, 0 frames>
 >>> v.to_html("ur5.html")                                     # doctest: +SKIP
+'ur5.html'
 """
 
 from __future__ import annotations
@@ -457,14 +460,24 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     twists : bool
         A chain's joint twists at ``q`` (the space Jacobian's columns) as a group.
 
-    >>> from sympy import Rational
     >>> from screwsym import Chain, Transform, Twist, Wrench
     >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),
     ...              Twist.rotation([0, 0, 1], point=[1, 0, 0])], Transform.translation([2, 0, 0]))
-    >>> v = view(arm, [0.3, -0.6], twists=True,            # doctest: +SKIP
+    >>> v = view(arm, [0.3, -0.6], twists=True,
     ...          screws={"load": Wrench([0, -1, 0], [0, 0, -2])})
-    >>> v.kinds["joint:revolute"], v.kinds["screws"]       # doctest: +SKIP
+    >>> v.kinds["joint:revolute"], v.kinds["screws"]
     (2, 3)
+
+    Along a path (one frame per row, a slider and play/pause), with a wrench
+    that depends on the joint symbols, recomputed at each frame:
+
+    >>> from sympy import cos, sin, symbols
+    >>> q1, q2 = symbols("q1 q2", real=True)
+    >>> pull = Wrench([cos(q1), sin(q1), 0], [0, 0, 0])
+    >>> v = view(arm, path=[[0, 0], [0.5, -1], [1, -2]], variables=[q1, q2],
+    ...          screws={"pull": pull})
+    >>> v.frames, len(v.figure.frames)
+    (3, 3)
     """
     go = _plotly()
     subs = check_subs(subs)

@@ -1,0 +1,113 @@
+"""The exported view in a real browser: headless Chromium, network off, opens the HTML file.
+
+Checks that the scene drew: the screenshot shows the twists' green in the scene (not a blank
+or empty page), the page's plot holds the figure's traces and WebGL objects for each
+(written into the DOM by the page itself, read with ``--dump-dom``), and no console error or
+uncaught exception (counted by the page's first script).  Chromium from the system's
+packages (``.ci/run`` installs Debian's where it can); skipped with the reason where absent.
+The network is off: a fresh network namespace (``unshare -n``) where the user may make one,
+and in any case Chromium's host resolver maps every name to nothing.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+pytest.importorskip("plotly")
+image = pytest.importorskip("matplotlib.image")
+
+from screwsym.motion.chain import ur5  # noqa: E402
+from screwsym.plot import view  # noqa: E402
+from screwsym.plot.viewer import _ERROR_HOOK  # noqa: E402
+
+
+def chromium() -> str | None:
+    for name in (os.environ.get("SCREWSYM_CHROMIUM"), "chromium", "chromium-browser"):
+        if name and (path := shutil.which(name)):
+            return path
+    return None
+
+
+def _isolated() -> list[str]:
+    """``unshare -n`` where it works (root, or user namespaces allowed), else nothing."""
+    unshare = shutil.which("unshare")
+    if unshare and subprocess.run([unshare, "-n", "true"], capture_output=True).returncode == 0:
+        return [unshare, "-n"]
+    return []
+
+
+def open_in_chromium(page: str, tmp_path) -> tuple[str, np.ndarray, str]:
+    """``(dom, screenshot RGB array, stderr)`` of ``page`` (a file) in headless Chromium."""
+    exe = chromium()
+    if exe is None:
+        pytest.skip("chromium not found (Debian: apt-get install chromium; or set SCREWSYM_CHROMIUM)")
+    shot = tmp_path / "shot.png"
+    cmd = [*_isolated(), exe, "--headless", "--no-sandbox", "--disable-gpu",
+           "--enable-unsafe-swiftshader", "--disable-background-networking",
+           "--disable-component-update", "--disable-sync", "--no-first-run",
+           "--host-resolver-rules=MAP * ~NOTFOUND", "--proxy-server=127.0.0.1:9",
+           f"--user-data-dir={tmp_path / 'profile'}", "--window-size=900,650",
+           "--virtual-time-budget=3000", "--enable-logging=stderr", "--v=0",
+           f"--screenshot={shot}", "--dump-dom", f"file://{page}"]
+    run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr[-2000:]
+    return run.stdout, image.imread(str(shot))[..., :3], run.stderr
+
+
+def attribute(dom: str, name: str) -> str | None:
+    m = re.search(rf'{name}="([^"]*)"', dom)
+    return m.group(1) if m else None
+
+
+def green_pixels(rgb: np.ndarray) -> int:
+    """Pixels of the twists' colour #2ca02c in the scene (the left 3/4: the legend is right)."""
+    scene = rgb[:, : rgb.shape[1] * 3 // 4]
+    target = np.array([0x2C, 0xA0, 0x2C]) / 255
+    return int(np.sum(np.all(np.abs(scene - target) < 0.08, axis=-1)))
+
+
+def drew(rgb: np.ndarray) -> bool:
+    return float(rgb.std()) > 0.02 and green_pixels(rgb) >= 40
+
+
+def console_errors(stderr: str) -> list[str]:
+    return [ln for ln in stderr.splitlines() if "CONSOLE" in ln and "Uncaught" in ln]
+
+
+def test_the_checks_can_fail():
+    blank = np.ones((100, 120, 3))
+    assert not drew(blank)
+    grey = np.random.default_rng(0).random((100, 120, 3)) * 0.2 + 0.4     # busy, not green
+    assert not drew(grey)
+    painted = blank.copy()
+    painted[40:60, 10:40] = np.array([0x2C, 0xA0, 0x2C]) / 255
+    assert drew(painted)
+    assert console_errors('[1:1:INFO:CONSOLE:3] "Uncaught Error: x", source: f (3)') != []
+
+
+@pytest.mark.slow
+def test_the_exported_view_draws_in_headless_chromium(tmp_path):
+    v = view(ur5(), [0, 0.5, -1, 0, 0.5, 0], twists=True)
+    page = v.to_html(tmp_path / "ur5.html")
+    dom, rgb, log = open_in_chromium(page, tmp_path)
+    n = len(v.figure.data)
+    assert attribute(dom, "data-screwsym-traces") == str(n)
+    assert int(attribute(dom, "data-screwsym-objects") or -1) >= n     # a WebGL object per trace
+    assert attribute(dom, "data-screwsym-errors") == "0"
+    assert console_errors(log) == []
+    assert drew(rgb), "the screenshot shows no drawn twist"
+
+
+@pytest.mark.slow
+def test_a_console_error_is_seen(tmp_path):
+    page = tmp_path / "bad.html"
+    page.write_text(f"<html><head>{_ERROR_HOOK}</head><body><p>x</p>"
+                    "<script>console.error('boom')</script></body></html>", encoding="utf-8")
+    dom, _, _ = open_in_chromium(str(page), tmp_path)
+    assert attribute(dom, "data-screwsym-errors") == "1"
