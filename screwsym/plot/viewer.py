@@ -1,8 +1,5 @@
 r"""Mechanisms in 3-D in the browser: :func:`view` draws a chain, a parallel mechanism or screws with plotly.
 
-Explanation
-===========
-
 ``view(obj, q)`` returns a :class:`View`, an immutable value holding a plotly
 figure: the mechanism's links as segments (a parallel mechanism's base and
 platform as flat solids), its joints as glyphs by kind, and any screws,
@@ -10,9 +7,9 @@ twists, wrenches and screw systems placed in the same scene.  ``path=`` adds
 precomputed animation frames with a slider and a play button, so a view turns
 and moves on a static page with no kernel behind it.  ``View.to_html(path)``
 writes one self-contained HTML file (plotly.js bundled: no CDN, no network);
-in Jupyter the view shows itself (``_repr_mimebundle_``: plotly's own MIME type
-for JupyterLab and VS Code, and self-contained HTML for every other front end,
-nbconvert and the documentation site).
+in Jupyter the view shows itself as the same self-contained HTML
+(``_repr_mimebundle_``: JupyterLab, VS Code, nbconvert and the documentation site
+run it alike).
 
 Why plotly: its 3-D traces (WebGL) need nothing but one JavaScript file that
 the Python package ships, so the same figure works offline in JupyterLab, VS
@@ -45,8 +42,7 @@ Numbers: every SymPy step (substitution, exponentials, checks) is done once by
 :func:`view`; each configuration is then lambdified expressions and NumPy (see
 :mod:`screwsym.plot._scene`).  plotly is optional: ``pip install -e ".[view]"``.
 
-Examples
-========
+For example, the UR5 with its joint twists:
 
 >>> from screwsym.motion.chain import ur5
 >>> from screwsym.plot import view
@@ -308,8 +304,11 @@ def _style(name: str, groups: list[ScrewGroup], colours: list[str]) -> dict:
                             "line": {"color": "#222244", "width": 2}},
                     hoverinfo="name")
     if name == "frame":
+        # no legend entry: plotly's legend cannot draw a line coloured by an array
         return dict(type="scatter3d", mode="lines", name="tool frame (x, y, z)", meta=meta,
-                    line={"color": ["#d62728"] * 3 + ["#2ca02c"] * 3 + ["#1f77b4"] * 3,
+                    showlegend=False,
+                    line={"color": [0, 0, 0, 1, 1, 1, 2, 2, 2], "cmin": 0, "cmax": 2,
+                          "colorscale": [[0, "#d62728"], [0.5, "#2ca02c"], [1, "#1f77b4"]],
                           "width": 6}, hoverinfo="text")
     part, g = name.split(":")
     group, colour = groups[int(g)], colours[int(g)]
@@ -428,9 +427,10 @@ class View:
         return self._html(False)
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict:
-        return {"application/vnd.plotly.v1+json": json.loads(self._json),
-                "text/html": self._html(False),
-                "text/plain": repr(self)}
+        # self-contained HTML only: every front end runs it (JupyterLab, VS Code, nbconvert,
+        # myst-nb), where plotly's own MIME type needs a front-end extension and is not
+        # rendered by the documentation site's builder
+        return {"text/html": self._html(False), "text/plain": repr(self)}
 
 
 def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, subs: Any = None,
@@ -459,6 +459,12 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
         gives each group its legend entry and colour.
     twists : bool
         A chain's joint twists at ``q`` (the space Jacobian's columns) as a group.
+    title : str, optional
+    height : int
+        The figure's height in pixels (default 560).
+
+    Examples
+    ========
 
     >>> from screwsym import Chain, Transform, Twist, Wrench
     >>> arm = Chain([Twist.rotation([0, 0, 1], point=[0, 0, 0]),

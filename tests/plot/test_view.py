@@ -218,7 +218,8 @@ def test_the_view_is_immutable_and_its_figure_a_copy():
     fig.data[0].x = (0.0,)
     assert len(v.figure.data[0].x) > 1
     bundle = v._repr_mimebundle_()
-    assert set(bundle) == {"application/vnd.plotly.v1+json", "text/html", "text/plain"}
+    assert set(bundle) == {"text/html", "text/plain"}
+    assert "Plotly.newPlot" in bundle["text/html"] and "<script src=" not in bundle["text/html"]
 
 
 @pytest.mark.parametrize(("kwargs", "error", "match"), [
