@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from sympy import Basic, Dummy, ImmutableMatrix, Matrix, Symbol, lambdify
+from sympy import Basic, Dummy, ImmutableMatrix, Matrix, Symbol, lambdify, sympify
 
 from ..core.checks import check_no_strings
 from ..core.decide import is_zero_vector
@@ -112,10 +112,12 @@ def check_subs(subs: Any) -> dict:
     check_no_strings(subs, "subs")
     if not isinstance(subs, Mapping):
         raise TypeError(f"subs: expected a dict mapping symbols to numbers, got {type(subs).__name__}")
-    for k in subs:
+    out = {}
+    for k, v in subs.items():
         if not isinstance(k, Symbol):
             raise TypeError(f"subs: expected SymPy symbols as keys, got {k!r}")
-    return dict(subs)
+        out[k] = sympify(v, strict=True)     # no strings here: check_no_strings above
+    return out
 
 
 def check_variables(variables: Any) -> tuple[Symbol, ...]:
@@ -145,7 +147,7 @@ class _Packer:
     def add(self, m: Any, name: str) -> slice:
         m = ImmutableMatrix(m)
         if self.subs:
-            m = m.xreplace(self.subs) if all(k.is_Symbol for k in self.subs) else m.subs(self.subs)
+            m = m.xreplace(self.subs)
         free = m.free_symbols - set(self.variables)
         if free:
             names = ", ".join(sorted(str(s) for s in free))

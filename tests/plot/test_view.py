@@ -231,6 +231,8 @@ def test_the_view_is_immutable_and_its_figure_a_copy():
     ({"q": [0] * 6, "path": [[0] * 6]}, ValueError, "q, path"),
     ({"variables": ["q1"]}, TypeError, "variables\\[0\\]"),
     ({"subs": "x=1"}, TypeError, "subs"),
+    ({"subs": {symbols("L"): "1"}}, TypeError, "subs: strings are never evaluated"),
+    ({"subs": {1: 1}}, TypeError, "subs: expected SymPy symbols"),
     ({"twists": 1}, TypeError, "twists"),
     ({"screws": {1: Twist([0, 0, 1], [0, 0, 0])}}, TypeError, "screws"),
     ({"screws": "S"}, TypeError, "screws"),
@@ -249,6 +251,7 @@ def test_bad_objects_and_symbols():
     with pytest.raises(ValueError, match="give L numbers"):
         view(arm, [0])
     assert view(arm, [0], subs={L: 1}).kinds["joint:revolute"] == 1
+    assert view(arm, [0], subs={L: 0.5}).kinds["joint:revolute"] == 1
     with pytest.raises(ValueError, match="give L numbers in subs"):
         view(Twist([0, 0, 1], [L, 0, 0]))
     rps = ParallelMechanism(*(_rps_leg(e, -Rational(1, 2), 2) for e in E))
