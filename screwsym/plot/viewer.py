@@ -62,6 +62,10 @@ import html
 import json
 import math
 import os
+import pathlib
+import shutil
+import subprocess
+import tempfile
 from collections.abc import Mapping
 from typing import Any
 
@@ -324,6 +328,20 @@ def _style(name: str, groups: list[ScrewGroup], colours: list[str]) -> dict:
                 hoverinfo="skip", **legend)
 
 
+def _browser(browser: str | None) -> str:
+    """The Chromium to run: ``browser``, ``$SCREWSYM_CHROMIUM`` or one on the ``PATH``."""
+    if browser is not None and not isinstance(browser, str):
+        raise TypeError(f"browser: expected a program name or path, got {type(browser).__name__}")
+    names = [browser] if browser else [os.environ.get("SCREWSYM_CHROMIUM", ""), "chromium",
+                                       "chromium-browser", "google-chrome"]
+    for name in names:
+        if name and (found := shutil.which(name)):
+            return found
+    raise FileNotFoundError(
+        f"browser: no Chromium found (tried {', '.join(n for n in names if n)}); install "
+        "chromium (Debian: apt-get install chromium) or pass browser=...")
+
+
 def _check_values(values: Any, name: str, n: int, rows: bool) -> np.ndarray:
     try:
         a = np.array(values, dtype=float)
@@ -407,12 +425,15 @@ class View:
         """The number of animation frames (0: one configuration)."""
         return self._frames
 
-    def _html(self, full: bool) -> str:
+    def _html(self, full: bool, still: bool = False) -> str:
         import plotly.io as pio
 
+        config = {"displaylogo": False, "responsive": True}
+        if still:
+            config["displayModeBar"] = False
         return pio.to_html(self.figure, include_plotlyjs=True, full_html=full,
                            div_id=self._id, post_script=_POST_SCRIPT, auto_play=False,
-                           config={"displaylogo": False, "responsive": True})
+                           config=config)
 
     def to_html(self, path: str | os.PathLike) -> str:
         """Write one self-contained HTML file (plotly.js inside, no network); return its path."""
@@ -421,6 +442,47 @@ class View:
         page = self._html(True).replace("<head>", "<head>" + _ERROR_HOOK, 1)
         with open(path, "w", encoding="utf-8") as f:
             f.write(page)
+        return os.fspath(path)
+
+    def to_png(self, path: str | os.PathLike, *, width: int = 900, browser: str | None = None,
+               timeout: float = 60.0) -> str:
+        """Write a PNG picture of the view (its first frame) with headless Chromium; return its path.
+
+        plotly's own ``write_image`` needs kaleido; this uses a Chromium (or Chrome) already on
+        the machine: ``browser``, else ``$SCREWSYM_CHROMIUM``, else ``chromium``,
+        ``chromium-browser`` or ``google-chrome`` on the ``PATH``.  The page is the view's own
+        self-contained HTML, opened from a temporary folder with every host name resolved to
+        nothing (no network).  ``FileNotFoundError`` without a browser; ``RuntimeError`` if it
+        fails or takes longer than ``timeout`` seconds.
+        """
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError(f"path: expected a file name, got {type(path).__name__}")
+        if isinstance(width, bool) or not isinstance(width, int) or width < 100:
+            raise ValueError(f"width: expected a whole number of pixels >= 100, got {width!r}")
+        if isinstance(timeout, bool) or not isinstance(timeout, (int, float)) or not timeout > 0:
+            raise ValueError(f"timeout: expected a positive number of seconds, got {timeout!r}")
+        exe = _browser(browser)
+        height = int(json.loads(self._json)["layout"]["height"])
+        height += 90 if self._frames else 0           # the slider and the buttons
+        out = os.path.abspath(os.fspath(path))
+        with tempfile.TemporaryDirectory() as tmp:
+            page = os.path.join(tmp, "view.html")
+            with open(page, "w", encoding="utf-8") as f:
+                f.write(self._html(True, still=True).replace(
+                    "<head>", "<head><style>body { margin: 0; overflow: hidden; }</style>", 1))
+            cmd = [exe, "--headless", "--no-sandbox", "--disable-gpu",
+                   "--enable-unsafe-swiftshader", "--disable-background-networking",
+                   "--disable-component-update", "--disable-sync", "--no-first-run",
+                   "--hide-scrollbars", "--host-resolver-rules=MAP * ~NOTFOUND",
+                   "--proxy-server=127.0.0.1:9", f"--user-data-dir={os.path.join(tmp, 'profile')}",
+                   f"--window-size={width},{height}", "--virtual-time-budget=3000",
+                   f"--screenshot={out}", pathlib.Path(page).as_uri()]
+            try:
+                run = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+            except subprocess.TimeoutExpired as exc:
+                raise RuntimeError(f"to_png: {exe} did not finish within {timeout} s") from exc
+        if run.returncode != 0 or not os.path.exists(out):
+            raise RuntimeError(f"to_png: {exe} failed: {run.stderr[-500:]}")
         return os.fspath(path)
 
     def _repr_html_(self) -> str:
@@ -570,4 +632,5 @@ def _labels(rows: np.ndarray, variables: tuple, obj: Any) -> list[str]:
         names = [html.escape(str(v)) for v in variables]
     else:
         names = [f"q{i + 1}" for i in range(rows.shape[1])]
-    return [", ".join(f"{nm}={x:.3g}" for nm, x in zip(names, r, strict=True)) for r in rows]
+    # + 0.0: no "-0" in a label
+    return [", ".join(f"{nm}={x + 0.0:.3g}" for nm, x in zip(names, r, strict=True)) for r in rows]

@@ -257,3 +257,21 @@ def test_bad_objects_and_symbols():
     rps = ParallelMechanism(*(_rps_leg(e, -Rational(1, 2), 2) for e in E))
     with pytest.raises(ValueError, match="twists"):
         view(rps, twists=True)
+
+
+def test_to_png_bad_input(tmp_path):
+    v = view(ur5(), Q)
+    with pytest.raises(FileNotFoundError, match="browser: no Chromium found"):
+        v.to_png(tmp_path / "a.png", browser="/nonexistent/chromium")
+    with pytest.raises(ValueError, match="width"):
+        v.to_png(tmp_path / "a.png", width=10)
+    with pytest.raises(ValueError, match="timeout"):
+        v.to_png(tmp_path / "a.png", timeout=0)
+    with pytest.raises(TypeError, match="path"):
+        v.to_png(3)
+
+
+def test_slider_labels_have_no_negative_zero():
+    v = view(ur5(), path=[[-0.0] * 6, [0.5] * 6])
+    labels = [s.label for s in v.figure.layout.sliders[0].steps]
+    assert labels[0] == "q1=0, q2=0, q3=0, q4=0, q5=0, q6=0" and "q6=0.5" in labels[1]

@@ -121,3 +121,12 @@ def test_a_console_error_is_seen(tmp_path):
                     "<script>console.error('boom')</script></body></html>", encoding="utf-8")
     dom, _, _ = open_in_chromium(str(page), tmp_path)
     assert attribute(dom, "data-screwsym-errors") == "1"
+
+
+@pytest.mark.slow
+def test_to_png_draws_the_view(tmp_path):
+    if chromium() is None:
+        pytest.skip("chromium not found (Debian: apt-get install chromium; or set SCREWSYM_CHROMIUM)")
+    out = view(ur5(), [0, 0.5, -1, 0, 0.5, 0], twists=True).to_png(tmp_path / "ur5.png", width=700)
+    rgb = image.imread(str(out))[..., :3]
+    assert rgb.shape[1] == 700 and drew(rgb)
