@@ -6,7 +6,8 @@ platform as flat solids), its joints as glyphs by kind, and any screws,
 twists, wrenches and screw systems placed in the same scene.  ``path=`` adds
 precomputed animation frames with a slider and a play button, so a view turns
 and moves on a static page with no kernel behind it.  ``View.to_html(path)``
-writes one self-contained HTML file (plotly.js bundled: no CDN, no network);
+writes one self-contained HTML file (plotly.js bundled: no CDN, no network),
+``View.to_png(path)`` a picture taken with a headless Chromium on the machine;
 in Jupyter the view shows itself as the same self-contained HTML
 (``_repr_mimebundle_``: JupyterLab, VS Code, nbconvert and the documentation site
 run it alike).
