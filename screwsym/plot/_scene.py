@@ -38,7 +38,6 @@ import numpy as np
 from sympy import Basic, Dummy, ImmutableMatrix, Matrix, Symbol, lambdify, sympify
 
 from ..core.checks import check_no_strings
-from ..core.decide import is_zero_vector
 from ..core.screw import Screw
 from ..core.twist import Twist
 from ..core.wrench import Wrench
@@ -243,10 +242,13 @@ def _chain_maker(chain: Chain, subs: dict, twists: bool, packer: _Packer):
             names = ", ".join(sorted(str(s) for s in free))
             raise ValueError(f"chain: joint twist {i + 1} is symbolic: give {names} numbers "
                              "in subs={...}")
-        if is_zero_vector(tw.S) is True:
-            kinds.append("prismatic")
-        else:
-            kinds.append("revolute" if tw.pitch == 0 else "helical")
+        # the book's table (Section 1.4.2), under the float policy: a couple is a translation
+        kind = {"couple": "prismatic", "line": "revolute", "screw": "helical"}.get(
+            str(tw.classify()))
+        if kind is None:
+            raise ValueError(f"chain: joint twist {i + 1} is neither a rotation, a translation "
+                             f"nor a screw motion: {tw}")
+        kinds.append(kind)
         exps.append(lambdify(t, Matrix(exp6(tw, t).matrix), "numpy"))
         omegas.append(np.array([float(x) for x in tw.S]))
         vs.append(np.array([float(x) for x in tw.S0]))

@@ -275,3 +275,20 @@ def test_slider_labels_have_no_negative_zero():
     v = view(ur5(), path=[[-0.0] * 6, [0.5] * 6])
     labels = [s.label for s in v.figure.layout.sliders[0].steps]
     assert labels[0] == "q1=0, q2=0, q3=0, q4=0, q5=0, q6=0" and "q6=0.5" in labels[1]
+
+
+def test_a_robot_from_its_urdf_file_in_floats():
+    pytest.importorskip("defusedxml")
+    from screwsym.motion.urdf import sample_urdf
+
+    panda = Chain.from_urdf(sample_urdf("panda.urdf"), tip="panda_leftfinger", angles="exact")
+    q = [0.1, -0.3, 0.2, -1.5, 0.1, 1.2, 0.4, 0.02]
+    v = view(panda, q, twists=True)
+    assert (v.kinds["joint:revolute"], v.kinds["joint:prismatic"], v.kinds["sliders"]) == (7, 1, 1)
+    J = panda.jacobian(q)
+    axes = segments(trace(v.figure, "screw-axes:0"))       # the seven rotations have axes
+    assert len(axes) == 7
+    for i, seg in enumerate(axes):
+        assert max(on_axis(p, J[:, i]) for p in seg) < 1e-9
+    stroke = segments(trace(v.figure, "sliders"))[0]
+    assert np.isclose(np.linalg.norm(stroke[1] - stroke[0]), 0.02)
