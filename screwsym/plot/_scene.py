@@ -30,6 +30,7 @@ SymPy.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -57,7 +58,8 @@ from ..systems.linkage import Mechanism
 from ..systems.parallel import ParallelMechanism
 from ..systems.screw_system import ScrewSystem
 
-__all__ = ["Scene", "ScrewGroup", "scene_maker", "JOINT_KINDS"]
+__all__ = ["Scene", "ScrewGroup", "scene_maker", "cylindroid_rulings", "JOINT_KINDS",
+           "CYLINDROID_STEPS"]
 
 #: the joint kinds a view draws, each with its own glyph
 JOINT_KINDS = ("revolute", "prismatic", "helical", "cylindrical", "universal", "spherical",
@@ -87,6 +89,8 @@ class Scene:
     sliders: list[np.ndarray] = field(default_factory=list)    # (2, 3) prismatic strokes
     screws: list[tuple[int, np.ndarray, np.ndarray | None, str]] = field(default_factory=list)
     frame: np.ndarray | None = None                            # 4 x 4 tool pose
+    # the cylindroid of two screws: the feet, unit directions and pitches of its rulings
+    cylindroid: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
 
     def points(self) -> np.ndarray:
         """Every point drawn (for the scene's extent)."""
@@ -96,7 +100,33 @@ class Scene:
         pts += [h[None, :] for _, _, h, _ in self.screws if h is not None]
         if self.frame is not None:
             pts.append(self.frame[None, :3, 3])
+        if self.cylindroid is not None:
+            feet = self.cylindroid[0]
+            pts.append(feet[np.all(np.isfinite(feet), axis=1)])
         return np.concatenate(pts, axis=0)
+
+
+#: the rulings of a drawn cylindroid: theta in [0, pi] in this many steps
+CYLINDROID_STEPS = 73
+
+
+def cylindroid_rulings(s1: np.ndarray, s2: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Feet, unit directions and pitches of the axes of ``cos t s1 + sin t s2``, ``0 <= t <= pi``.
+
+    The axes of the screws of a two-system fill its cylindroid (Ball 1900, ch. 4; Hunt 1978,
+    §12.2).  A member whose ``S`` vanishes (a couple: its axis at infinity) gives a row of NaN.
+    """
+    t = np.linspace(0.0, math.pi, CYLINDROID_STEPS)
+    S6 = np.cos(t)[:, None] * s1 + np.sin(t)[:, None] * s2
+    w, v = S6[:, :3], S6[:, 3:]
+    ww = np.einsum("ij,ij->i", w, w)
+    scale = np.maximum(np.linalg.norm(S6, axis=1), 1e-300)
+    line = np.sqrt(ww) > 1e-12 * scale
+    with np.errstate(invalid="ignore", divide="ignore"):
+        feet = np.where(line[:, None], np.cross(w, v) / ww[:, None], np.nan)
+        dirs = np.where(line[:, None], w / np.sqrt(ww)[:, None], np.nan)
+        pitch = np.where(line, np.einsum("ij,ij->i", w, v) / ww, np.nan)
+    return feet, dirs, pitch
 
 
 # --------------------------------------------------------------------------
@@ -395,7 +425,8 @@ def _mechanism_maker(mech: Mechanism, packer: _Packer):
 
 
 def scene_maker(obj: Any, *, subs: dict, variables: tuple[Symbol, ...], screws: Any,
-                twists: bool) -> tuple[Callable[[np.ndarray], Scene], list[ScrewGroup], int]:
+                twists: bool, cylindroid: Any = None
+                ) -> tuple[Callable[[np.ndarray], Scene], list[ScrewGroup], int]:
     """``(make, groups, n)``: ``make(values)`` gives the :class:`Scene` at ``n`` values."""
     groups_in = check_screw_groups(screws)
     packer = _Packer(variables, subs)
@@ -433,6 +464,13 @@ def scene_maker(obj: Any, *, subs: dict, variables: tuple[Symbol, ...], screws: 
         groups.append(ScrewGroup(name, _family(ss)))
         for k, s in enumerate(ss):
             placed.append((g, packer.add(s.matrix, f"screws[{name!r}][{k}]"), f"{name}[{k}]"))
+    pair = None
+    if cylindroid is not None:
+        members = _screws(cylindroid, "cylindroid")
+        if len(members) != 2:
+            raise ValueError("cylindroid: expected two screws (the cylindroid of the "
+                             f"two-system they span), got {len(members)}")
+        pair = [packer.add(m.matrix, f"cylindroid[{k}]") for k, m in enumerate(members)]
     packer.compile()
 
     def make(q: np.ndarray) -> Scene:
@@ -441,6 +479,8 @@ def scene_maker(obj: Any, *, subs: dict, variables: tuple[Symbol, ...], screws: 
         body(q, flat, scene)
         for g, sl, label in placed:
             scene.screws.append((g, flat[sl], None, label))
+        if pair is not None:
+            scene.cylindroid = cylindroid_rulings(flat[pair[0]], flat[pair[1]])
         return scene
 
     return make, groups, n

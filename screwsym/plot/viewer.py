@@ -244,6 +244,13 @@ def _trace_data(scene: Scene, groups: list[ScrewGroup], size: float, centre: np.
         for c in range(3):
             frame.add(np.stack([T[:3, 3], T[:3, 3] + 0.08 * size * T[:3, c]]), "xyz"[c])
     out["frame"], counts["frame"] = frame.data(), frame.count
+    if scene.cylindroid is not None:
+        feet, rulings, pitch = scene.cylindroid
+        r = np.array([-0.45, 0.45]) * size
+        grid = feet[:, None, :] + r[None, :, None] * rulings[:, None, :]   # (steps, 2, 3)
+        out["cylindroid"] = {c: _nulls(grid[:, :, k]) for k, c in enumerate("xyz")}
+        out["cylindroid"]["surfacecolor"] = _nulls(np.repeat(pitch[:, None], 2, axis=1))
+        counts["cylindroid"] = int(np.sum(np.isfinite(pitch)))
     parts = [(_Lines(), _Lines(), _Heads()) for _ in groups]
     for g, s6, hint, label in scene.screws:
         free, mag = _magnitude(s6)
@@ -259,6 +266,11 @@ def _trace_data(scene: Scene, groups: list[ScrewGroup], size: float, centre: np.
     return [out[name] for name in layout], counts
 
 
+def _nulls(a: np.ndarray) -> list:
+    """A 2-D array as nested lists, NaN as None (a gap in a plotly surface; JSON has no NaN)."""
+    return [[None if not math.isfinite(x) else float(x) for x in row] for row in a]
+
+
 def _layout_names(first: Scene, groups: list[ScrewGroup]) -> list[str]:
     """The traces a view has, fixed for all its frames."""
     names = ["links"]
@@ -270,6 +282,8 @@ def _layout_names(first: Scene, groups: list[ScrewGroup]) -> list[str]:
     names += [f"joint:{k}" for k in JOINT_KINDS if any(j[0] == k for j in first.joints)]
     if first.frame is not None:
         names.append("frame")
+    if first.cylindroid is not None:
+        names.append("cylindroid")
     for g in range(len(groups)):
         names += [f"screw-axes:{g}", f"screw-shafts:{g}", f"screw-heads:{g}"]
     return names
@@ -315,6 +329,11 @@ def _style(name: str, groups: list[ScrewGroup], colours: list[str]) -> dict:
                     line={"color": [0, 0, 0, 1, 1, 1, 2, 2, 2], "cmin": 0, "cmax": 2,
                           "colorscale": [[0, "#d62728"], [0.5, "#2ca02c"], [1, "#1f77b4"]],
                           "width": 6}, hoverinfo="text")
+    if name == "cylindroid":
+        return dict(type="surface", name="cylindroid", meta=meta, showlegend=True,
+                    colorscale="Viridis", opacity=0.75, hoverinfo="name+text",
+                    colorbar={"title": {"text": "pitch"}, "len": 0.5, "x": 0.0},
+                    hovertemplate="pitch %{surfacecolor:.3g}<extra>cylindroid</extra>")
     part, g = name.split(":")
     group, colour = groups[int(g)], colours[int(g)]
     legend = {"legendgroup": f"g{g}", "name": html.escape(group.name)}
@@ -497,8 +516,8 @@ class View:
 
 
 def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, subs: Any = None,
-         screws: Any = None, twists: bool = False, title: str | None = None,
-         height: int = 560) -> View:
+         screws: Any = None, twists: bool = False, cylindroid: Any = None,
+         title: str | None = None, height: int = 560) -> View:
     r"""A 3-D view of a chain, a parallel mechanism, a graph mechanism or screws.
 
     Parameters
@@ -522,6 +541,9 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
         gives each group its legend entry and colour.
     twists : bool
         A chain's joint twists at ``q`` (the space Jacobian's columns) as a group.
+    cylindroid : two screws (or a screw system of two), optional
+        Their cylindroid as a surface: the axes of ``cos t $_1 + sin t $_2``
+        (Ball 1900, ch. 4; Hunt 1978, §12.2), coloured by pitch.
     title : str, optional
     height : int
         The figure's height in pixels (default 560).
@@ -558,7 +580,7 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     if isinstance(height, bool) or not isinstance(height, int) or height < 100:
         raise ValueError(f"height: expected a whole number of pixels >= 100, got {height!r}")
     make, groups, n = scene_maker(obj, subs=subs, variables=variables, screws=screws,
-                                  twists=twists)
+                                  twists=twists, cylindroid=cylindroid)
     if path is not None and q is not None:
         raise ValueError("q, path: give one configuration (q) or a path, not both")
     if path is not None:

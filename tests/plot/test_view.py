@@ -292,3 +292,40 @@ def test_a_robot_from_its_urdf_file_in_floats():
         assert max(on_axis(p, J[:, i]) for p in seg) < 1e-9
     stroke = segments(trace(v.figure, "sliders"))[0]
     assert np.isclose(np.linalg.norm(stroke[1] - stroke[0]), 0.02)
+
+
+def cylindroid_matches(v: View, h1: float, h2: float) -> bool:
+    """The drawn rulings against the cylindroid of (1,0,0; h1,0,0) and (0,1,0; 0,h2,0): the
+    axis of cos t $_1 + sin t $_2 lies at height z = (h2 - h1) sin t cos t, along
+    (cos t, sin t, 0), with pitch h1 cos^2 t + h2 sin^2 t (Hunt 1978, §12.2, eq. of the
+    cylindroid z = (h_b - h_a) sin t cos t; Ball 1900, §22)."""
+    s = trace(v.figure, "cylindroid")
+    t = np.linspace(0, math.pi, len(s.z))
+    x, y, z = (np.array(c, dtype=float) for c in (s.x, s.y, s.z))
+    d = np.stack([x[:, 1] - x[:, 0], y[:, 1] - y[:, 0]], axis=1)
+    d /= np.linalg.norm(d, axis=1)[:, None]
+    return (np.allclose(z[:, 0], (h2 - h1) * np.sin(t) * np.cos(t), atol=1e-12)
+            and np.allclose(z[:, 1], z[:, 0], atol=1e-12)
+            and np.allclose(np.abs(d[:, 0] * np.cos(t) + d[:, 1] * np.sin(t)), 1, atol=1e-12)
+            and np.allclose(np.array(s.surfacecolor, dtype=float)[:, 0],
+                            h1 * np.cos(t) ** 2 + h2 * np.sin(t) ** 2, atol=1e-12))
+
+
+def test_the_cylindroid_of_two_screws():
+    s1, s2 = Twist([1, 0, 0], [1, 0, 0]), Twist([0, 1, 0], [0, Rational(-1, 2), 0])
+    v = view([s1, s2], cylindroid=[s1, s2])
+    assert v.kinds["cylindroid"] == 73
+    assert cylindroid_matches(v, 1, -0.5)
+    assert not cylindroid_matches(v, -0.5, 1)              # the check sees a swapped pair
+    # a symbolic pitch along a path: the surface is recomputed per frame
+    h = symbols("h", real=True)
+    w = view([s1], path=[[0.0], [2.0]], variables=[h],
+             cylindroid=[s1, Twist([0, 1, 0], [0, h, 0])])
+    fig = w.figure
+    k = [(t.meta or {}).get("screwsym") for t in fig.data].index("cylindroid")
+    for frame, hv in zip(fig.frames, (0.0, 2.0), strict=True):
+        z = np.array(frame.data[k].z, dtype=float)[:, 0]
+        t = np.linspace(0, math.pi, len(z))
+        assert np.allclose(z, (hv - 1) * np.sin(t) * np.cos(t), atol=1e-12)
+    with pytest.raises(ValueError, match="cylindroid: expected two screws"):
+        view(s1, cylindroid=[s1, s2, s1])
