@@ -37,7 +37,9 @@ What is drawn (the glyphs):
   a force or a rotation, a **double head** for a couple or a translation (drawn
   at the scene's centre, a free vector), and for a finite non-zero pitch ``h`` a
   helix about the axis, right-handed for ``h > 0``, its advance per radian
-  :func:`~screwsym.plot.figures.helix_advance` (as in the matplotlib figures).
+  :func:`~screwsym.plot.figures.helix_advance` (as in the matplotlib figures);
+* a **cylindroid** (``cylindroid=(s1, s2)``): the surface of the axes of the
+  two-system's screws, coloured by their pitch.
 
 Numbers: every SymPy step (substitution, exponentials, checks) is done once by
 :func:`view`; each configuration is then lambdified expressions and NumPy (see
