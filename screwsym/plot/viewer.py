@@ -275,12 +275,13 @@ def _nulls(a: np.ndarray) -> list:
 
 def _layout_names(first: Scene, groups: list[ScrewGroup]) -> list[str]:
     """The traces a view has, fixed for all its frames."""
-    names = ["links"]
+    names = ["links"] if first.links else []       # none for screws alone
     if first.sliders:
         names.append("sliders")
     if first.solids:
         names.append("solids")
-    names.append("joint-axes")
+    if first.joints:
+        names.append("joint-axes")
     names += [f"joint:{k}" for k in JOINT_KINDS if any(j[0] == k for j in first.joints)]
     if first.frame is not None:
         names.append("frame")

@@ -315,6 +315,7 @@ def test_the_cylindroid_of_two_screws():
     s1, s2 = Twist([1, 0, 0], [1, 0, 0]), Twist([0, 1, 0], [0, Rational(-1, 2), 0])
     v = view([s1, s2], cylindroid=[s1, s2])
     assert v.kinds["cylindroid"] == 73
+    assert len(v.figure.data) == 4                  # the surface and the screws' three traces
     assert cylindroid_matches(v, 1, -0.5)
     assert not cylindroid_matches(v, -0.5, 1)              # the check sees a swapped pair
     # a symbolic pitch along a path: the surface is recomputed per frame
