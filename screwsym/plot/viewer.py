@@ -12,6 +12,17 @@ in Jupyter the view shows itself as the same self-contained HTML
 (``_repr_mimebundle_``: JupyterLab, VS Code, nbconvert and the documentation site
 run it alike).
 
+**One plotly.js for a whole site.**  Each self-contained view carries plotly.js
+(about 4.8 MB), so a page of several views weighs tens of MB.  A site that loads
+plotly.js once itself (the documentation site copies plotly's own
+``plotly.min.js`` into its ``_static`` folder, see ``notebooks/conf.py``) sets the
+environment variable ``SCREWSYM_VIEW_PLOTLYJS=site`` for the kernels that run its
+notebooks: a view's Jupyter output (``_repr_html_``, ``_repr_mimebundle_``) then
+leaves plotly.js out and calls the page's global ``Plotly`` (and logs a console
+error if the page has none).  Unset, or ``inline``, the output is self-contained
+(the default); any other value is a ``ValueError``.  :meth:`View.to_html` and
+:meth:`View.to_png` are always self-contained, whatever the variable says.
+
 Why plotly: its 3-D traces (WebGL) need nothing but one JavaScript file that
 the Python package ships, so the same figure works offline in JupyterLab, VS
 Code, an exported HTML file and a static Sphinx site; sliders and animation
@@ -401,6 +412,24 @@ _ERROR_HOOK = """<script>(function () {
 })();</script>"""
 
 
+#: the environment variable that tells a view's Jupyter output where plotly.js comes from
+PLOTLYJS_ENV = "SCREWSYM_VIEW_PLOTLYJS"
+_PLOTLYJS_MODES = {"": True, "inline": True, "site": False}
+
+#: before a view that relies on the page's plotly.js: a console error where there is none
+_NEEDS_PLOTLY = ("<script>if (typeof Plotly === 'undefined') {{ console.error("
+                 "'screwsym view {plot_id}: this page loads no plotly.js ({env}=site)'); }}</script>")
+
+
+def _include_plotlyjs() -> bool:
+    """Whether a view's Jupyter output carries plotly.js (``$SCREWSYM_VIEW_PLOTLYJS``)."""
+    mode = os.environ.get(PLOTLYJS_ENV, "").strip().lower()
+    if mode not in _PLOTLYJS_MODES:
+        raise ValueError(f"${PLOTLYJS_ENV}: expected 'inline' (plotly.js in each view, the "
+                         f"default) or 'site' (the page loads plotly.js), got {mode!r}")
+    return _PLOTLYJS_MODES[mode]
+
+
 class View:
     """An immutable 3-D view: a plotly figure and the counts of what it draws.
 
@@ -409,6 +438,23 @@ class View:
     glyphs of each kind in the first frame (``"links"``, ``"joint:revolute"``,
     ``"screws"``, ...); ``frames`` the number of animation frames (0 for one
     configuration).
+
+    In Jupyter a view shows itself as HTML with plotly.js inside (self-contained:
+    works offline in any front end).  With the environment variable
+    ``SCREWSYM_VIEW_PLOTLYJS=site`` in the kernel, that output leaves plotly.js
+    out and draws with the page's own ``Plotly`` (a documentation site that loads
+    plotly.js once for all its pages: the screwsym site does, from its
+    ``_static``).  :meth:`to_html` and :meth:`to_png` always embed plotly.js.
+
+    >>> import os
+    >>> from screwsym.motion.chain import ur5
+    >>> v = view(ur5())
+    >>> len(v._repr_html_()) > 4_000_000          # plotly.js inside
+    True
+    >>> os.environ["SCREWSYM_VIEW_PLOTLYJS"] = "site"
+    >>> len(v._repr_html_()) < 100_000            # the page's plotly.js
+    True
+    >>> del os.environ["SCREWSYM_VIEW_PLOTLYJS"]
     """
 
     __slots__ = ("_json", "_kinds", "_frames", "_id")
@@ -448,15 +494,18 @@ class View:
         """The number of animation frames (0: one configuration)."""
         return self._frames
 
-    def _html(self, full: bool, still: bool = False) -> str:
+    def _html(self, full: bool, still: bool = False, plotlyjs: bool = True) -> str:
         import plotly.io as pio
 
         config = {"displaylogo": False, "responsive": True}
         if still:
             config["displayModeBar"] = False
-        return pio.to_html(self.figure, include_plotlyjs=True, full_html=full,
-                           div_id=self._id, post_script=_POST_SCRIPT, auto_play=False,
-                           config=config)
+        out = pio.to_html(self.figure, include_plotlyjs=plotlyjs, full_html=full,
+                          div_id=self._id, post_script=_POST_SCRIPT, auto_play=False,
+                          config=config)
+        if plotlyjs:
+            return out
+        return _NEEDS_PLOTLY.format(plot_id=self._id, env=PLOTLYJS_ENV) + out
 
     def to_html(self, path: str | os.PathLike) -> str:
         """Write one self-contained HTML file (plotly.js inside, no network); return its path."""
@@ -509,13 +558,14 @@ class View:
         return os.fspath(path)
 
     def _repr_html_(self) -> str:
-        return self._html(False)
+        return self._html(False, plotlyjs=_include_plotlyjs())
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict:
-        # self-contained HTML only: every front end runs it (JupyterLab, VS Code, nbconvert,
-        # myst-nb), where plotly's own MIME type needs a front-end extension and is not
-        # rendered by the documentation site's builder
-        return {"text/html": self._html(False), "text/plain": repr(self)}
+        # HTML only: every front end runs it (JupyterLab, VS Code, nbconvert, myst-nb), where
+        # plotly's own MIME type needs a front-end extension and is not rendered by the
+        # documentation site's builder; self-contained unless $SCREWSYM_VIEW_PLOTLYJS=site
+        return {"text/html": self._html(False, plotlyjs=_include_plotlyjs()),
+                "text/plain": repr(self)}
 
 
 def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, subs: Any = None,

@@ -210,6 +210,28 @@ def test_to_html_is_one_file_with_plotly_inside(tmp_path):
     assert 'data-screwsym-errors' in page
 
 
+def test_site_mode_leaves_plotlyjs_to_the_page_but_not_in_to_html(tmp_path, monkeypatch):
+    v = view(ur5(), Q)
+    banner = "* plotly.js v"                          # the first lines of plotly.min.js
+    monkeypatch.delenv("SCREWSYM_VIEW_PLOTLYJS", raising=False)
+    inline = v._repr_mimebundle_()["text/html"]
+    assert banner in inline and v._repr_html_() == inline
+    monkeypatch.setenv("SCREWSYM_VIEW_PLOTLYJS", "inline")
+    assert v._repr_mimebundle_()["text/html"] == inline
+    monkeypatch.setenv("SCREWSYM_VIEW_PLOTLYJS", "site")
+    site = v._repr_mimebundle_()["text/html"]
+    assert banner not in site and "<script src=" not in site and len(site) < 100_000
+    assert site == v._repr_html_()
+    # the same figure, and a console error where the page has no Plotly
+    assert site.count("Plotly.newPlot(") == 1 and "typeof Plotly === 'undefined'" in site
+    assert inline[inline.index("Plotly.newPlot("):] == site[site.index("Plotly.newPlot("):]
+    page = open(v.to_html(tmp_path / "ur5.html"), encoding="utf-8").read()
+    assert banner in page and "<script src=" not in page       # to_html stays self-contained
+    monkeypatch.setenv("SCREWSYM_VIEW_PLOTLYJS", "cdn")
+    with pytest.raises(ValueError, match="SCREWSYM_VIEW_PLOTLYJS.*'cdn'"):
+        v._repr_mimebundle_()
+
+
 def test_the_view_is_immutable_and_its_figure_a_copy():
     v = view(ur5(), Q)
     with pytest.raises(AttributeError):

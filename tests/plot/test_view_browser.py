@@ -11,10 +11,12 @@ and in any case Chromium's host resolver maps every name to nothing.
 
 from __future__ import annotations
 
+import json
 import os
 import re
 import shutil
 import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -42,7 +44,8 @@ def _isolated() -> list[str]:
     return []
 
 
-def open_in_chromium(page: str, tmp_path) -> tuple[str, np.ndarray, str]:
+def open_in_chromium(page: str, tmp_path, size: str = "900,650",
+                     budget: int = 3000) -> tuple[str, np.ndarray, str]:
     """``(dom, screenshot RGB array, stderr)`` of ``page`` (a file) in headless Chromium."""
     exe = chromium()
     if exe is None:
@@ -52,8 +55,8 @@ def open_in_chromium(page: str, tmp_path) -> tuple[str, np.ndarray, str]:
            "--enable-unsafe-swiftshader", "--disable-background-networking",
            "--disable-component-update", "--disable-sync", "--no-first-run",
            "--host-resolver-rules=MAP * ~NOTFOUND", "--proxy-server=127.0.0.1:9",
-           f"--user-data-dir={tmp_path / 'profile'}", "--window-size=900,650",
-           "--virtual-time-budget=3000", "--enable-logging=stderr", "--v=0",
+           f"--user-data-dir={tmp_path / 'profile'}", f"--window-size={size}",
+           f"--virtual-time-budget={budget}", "--enable-logging=stderr", "--v=0",
            f"--screenshot={shot}", "--dump-dom", f"file://{page}"]
     run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr[-2000:]
@@ -76,8 +79,9 @@ def drew(rgb: np.ndarray) -> bool:
     return float(rgb.std()) > 0.02 and green_pixels(rgb) >= 40
 
 
-#: console lines that are no problem: software WebGL's performance notes, Chromium's advice
-_BENIGN = ("GL Driver Message", "willReadFrequently")
+#: console lines that are no problem: software WebGL's performance notes, Chromium's advice,
+#: and (on the documentation site) its note that MathJax's local web fonts load "slowly"
+_BENIGN = ("GL Driver Message", "willReadFrequently", "Slow network is detected. See")
 
 
 def console_errors(stderr: str) -> list[str]:
@@ -85,6 +89,24 @@ def console_errors(stderr: str) -> list[str]:
     uncaught exceptions, failed loads (``net::ERR_...``), plotly's warnings, any message."""
     return [ln for ln in stderr.splitlines()
             if ":CONSOLE" in ln and not any(b in ln for b in _BENIGN)]
+
+
+_NEW_PLOT = re.compile(r'Plotly\.newPlot\(\s*"(screwsym-[0-9a-f]+)",\s*')
+
+
+def page_views(dom: str) -> dict[str, tuple[int, int | None, int | None]]:
+    """Each view of a page (its plot div's id): ``(traces in its figure, traces drawn, WebGL
+    objects)``; the figure's traces read from the page's own ``Plotly.newPlot`` call, the drawn
+    ones from the attributes the view's post-script wrote (None: never drawn)."""
+    out = {}
+    for m in _NEW_PLOT.finditer(dom):
+        data, _ = json.JSONDecoder().raw_decode(dom, m.end())
+        tag = re.search(rf'<div[^>]*\bid="{m.group(1)}"[^>]*>', dom)
+        drawn = tag and attribute(tag.group(0), "data-screwsym-traces")
+        objects = tag and attribute(tag.group(0), "data-screwsym-objects")
+        out[m.group(1)] = (len(data), int(drawn) if drawn else None,
+                           int(objects) if objects else None)
+    return out
 
 
 def test_the_checks_can_fail():
@@ -99,6 +121,10 @@ def test_the_checks_can_fail():
     assert console_errors('[1:1:INFO:CONSOLE:9] "WARN: Invalid color specifier"') != []
     assert console_errors('[1:1:INFO:CONSOLE:0] "[.WebGL-0x1]GL Driver Message (OpenGL, '
                           'Performance): GPU stall due to ReadPixels"') == []
+    call = '<script>Plotly.newPlot(  "screwsym-0a", [{"type": "scatter3d"}, {"x": "]"}], {})'
+    assert page_views(f'<div id="screwsym-0a" data-screwsym-traces="2" '
+                      f'data-screwsym-objects="3"></div>{call}') == {"screwsym-0a": (2, 2, 3)}
+    assert page_views(f'<div id="screwsym-0a"></div>{call}') == {"screwsym-0a": (2, None, None)}
 
 
 @pytest.mark.slow
@@ -130,3 +156,51 @@ def test_to_png_draws_the_view(tmp_path):
     out = view(ur5(), [0, 0.5, -1, 0, 0.5, 0], twists=True).to_png(tmp_path / "ur5.png", width=700)
     rgb = image.imread(str(out))[..., :3]
     assert rgb.shape[1] == 700 and drew(rgb)
+
+
+#: the documentation site's page of 3-D views (notebook 13), read from a built site
+_SITE_PAGE = "13-mechanisms-in-3d.html"
+
+
+def _site_page() -> Path:
+    given = os.environ.get("SCREWSYM_SITE")
+    if not given:
+        pytest.skip("no built site: SCREWSYM_SITE=build/docs after python -m sphinx -b html "
+                    "notebooks build/docs (CI sets it)")
+    page = Path(given).resolve() / _SITE_PAGE
+    if not page.exists():
+        pytest.fail(f"SCREWSYM_SITE={given} has no {_SITE_PAGE}")
+    return page
+
+
+@pytest.mark.slow
+def test_the_sites_page_draws_its_views_with_the_shared_plotlyjs(tmp_path):
+    """The site's page opened from disk, network off: every view drawn, with the one plotly.js
+    of the site's _static (the page embeds none: tests/docs/test_site.py), no console error."""
+    page = _site_page()
+    dom, rgb, log = open_in_chromium(str(page), tmp_path, size="1200,9600", budget=8000)
+    views = page_views(dom)
+    assert len(views) >= 6, views
+    for name, (traces, drawn, objects) in views.items():
+        assert drawn == traces, f"{name}: {drawn} of {traces} traces drawn"
+        assert objects is not None and objects >= traces, f"{name}: {objects} WebGL objects"
+    assert console_errors(log) == []
+    assert drew(rgb), "the screenshot shows no drawn twist"          # the UR5's joint twists
+
+
+@pytest.mark.slow
+def test_the_sites_page_without_its_plotlyjs_draws_nothing(tmp_path):
+    """Negative control: the same page with the site's plotly.js script removed draws no view
+    and says so on the console (so the test above sees the shared script at work)."""
+    page = _site_page()
+    html = page.read_text(encoding="utf-8")
+    stripped = re.sub(r'<script src="_static/plotly-[^"]*"></script>', "", html)
+    assert stripped != html
+    copy = tmp_path / "site"
+    copy.mkdir()
+    (copy / "_static").symlink_to(page.parent / "_static")
+    (copy / _SITE_PAGE).write_text(stripped, encoding="utf-8")
+    dom, _, log = open_in_chromium(str(copy / _SITE_PAGE), tmp_path, size="900,650", budget=3000)
+    views = page_views(dom)
+    assert len(views) >= 6 and all(drawn is None for _, drawn, _ in views.values()), views
+    assert any("loads no plotly.js" in line for line in console_errors(log))
