@@ -2,7 +2,8 @@
 
 ``testpaths`` collects the doctests of every module of ``screwsym``; those of
 ``screwsym.plot`` draw with matplotlib (the ``plot`` extra), so without it they
-are skipped, as ``tests/plot`` skips itself with ``pytest.importorskip``; so are
+are skipped (those of ``screwsym.plot.viewer`` without plotly, the ``view`` extra),
+as ``tests/plot`` skips itself with ``pytest.importorskip``; so are
 those of ``screwsym.motion.urdf`` without ``defusedxml`` (the ``urdf`` extra).  This
 file imports nothing of screwsym (``tests/conftest.py`` must set the cache
 directory before screwsym loads).
@@ -15,7 +16,8 @@ import importlib.util
 import pytest
 
 #: package folder or module (relative to the repository root) -> the module its doctests need
-OPTIONAL = {"screwsym/plot/": "matplotlib", "screwsym/motion/urdf.py": "defusedxml"}
+OPTIONAL = {"screwsym/plot/": "matplotlib", "screwsym/plot/viewer.py": "plotly",
+            "screwsym/motion/urdf.py": "defusedxml"}
 #: doctests elsewhere (by name) -> the module they need
 OPTIONAL_DOCTESTS = {"screwsym.motion.chain.Chain.from_urdf": "defusedxml"}
 

@@ -197,7 +197,55 @@ def _copy_mathjax(app, exc) -> None:
         copy_asset(str(_MATHJAX), os.path.join(app.outdir, "_static", "mathjax"))
 
 
+# plotly.js once for the whole site: plotly's own plotly.min.js (from the installed plotly
+# package, no CDN) copied into the site's _static, and loaded by the pages that show a 3-D view
+# (screwsym.plot.view) only, where the browser caches it from one page to the next.  The
+# notebooks' kernels inherit SCREWSYM_VIEW_PLOTLYJS=site: a view's output then leaves plotly.js
+# out (each would otherwise carry its 4.8 MB) and draws with the page's global Plotly.
+# View.to_html stays one self-contained file whatever the variable says.
+os.environ["SCREWSYM_VIEW_PLOTLYJS"] = "site"
+#: what a view's output (plotly's to_html) calls on the page
+_PLOTLY_CALL = "Plotly.newPlot("
+
+
+def _plotlyjs_name() -> str | None:
+    """``plotly-<plotly.js version>.min.js`` (the name changes with the version: no stale cache),
+    or None without plotly (the notebooks that draw a view then fail to run, as they should)."""
+    try:
+        from plotly.offline import get_plotlyjs_version
+    except ImportError:
+        return None
+    return f"plotly-{get_plotlyjs_version()}.min.js"
+
+
+def _copy_plotlyjs(app) -> None:
+    """Write plotly's own plotly.min.js into the site's _static (before the pages are written,
+    so that Sphinx gives its link a checksum)."""
+    name = _plotlyjs_name()
+    if name is None or app.builder.format != "html":
+        return
+    from plotly.offline import get_plotlyjs
+
+    static = Path(app.outdir) / "_static"
+    static.mkdir(parents=True, exist_ok=True)
+    target = static / name
+    text = get_plotlyjs()
+    if not target.exists() or target.read_text(encoding="utf-8") != text:
+        target.write_text(text, encoding="utf-8")
+
+
+def _plotlyjs_on_pages_with_views(app, pagename, templatename, context, doctree) -> None:
+    name = _plotlyjs_name()
+    if name is None or _PLOTLY_CALL not in context.get("body", ""):
+        return
+    # as plotly's own self-contained output does: MathJax stays configured by the page
+    app.add_js_file(None, body="window.PlotlyConfig = {MathJaxConfig: 'local'};", priority=300)
+    app.add_js_file(name, priority=301)
+
+
 def setup(app):
+    app.connect("builder-inited", _copy_plotlyjs)
+    app.connect("html-page-context", _plotlyjs_on_pages_with_views)
     app.connect("build-finished", _copy_mathjax)
     app.connect("doctree-read", _links_to_included_files)
     app.add_directive("screwsym-book", BookRegistry)

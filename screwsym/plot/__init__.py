@@ -1,4 +1,7 @@
-r"""Pictures of lines, screws, twists and wrenches in matplotlib 3D axes.
+r"""Pictures of lines, screws, twists and wrenches in matplotlib 3D axes, and mechanisms in 3-D.
+
+:func:`view` draws a chain, a parallel mechanism or screws in the browser with plotly (the
+``view`` extra); see :mod:`screwsym.plot.viewer`.
 
 Needs matplotlib (``pip install -e ".[plot]"`` from a clone); see :mod:`screwsym.plot.figures`.
 ``screwsym.plot`` is loaded on first use and is not part of ``from screwsym import *``
@@ -17,6 +20,7 @@ from .figures import (
     plot_twist,
     plot_wrench,
 )
+from .viewer import View, view
 
 __all__ = [
     "plot",
@@ -29,4 +33,6 @@ __all__ = [
     "plot_frame",
     "find_artists",
     "helix_advance",
+    "view",
+    "View",
 ]

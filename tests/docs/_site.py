@@ -177,3 +177,28 @@ def mathjax_errors(fragments: list[tuple[str, bool]], mathjax: Path) -> list[str
     if result.returncode != 0:
         raise RuntimeError(f"mathjax_check.js failed: {result.stderr[-2000:]}")
     return json.loads(result.stdout)
+
+
+#: a 3-D view's output on a page (plotly's to_html), and plotly.js's own banner
+_PLOTLY_CALL = "Plotly.newPlot("
+_PLOTLY_BANNER = re.compile(r"\*\s*plotly\.js v\d")
+_SHARED_PLOTLY = re.compile(r"^_static/plotly-\d+\.\d+\.\d+\.min\.js(\?v=[0-9a-f]+)?$")
+
+
+def shared_plotlyjs(html: str, most: int = 5_000_000) -> list[str]:
+    """A page with 3-D views loads plotly.js once from the site's ``_static`` (shared by every
+    page, cached by the browser) and embeds no copy of it; it weighs under ``most`` bytes.  A
+    page without a view loads no plotly.js.  The findings."""
+    scripts = [s for s in read_page(html).resources if "plotly" in s.lower()]
+    shared = [s for s in scripts if _SHARED_PLOTLY.match(s)]
+    findings = [f"plotly.js loaded from elsewhere: {s}" for s in scripts if s not in shared]
+    embedded = len(_PLOTLY_BANNER.findall(html))
+    if _PLOTLY_CALL not in html:
+        return findings + [f"no view, yet loads {s}" for s in shared]
+    if len(shared) != 1:
+        findings.append(f"views, and {len(shared)} plotly.js from _static (expected 1)")
+    if embedded:
+        findings.append(f"{embedded} copies of plotly.js embedded in the page")
+    if len(html.encode("utf-8")) > most:
+        findings.append(f"{len(html.encode('utf-8')) / 1e6:.1f} MB, over {most / 1e6:.1f} MB")
+    return findings

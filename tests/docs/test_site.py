@@ -78,6 +78,21 @@ def test_missing_figures_are_found():
     assert _site.page_figures(page) == 1
 
 
+def test_views_without_the_shared_plotlyjs_are_found():
+    view = '<div id="v"></div><script>Plotly.newPlot("v", [], {})</script>'
+    shared = '<script src="_static/plotly-4.1.1.min.js?v=ab5aad05"></script>'
+    assert _site.shared_plotlyjs(f"<html><head>{shared}</head><body>{view}</body></html>") == []
+    assert _site.shared_plotlyjs("<p>no view</p>") == []
+    assert _site.shared_plotlyjs(f"<html><body>{view}</body></html>") != []          # none
+    assert _site.shared_plotlyjs(f"{shared}{shared}{view}") != []                     # twice
+    assert _site.shared_plotlyjs(f"{shared}{shared}<p>no view</p>") != []
+    cdn = '<script src="https://cdn.plot.ly/plotly-2.35.2.min.js"></script>'
+    assert _site.shared_plotlyjs(f"{cdn}{view}") != []
+    embedded = "<script>/**\n* plotly.js v4.1.1\n*/ (function(){})()</script>"
+    assert _site.shared_plotlyjs(f"{shared}{embedded}{view}") != []
+    assert _site.shared_plotlyjs(f"{shared}{view}" + "x" * 2000, most=1000) != []    # heavy
+
+
 def test_nbconvert_copies_are_not_notebooks(tmp_path):
     for name in ("01-a.ipynb", "01-a.nbconvert.ipynb", "conf.py", "02-b.ipynb"):
         (tmp_path / name).write_text("{}")
@@ -206,3 +221,15 @@ def test_formula_outputs_are_mathjax_not_pictures(site, pages):
         html = pages[path.stem + ".html"]
         # every formula output is a MathJax block of the page, none an image
         assert html.count('class="math notranslate nohighlight"') >= formulas, path.name
+
+
+@pytest.mark.slow
+def test_views_load_the_sites_own_plotlyjs_once(site, pages):
+    found = {name: f for name, html in pages.items() if (f := _site.shared_plotlyjs(html))}
+    assert found == {}
+    with_views = [name for name, html in pages.items() if "Plotly.newPlot(" in html]
+    assert "13-mechanisms-in-3d.html" in with_views
+    # the file in _static is plotly's own, from the installed package (no CDN)
+    offline = pytest.importorskip("plotly.offline")
+    shipped = site / "_static" / f"plotly-{offline.get_plotlyjs_version()}.min.js"
+    assert shipped.read_text(encoding="utf-8") == offline.get_plotlyjs()

@@ -126,7 +126,7 @@ LAYERS: dict[str, set[str]] = {
     "systems": {"core", "algebra"},
     "codegen": set(),
     "numeric": {"codegen", "core", "systems", "motion", "algebra"},  # motion: a Chain's dynamics as generated functions (numeric.dynamics, issue 21)
-    "plot": {"core", "numeric"},
+    "plot": {"core", "numeric", "motion", "systems"},  # the 3-D view draws chains and mechanisms (issue 37)
     "book": {"top"},
     "top": {"algebra", "core", "motion", "systems", "codegen", "numeric", "plot", "book"},
 }
