@@ -80,11 +80,22 @@ from ..algebra.surface import null_on_surface
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag
 from ..core.formulas import ad_matrix, cross_matrix
+from ..core.inertia import SpatialInertia
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from ._cases import Leaf, Stage, merge_cases, split_mechanism
 from ._rank_cases import apply_subs, case_budget, swapped
 from .joints import Joint, Parallelogram, Spherical, Universal
+from .loop_dynamics import (
+    actuation_condition,
+    check_inertias,
+    inverse_dynamics,
+    joint_accelerations,
+    joint_rates,
+    link_acceleration,
+    link_twist,
+    mass_matrix,
+)
 from .motion_type import motion_of
 from .parallel import Degenerate, ParallelMechanism
 from .screw_system import ScrewSystem, basis_with
@@ -205,6 +216,10 @@ class Mechanism(ScrewsymBasic):
     joints : list of (link_a, link_b, joint)
     base : str, int or Symbol
         The link that is fixed.
+    inertias : dict, optional
+        ``{link: SpatialInertia}``: each moving link's inertia in the space frame at
+        the configuration given (a link left out is massless), for
+        :meth:`mass_matrix` and :meth:`inverse_dynamics`.
 
     See Also
     ========
@@ -219,7 +234,7 @@ class Mechanism(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, joints: Any, base: Any = None) -> Self:
+    def __new__(cls, joints: Any, base: Any = None, inertias: Any = None) -> Self:
         if isinstance(joints, (str, bytes)) or not hasattr(joints, "__iter__"):
             raise TypeError(
                 "joints: expected a list of (link_a, link_b, joint) triples, got "
@@ -250,7 +265,11 @@ class Mechanism(ScrewsymBasic):
         if not any(base in t.args[:2] for t in triples):
             raise ValueError(f"base: {link_label(base)!r} is not a link of any joint")
         obj = ScrewsymBasic.__new__(cls, Tuple(*triples), base)
-        spanning_tree(obj)  # refuses a disconnected graph now
+        g = spanning_tree(obj)  # refuses a disconnected graph now
+        if inertias is not None:
+            pairs = check_inertias(inertias, g.index, base)
+            if pairs.args:
+                obj = ScrewsymBasic.__new__(cls, Tuple(*triples), base, pairs)
         return obj
 
     @classmethod
@@ -289,6 +308,16 @@ class Mechanism(ScrewsymBasic):
     def joints(self) -> tuple[tuple[Any, Any, Joint], ...]:
         """The triples ``(link_a, link_b, joint)`` as given."""
         return tuple((link_label(a), link_label(b), j) for a, b, j in self.args[0].args)
+
+    @property
+    def inertias(self) -> dict[Any, SpatialInertia]:
+        """``{link: SpatialInertia}`` as given (in the space frame, at this configuration)."""
+        return {link_label(p.args[0]): p.args[1] for p in self.inertia_pairs}
+
+    @property
+    def inertia_pairs(self) -> tuple[Tuple, ...]:
+        """The inertias as ``(link, SpatialInertia)`` pairs of link objects, in link order."""
+        return tuple(self.args[2].args) if len(self.args) > 2 else ()
 
     @property
     def freedom(self) -> int:
@@ -608,6 +637,124 @@ class Mechanism(ScrewsymBasic):
         """
         return second_order_of(self)
 
+
+    # ---------------------------------------------------- closed-loop dynamics
+    def actuation_condition(self, actuated: Any) -> Any:
+        """Where the joints ``actuated`` (numbers into :attr:`joints`) determine the motion.
+
+        ``True`` with numbers (an actuation singularity is a ``ValueError``); with
+        symbols ``Ne(det, 0)``, ``det`` the minor of the passive joints' columns of
+        the network matrix the results of :meth:`joint_rates`, :meth:`mass_matrix` and
+        :meth:`inverse_dynamics` are solved on (see :mod:`~screwsym.systems.loop_dynamics`).
+        """
+        return actuation_condition(self, actuated)
+
+    def joint_rates(self, actuated: Any, rates: Any) -> ImmutableMatrix:
+        """All joint rates (F, the joints' freedoms in order) from the ``rates`` of the joints
+        ``actuated``: Davies' null space restricted to the actuated rates (see
+        :mod:`~screwsym.systems.loop_dynamics`).
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
+        Matrix([[5, -60/7, 40/7, -15/7]])
+        """
+        return joint_rates(self, actuated, rates)
+
+    def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any) -> ImmutableMatrix:
+        """All joint accelerations from the actuated joints' ``rates`` and ``accelerations``:
+        the differentiated closure ``A qddot + quadratic_terms(qdot) = 0`` solved for the
+        passive ones (see :mod:`~screwsym.systems.loop_dynamics`)."""
+        return joint_accelerations(self, actuated, rates, accelerations)
+
+    def link_twist(self, link: Any, actuated: Any, rates: Any) -> Twist:
+        """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``."""
+        return link_twist(self, link, actuated, rates)
+
+    def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any) -> Twist:
+        """The twist rate ``dV/dt`` of ``link`` (its spatial acceleration, space frame, ray
+        order) for the actuated joints' ``rates`` and ``accelerations``."""
+        return link_acceleration(self, link, actuated, rates, accelerations)
+
+    def mass_matrix(self, actuated: Any, *, conds: str = "none") -> ImmutableMatrix:
+        r"""The k x k mass matrix in the rates of the joints ``actuated`` (k, the mobility).
+
+        Explanation
+        ===========
+
+        ``H = sum_l A_l^T Delta M_l A_l``, ``A_l`` link ``l``'s twist per actuated
+        rate and ``M_l`` its inertia (``inertias=``): the kinetic energy of the
+        mechanism is ``1/2 qa^T H qa``.  Exact; generic with symbols, holding where
+        :meth:`actuation_condition` does (``conds="piecewise"``: each entry a
+        ``Piecewise`` with that condition, ``nan`` elsewhere).  An actuation
+        singularity (the passive joints move with the actuated ones locked) is a
+        ``ValueError``.  See :mod:`~screwsym.systems.loop_dynamics`.
+
+        Examples
+        ========
+
+        A four-bar driven by its crank, a point mass of 1 at the coupler joint
+        ``(1, 2, 0)`` on the crank and one of 2 at ``(3, 3, 0)`` on the rocker
+        (about ``(4, 0, 0)``, at distance ``sqrt(10)``).  Per unit crank rate the
+        first moves at speed ``sqrt(5)`` and the rocker turns at ``3/7``
+        (:meth:`joint_rates`), so ``H = 1 * 5 + 2 * (3/7)**2 * 10 = 425/49``.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> fourbar.mass_matrix([0])
+        Matrix([[425/49]])
+        """
+        return mass_matrix(self, actuated, conds)
+
+    def inverse_dynamics(self, actuated: Any, rates: Any, accelerations: Any,
+                         gravity: Any = None, *, conds: str = "none") -> ImmutableMatrix:
+        r"""The forces or torques of the joints ``actuated`` for their ``rates`` and
+        ``accelerations``, every other joint passive and frictionless.
+
+        Explanation
+        ===========
+
+        By virtual power (Jourdain's principle):
+        ``tau = sum_l A_l^T Delta (M_l dV_l/dt + [V_l, M_l V_l] - W_l)``, ``V_l``
+        link ``l``'s twist, ``dV_l/dt`` its twist rate (:meth:`link_acceleration`),
+        ``W_l`` its weight under ``gravity`` (default ``(0, 0, -g)``, ``g`` a
+        positive symbol).  Exact; generic with symbols as :meth:`mass_matrix`.
+
+        Examples
+        ========
+
+        The four-bar of :meth:`mass_matrix` at rest, gravity ``-10`` along y.  Per
+        unit crank rate the first mass rises at ``1`` and the second at ``-3/7``
+        (it moves with ``3/7 * (-3, -1)``), so by virtual work the crank holds
+        ``1 * 10 * 1 + 2 * 10 * (-3/7) = 10/7``.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> fourbar.inverse_dynamics([0], [0], [0], [0, -10, 0])
+        Matrix([[10/7]])
+        """
+        return inverse_dynamics(self, actuated, rates, accelerations, gravity, conds)
 
 
 

@@ -1,0 +1,378 @@
+r"""The dynamics of closed loops at a configuration, in the rates of the actuated joints.
+
+A :class:`~screwsym.systems.linkage.Mechanism` with an inertia on each moving link
+(``inertias=``) has, at the configuration given, a mass matrix and an inverse
+dynamics in the rates of any set of ``k`` actuated one-freedom joints that
+determines its motion (``k`` the mobility).  Everything is first and second
+order kinematics of the loops (:mod:`~screwsym.systems.topology`,
+:mod:`~screwsym.systems.second_order`) and the principle of virtual power.
+
+Velocities.  The joint rates ``qdot`` (``F`` of them) close the loops when
+``A qdot = 0``, ``A`` the network matrix (Davies 1981).  Split into the actuated
+rates ``qa`` and the passive ones ``qp``: ``A_p qp = -A_a qa``.  The actuated
+rates determine the others iff ``A_p`` has full column rank ``F - k`` (else the
+passive joints can move with the actuators locked: an *actuation singularity*,
+the singularity of the second kind of Gosselin & Angeles for a parallel
+mechanism).  Then ``F - k`` rows ``R`` of ``A_p`` are independent, and
+``qdot = G qa`` with ``G`` the identity on the actuated rates and
+``-A_p[R]^-1 A_a[R]`` on the passive ones: Davies' null space restricted to the
+actuated rates.  ``G`` holds wherever ``det A_p[R] != 0``.
+
+Accelerations.  Differentiating the closure, on every loop (Müller 2016)
+``sum_i $_i qddot_i + sum_{i<j} [$_i, $_j] qdot_i qdot_j = 0`` in loop order,
+stacked ``A qddot + c(qdot) = 0`` (:meth:`Mechanism.quadratic_terms
+<screwsym.systems.linkage.Mechanism.quadratic_terms>`), so
+``qddot = G qa'' + b`` with ``b`` zero on the actuated rates and
+``-A_p[R]^-1 c_R`` on the passive ones.
+
+Links.  Link ``l``'s twist is the sum of the joint twists along the tree path
+from the base, ``V_l = P_l qdot`` (:func:`~screwsym.systems.topology.path_matrix`),
+and its twist rate (its spatial acceleration, ``dV_l/dt`` in the space frame)
+the same chain differentiated, ``P_l qddot + sum_{i<j} [$_i, $_j] qdot_i qdot_j``
+along the path (:func:`~screwsym.systems.second_order.chain_terms`).
+
+Dynamics.  Link ``l``'s twist per actuated rate is ``A_l = P_l G``; its momentum
+``M_l V_l`` (:class:`~screwsym.core.inertia.SpatialInertia`, ray order) changes
+as ``M_l dV_l/dt + [V_l, M_l V_l]`` (the Newton–Euler equation in screw form,
+as in :mod:`screwsym.motion.dynamics`).  The constraint wrenches of
+frictionless joints do no work on a motion the loops allow, so by virtual power
+(Jourdain's principle) the actuator forces are
+
+    tau = sum_l A_l^T Delta (M_l dV_l/dt + [V_l, M_l V_l] - W_l),
+
+``W_l`` the weight of link ``l`` (:meth:`SpatialInertia.gravity_wrench
+<screwsym.core.inertia.SpatialInertia.gravity_wrench>`) and ``Delta`` the half
+swap, so that ``x^T Delta w`` is the power of the wrench ``w`` on the twist ``x``
+(1.45).  The mass matrix, from the kinetic energy
+``T = 1/2 sum_l V_l^T Delta M_l V_l``, is ``H = sum_l A_l^T Delta M_l A_l``
+(``Delta M_l`` is symmetric), and ``tau = H qa'' + h(qa')``.
+
+Exact for exact input.  With symbols in the geometry the results are the generic
+ones: they hold where ``det A_p[R] != 0`` (:func:`actuation_condition`;
+``conds="piecewise"`` returns them with that condition, ``nan`` elsewhere).  With
+numbers an actuation singularity is a ``ValueError``; so is a configuration
+whose closure does not extend to second order along the rates given (a shaky
+one: no acceleration closes the loops).  With symbols the rows outside ``R`` are
+taken to close to second order as they do on a genuine configuration.
+
+References
+==========
+
+J. M. Davies, "Kirchhoff's circulation law applied to multi-loop kinematic
+chains", Mech. Mach. Theory 16 (1981) 171-183.
+A. Müller, "Local kinematic analysis of closed-loop linkages", J. Mechanisms
+Robotics 8(4) (2016) 041013.
+C. Gosselin, J. Angeles, "Singularity analysis of closed-loop kinematic chains",
+IEEE Trans. Robotics and Automation 6(3) (1990) 281-290.
+L.-W. Tsai, *Robot Analysis*, Wiley 1999, Chapter 9 (virtual work); F. E. Udwadia,
+R. E. Kalaba, *Analytical Dynamics*, Cambridge 1996 (Jourdain's principle).
+Lynch & Park, *Modern Robotics*, Cambridge 2017, Section 8.2.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any
+
+from sympy import (
+    ImmutableMatrix,
+    Matrix,
+    Ne,
+    S,
+    Symbol,
+    Tuple,
+    expand,
+    nan,
+    true,
+    zeros,
+)
+from sympy.polys.matrices import DomainMatrix
+
+from ..core.checks import check_choice, check_scalar, check_sequence, check_vector
+from ..core.conditions import CONDS, piecewise
+from ..core.decide import is_zero
+from ..core.formulas import bracket
+from ..core.inertia import SpatialInertia
+from ..core.tidy import tidy
+from ..core.twist import Twist
+from .second_order import chain_terms, loop_terms
+from .topology import check_link, link_label, network, path_matrix, spanning_tree
+
+if TYPE_CHECKING:
+    from .linkage import Mechanism
+
+__all__: list[str] = []  # its names serve Mechanism's methods; users reach them there
+
+#: the default gravitational acceleration, ``(0, 0, -g)``: the same as
+#: :data:`screwsym.motion.dynamics.GRAVITY` (systems does not import motion)
+GRAVITY = (S.Zero, S.Zero, -Symbol("g", positive=True))
+
+
+def check_inertias(inertias: Any, links: dict, base: Any) -> Tuple:
+    """``inertias`` (a dict link -> SpatialInertia) as the canonical ``Tuple`` of pairs.
+
+    ``links`` maps each link object to its number; the pairs come in that order.
+    """
+    if isinstance(inertias, Tuple):  # the canonical form (rebuilt by SymPy)
+        pairs = [(p.args[0], p.args[1]) for p in inertias.args]
+    elif isinstance(inertias, dict):
+        pairs = list(inertias.items())
+    else:
+        raise TypeError(
+            f"inertias: expected a dict {{link: SpatialInertia}}, got {type(inertias).__name__}")
+    out = {}
+    for key, value in pairs:
+        link = check_link(key, "inertias")
+        label = link_label(link)
+        if link not in links:
+            raise ValueError(f"inertias: {label!r} is not a link of this mechanism")
+        if link == base:
+            raise ValueError(f"inertias: {label!r} is the base, which does not move")
+        if not isinstance(value, SpatialInertia):
+            raise TypeError(f"inertias[{label!r}]: expected a SpatialInertia, got "
+                            f"{type(value).__name__}")
+        if link in out:
+            raise ValueError(f"inertias: {label!r} given twice")
+        out[link] = value
+    return Tuple(*(Tuple(k, v) for k, v in sorted(out.items(), key=lambda kv: links[kv[0]])))
+
+
+# ------------------------------------------------------------------ the actuation
+@dataclass(frozen=True)
+class _Actuation:
+    actuated: tuple  # the freedom numbers of the actuated joints, in the order given
+    passive: tuple  # the other freedom numbers, in order
+    rows: tuple  # R: rows of the network matrix, independent on the passive columns
+    G: ImmutableMatrix  # F x k: all joint rates per actuated rate
+    det: Any  # det A_p[R] (a non-zero number, or an expression in the symbols)
+    condition: Any  # where G holds: True, or Ne(det, 0)
+
+
+def _check_actuated(mech: Mechanism, actuated: Any) -> tuple:
+    items = check_sequence(actuated, "actuated", "joint numbers")
+    joints = mech.joints
+    g = spanning_tree(mech)
+    out = []
+    for i, a in enumerate(items):
+        if isinstance(a, bool) or not isinstance(a, int) and not getattr(a, "is_Integer", False):
+            raise TypeError(f"actuated[{i}]: expected a joint number (an int), got {a!r}")
+        a = int(a)
+        if not 0 <= a < len(joints):
+            raise ValueError(f"actuated[{i}]: expected a joint number 0..{len(joints) - 1}, "
+                             f"got {a}")
+        if joints[a][2].freedom != 1:
+            raise ValueError(f"actuated[{i}]: joint {a} has {joints[a][2].freedom} freedoms; an "
+                             "actuated joint has one (a revolute, prismatic or helical joint)")
+        if g.offsets[a] in out:
+            raise ValueError(f"actuated: joint {a} is given twice")
+        out.append(g.offsets[a])
+    return tuple(out)
+
+
+def _solve(B: Matrix, C: Matrix) -> Matrix:
+    """``B^-1 C`` for a square ``B`` non-singular where the result is used: exact, fraction
+    free in the polynomial ring of the entries (``sin(q)``, ``cos(q)`` and roots as its
+    symbols: an identity there is one at every value), one denominator."""
+    n = B.cols
+    dm = DomainMatrix.from_Matrix(Matrix.hstack(B, C))
+    K = dm.domain
+    num, den = dm[:, :n].solve_den(dm[:, n:])
+    d = K.to_sympy(den)
+    return num.to_Matrix().applyfunc(lambda e: e / d)
+
+
+def _determinant(B: Matrix) -> Any:
+    dm = DomainMatrix.from_Matrix(B)
+    return dm.domain.to_sympy(dm.det())
+
+
+@lru_cache(maxsize=64)
+def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
+    from ..algebra.linalg import field_matrix
+
+    net = network(mech)
+    A = net.A
+    F = A.cols
+    k = len(actuated)
+    M = F - net.rank
+    if k != M:
+        raise ValueError(f"actuated: expected as many actuated joints as the mobility, {M}, "
+                         f"got {k}")
+    passive = tuple(i for i in range(F) if i not in actuated)
+    Ap = A.extract(list(range(A.rows)), list(passive))
+    if passive:
+        # the independent rows of A_p: exact (generic with symbols, on the circle for angles)
+        _, rows = field_matrix(Ap.T).rref()
+    else:
+        rows = ()
+    if len(rows) < len(passive):
+        with_symbols = " at every value of the symbols" if A.free_symbols else ""
+        raise ValueError(
+            "actuated: an actuation singularity: the passive joints' columns of the network "
+            f"matrix have rank {len(rows)} < {len(passive)}{with_symbols}, so the passive "
+            "joints move with the actuated ones locked (the actuated rates do not determine "
+            "the motion)")
+    rows = tuple(rows)
+    G = zeros(F, k)
+    for c, a in enumerate(actuated):
+        G[a, c] = 1
+    det: Any = S.One
+    if passive:
+        B = Ap.extract(list(rows), list(range(len(passive))))
+        Aa = A.extract(list(rows), list(actuated))
+        X = _solve(B, -Aa)
+        for r, p in enumerate(passive):
+            for c in range(k):
+                G[p, c] = X[r, c]
+        det = _determinant(B)
+    condition = Ne(det, 0) if getattr(det, "free_symbols", None) else true
+    return _Actuation(actuated, passive, rows, ImmutableMatrix(G.applyfunc(_tidy)), det,
+                      condition)
+
+
+def _tidy(e: Any) -> Any:
+    return tidy(e) if e.free_symbols else expand(e)
+
+
+def _rates(value: Any, name: str, k: int) -> Matrix:
+    items = check_sequence(value, name, "actuated rates", k)
+    return Matrix([check_scalar(x, f"{name}[{i}]") for i, x in enumerate(items)])
+
+
+def actuation_condition(mech: Mechanism, actuated: Any) -> Any:
+    """Where the actuated joints determine the motion: ``True``, or ``Ne(det, 0)``."""
+    return _actuation(mech, _check_actuated(mech, actuated)).condition
+
+
+def joint_rates(mech: Mechanism, actuated: Any, rates: Any) -> ImmutableMatrix:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    qa = _rates(rates, "rates", len(act.actuated))
+    return ImmutableMatrix((act.G * qa).applyfunc(_tidy))
+
+
+def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) -> Matrix:
+    """All joint accelerations for the joint rates ``qd`` and actuated accelerations ``qa2``."""
+    net = network(mech)
+    A = net.A
+    c = _quadratic(loop_terms(net), qd)
+    qdd = Matrix(act.G * qa2)
+    if act.passive:
+        B = A.extract(list(act.rows), list(act.passive))
+        b = _solve(B, -c.extract(list(act.rows), [0]))
+        for r, p in enumerate(act.passive):
+            qdd[p] += b[r]
+    qdd = qdd.applyfunc(_tidy)
+    if not (A.free_symbols or qd.free_symbols or qa2.free_symbols):
+        residual = A * qdd + c
+        if any(is_zero(expand(e)) is not True for e in residual):
+            raise ValueError(
+                "rates: the loop closure does not extend to second order along these rates "
+                "(no joint accelerations close the loops: a shaky configuration)")
+    return qdd
+
+
+def _quadratic(terms: list, qd: Matrix) -> Matrix:
+    """The second-order terms of each chain of ``terms`` for the joint rates ``qd``, stacked."""
+    out = zeros(6 * len(terms), 1)
+    for i, (pairs, squares) in enumerate(terms):
+        for a, b, c in pairs:
+            out[6 * i:6 * i + 6, 0] += Matrix(c) * qd[a] * qd[b]
+        for a, y in squares:
+            out[6 * i:6 * i + 6, 0] += Matrix(y) * qd[a] ** 2
+    return out
+
+
+def joint_accelerations(mech: Mechanism, actuated: Any, rates: Any,
+                        accelerations: Any) -> ImmutableMatrix:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    return ImmutableMatrix(_accelerations(mech, act, act.G * qa, qa2))
+
+
+def _link(mech: Mechanism, link: Any) -> int:
+    key = check_link(link, "link")
+    g = spanning_tree(mech)
+    if key not in g.index:
+        raise ValueError(f"link: {link_label(key)!r} is not a link of this mechanism")
+    return int(g.index[key])
+
+
+def _twist(V: Matrix) -> Twist:
+    V = V.applyfunc(_tidy)
+    return Twist(V[:3, 0], V[3:, 0])
+
+
+def link_twist(mech: Mechanism, link: Any, actuated: Any, rates: Any) -> Twist:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    qa = _rates(rates, "rates", len(act.actuated))
+    return _twist(path_matrix(network(mech), _link(mech, link)) * act.G * qa)
+
+
+def _link_rate(mech: Mechanism, n: int, qd: Matrix, qdd: Matrix) -> Matrix:
+    net = network(mech)
+    return path_matrix(net, n) * qdd + _quadratic([chain_terms(net, net.graph.paths[n])], qd)
+
+
+def link_acceleration(mech: Mechanism, link: Any, actuated: Any, rates: Any,
+                      accelerations: Any) -> Twist:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    qd = Matrix(act.G * qa)
+    n = _link(mech, link)
+    return _twist(_link_rate(mech, n, qd, _accelerations(mech, act, qd, qa2)))
+
+
+def _bodies(mech: Mechanism) -> list[tuple[int, SpatialInertia]]:
+    g = spanning_tree(mech)
+    return [(int(g.index[p.args[0]]), p.args[1]) for p in mech.inertia_pairs]
+
+
+def _power_rows(mech: Mechanism, act: _Actuation) -> list[tuple[Matrix, Matrix, SpatialInertia]]:
+    """Per body: ``P_l``, ``A_l^T Delta`` (k x 6) and its inertia."""
+    net = network(mech)
+    out = []
+    for n, I in _bodies(mech):
+        P = path_matrix(net, n)
+        Al = P * act.G
+        swapped = Matrix.hstack(Al[3:, :].T, Al[:3, :].T)  # A_l^T Delta
+        out.append((P, swapped, I))
+    return out
+
+
+def _conds(value: ImmutableMatrix, act: _Actuation, conds: str) -> ImmutableMatrix:
+    """``value``, or with ``conds="piecewise"`` each entry where the actuation holds, nan elsewhere."""
+    if conds == "none" or act.condition is true:
+        return value
+    return ImmutableMatrix(piecewise([(value, act.condition)], value.applyfunc(lambda _: nan)))
+
+
+def mass_matrix(mech: Mechanism, actuated: Any, conds: str = "none") -> ImmutableMatrix:
+    conds = check_choice(conds, "conds", CONDS)
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    H = zeros(k, k)
+    for P, swapped, I in _power_rows(mech, act):
+        H += swapped * Matrix(I.matrix) * (P * act.G)
+    return _conds(ImmutableMatrix(H.applyfunc(_tidy)), act, conds)
+
+
+def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                     gravity: Any = None, conds: str = "none") -> ImmutableMatrix:
+    conds = check_choice(conds, "conds", CONDS)
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+    qd = Matrix(act.G * qa)
+    qdd = _accelerations(mech, act, qd, qa2)
+    tau = zeros(k, 1)
+    for (P, swapped, I), (n, _) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
+        V = P * qd
+        Vdot = _link_rate(mech, n, qd, qdd)
+        momentum = Matrix(I.matrix) * V
+        weight = I.gravity_wrench(g).matrix
+        tau += swapped * (Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight)
+    return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
