@@ -86,16 +86,7 @@ from ..core.wrench import Wrench
 from ._cases import Leaf, Stage, merge_cases, split_mechanism
 from ._rank_cases import apply_subs, case_budget, swapped
 from .joints import Joint, Parallelogram, Spherical, Universal
-from .loop_dynamics import (
-    actuation_condition,
-    check_inertias,
-    inverse_dynamics,
-    joint_accelerations,
-    joint_rates,
-    link_acceleration,
-    link_twist,
-    mass_matrix,
-)
+from .loop_dynamics import LoopDynamicsMixin, check_inertias
 from .motion_type import motion_of
 from .parallel import Degenerate, ParallelMechanism
 from .screw_system import ScrewSystem, basis_with
@@ -145,7 +136,7 @@ class MechanismMobility(NamedTuple):
 
 
 
-class Mechanism(ScrewsymBasic):
+class Mechanism(LoopDynamicsMixin, ScrewsymBasic):
     r"""A mechanism of any topology: links joined by joints, one link the base.
 
     Explanation
@@ -273,11 +264,14 @@ class Mechanism(ScrewsymBasic):
         return obj
 
     @classmethod
-    def from_parallel(cls, pm: ParallelMechanism) -> Mechanism:
+    def from_parallel(cls, pm: ParallelMechanism, inertias: Any = None) -> Mechanism:
         """The mechanism of a :class:`~screwsym.systems.parallel.ParallelMechanism`, as a graph.
 
         The links are ``"base"``, ``"platform"`` and, for limb ``i`` (from 1),
-        ``"limb<i>.<k>"``, the ``k``-th link from the base.
+        ``"limb<i>.<k>"``, the ``k``-th link from the base; the joints are the limbs'
+        in order (limb 1's first).  ``inertias`` as for :class:`Mechanism`, by those
+        names: the dynamics of the parallel mechanism (:meth:`mass_matrix`,
+        :meth:`inverse_dynamics`) in its actuated joints' rates.
 
         >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.parallel import Limb, ParallelMechanism
@@ -291,7 +285,7 @@ class Mechanism(ScrewsymBasic):
         >>> m.relative_twists("platform").rank == pm.mobility().mobility == 1
         True
         """
-        return _from_parallel(pm)
+        return _from_parallel(pm, inertias)
 
     # ------------------------------------------------------------ parts
     @property
@@ -638,125 +632,6 @@ class Mechanism(ScrewsymBasic):
         return second_order_of(self)
 
 
-    # ---------------------------------------------------- closed-loop dynamics
-    def actuation_condition(self, actuated: Any) -> Any:
-        """Where the joints ``actuated`` (numbers into :attr:`joints`) determine the motion.
-
-        ``True`` with numbers (an actuation singularity is a ``ValueError``); with
-        symbols ``Ne(det, 0)``, ``det`` the minor of the passive joints' columns of
-        the network matrix the results of :meth:`joint_rates`, :meth:`mass_matrix` and
-        :meth:`inverse_dynamics` are solved on (see :mod:`~screwsym.systems.loop_dynamics`).
-        """
-        return actuation_condition(self, actuated)
-
-    def joint_rates(self, actuated: Any, rates: Any) -> ImmutableMatrix:
-        """All joint rates (F, the joints' freedoms in order) from the ``rates`` of the joints
-        ``actuated``: Davies' null space restricted to the actuated rates (see
-        :mod:`~screwsym.systems.loop_dynamics`).
-
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
-        >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
-        Matrix([[5, -60/7, 40/7, -15/7]])
-        """
-        return joint_rates(self, actuated, rates)
-
-    def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any) -> ImmutableMatrix:
-        """All joint accelerations from the actuated joints' ``rates`` and ``accelerations``:
-        the differentiated closure ``A qddot + quadratic_terms(qdot) = 0`` solved for the
-        passive ones (see :mod:`~screwsym.systems.loop_dynamics`)."""
-        return joint_accelerations(self, actuated, rates, accelerations)
-
-    def link_twist(self, link: Any, actuated: Any, rates: Any) -> Twist:
-        """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``."""
-        return link_twist(self, link, actuated, rates)
-
-    def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any) -> Twist:
-        """The twist rate ``dV/dt`` of ``link`` (its spatial acceleration, space frame, ray
-        order) for the actuated joints' ``rates`` and ``accelerations``."""
-        return link_acceleration(self, link, actuated, rates, accelerations)
-
-    def mass_matrix(self, actuated: Any, *, conds: str = "none") -> ImmutableMatrix:
-        r"""The k x k mass matrix in the rates of the joints ``actuated`` (k, the mobility).
-
-        Explanation
-        ===========
-
-        ``H = sum_l A_l^T Delta M_l A_l``, ``A_l`` link ``l``'s twist per actuated
-        rate and ``M_l`` its inertia (``inertias=``): the kinetic energy of the
-        mechanism is ``1/2 qa^T H qa``.  Exact; generic with symbols, holding where
-        :meth:`actuation_condition` does (``conds="piecewise"``: each entry a
-        ``Piecewise`` with that condition, ``nan`` elsewhere).  An actuation
-        singularity (the passive joints move with the actuated ones locked) is a
-        ``ValueError``.  See :mod:`~screwsym.systems.loop_dynamics`.
-
-        Examples
-        ========
-
-        A four-bar driven by its crank, a point mass of 1 at the coupler joint
-        ``(1, 2, 0)`` on the crank and one of 2 at ``(3, 3, 0)`` on the rocker
-        (about ``(4, 0, 0)``, at distance ``sqrt(10)``).  Per unit crank rate the
-        first moves at speed ``sqrt(5)`` and the rocker turns at ``3/7``
-        (:meth:`joint_rates`), so ``H = 1 * 5 + 2 * (3/7)**2 * 10 = 425/49``.
-
-        >>> from screwsym.core.inertia import SpatialInertia
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
-        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
-        >>> fourbar.mass_matrix([0])
-        Matrix([[425/49]])
-        """
-        return mass_matrix(self, actuated, conds)
-
-    def inverse_dynamics(self, actuated: Any, rates: Any, accelerations: Any,
-                         gravity: Any = None, *, conds: str = "none") -> ImmutableMatrix:
-        r"""The forces or torques of the joints ``actuated`` for their ``rates`` and
-        ``accelerations``, every other joint passive and frictionless.
-
-        Explanation
-        ===========
-
-        By virtual power (Jourdain's principle):
-        ``tau = sum_l A_l^T Delta (M_l dV_l/dt + [V_l, M_l V_l] - W_l)``, ``V_l``
-        link ``l``'s twist, ``dV_l/dt`` its twist rate (:meth:`link_acceleration`),
-        ``W_l`` its weight under ``gravity`` (default ``(0, 0, -g)``, ``g`` a
-        positive symbol).  Exact; generic with symbols as :meth:`mass_matrix`.
-
-        Examples
-        ========
-
-        The four-bar of :meth:`mass_matrix` at rest, gravity ``-10`` along y.  Per
-        unit crank rate the first mass rises at ``1`` and the second at ``-3/7``
-        (it moves with ``3/7 * (-3, -1)``), so by virtual work the crank holds
-        ``1 * 10 * 1 + 2 * 10 * (-3/7) = 10/7``.
-
-        >>> from screwsym.core.inertia import SpatialInertia
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
-        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
-        >>> fourbar.inverse_dynamics([0], [0], [0], [0, -10, 0])
-        Matrix([[10/7]])
-        """
-        return inverse_dynamics(self, actuated, rates, accelerations, gravity, conds)
-
-
 
 def _put(M: Matrix, subs: dict | None) -> Matrix:
     """``M`` with a case's substitution made (``sin(q)``, ``cos(q)`` reach ``sin(2 q)``)."""
@@ -985,7 +860,7 @@ def _elements(j: Joint, twists: tuple, side: int) -> list[Matrix]:
 
 
 
-def _from_parallel(pm: ParallelMechanism) -> Mechanism:
+def _from_parallel(pm: ParallelMechanism, inertias: Any = None) -> Mechanism:
     if not isinstance(pm, ParallelMechanism):
         raise TypeError(f"pm: expected a ParallelMechanism, got {type(pm).__name__}")
     triples = []
@@ -993,7 +868,7 @@ def _from_parallel(pm: ParallelMechanism) -> Mechanism:
         chain = ["base"] + [f"limb{i + 1}.{k}" for k in range(1, len(limb.joints))] + ["platform"]
         for k, j in enumerate(limb.joints):
             triples.append((chain[k], chain[k + 1], j))
-    return Mechanism(triples, base="base")
+    return Mechanism(triples, base="base", inertias=inertias)
 
 
 def _reduced(system: ScrewSystem) -> ScrewSystem:

@@ -73,7 +73,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from sympy import (
     ImmutableMatrix,
@@ -376,3 +376,127 @@ def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: 
         weight = I.gravity_wrench(g).matrix
         tau += swapped * (Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight)
     return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
+
+
+class LoopDynamicsMixin:
+    """The closed-loop dynamics methods of :class:`~screwsym.systems.linkage.Mechanism`
+    (a module of their own: see the module docstring)."""
+
+    __slots__ = ()
+
+    def actuation_condition(self, actuated: Any) -> Any:
+        """Where the joints ``actuated`` (numbers into :attr:`joints`) determine the motion.
+
+        ``True`` with numbers (an actuation singularity is a ``ValueError``); with
+        symbols ``Ne(det, 0)``, ``det`` the minor of the passive joints' columns of
+        the network matrix the results of :meth:`joint_rates <screwsym.systems.linkage.Mechanism.joint_rates>`, :meth:`mass_matrix` and
+        :meth:`inverse_dynamics` are solved on (see :mod:`~screwsym.systems.loop_dynamics`).
+        """
+        return actuation_condition(cast("Mechanism", self), actuated)
+
+    def joint_rates(self, actuated: Any, rates: Any) -> ImmutableMatrix:
+        """All joint rates (F, the joints' freedoms in order) from the ``rates`` of the joints
+        ``actuated``: Davies' null space restricted to the actuated rates (see
+        :mod:`~screwsym.systems.loop_dynamics`).
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
+        Matrix([[5, -60/7, 40/7, -15/7]])
+        """
+        return joint_rates(cast("Mechanism", self), actuated, rates)
+
+    def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any) -> ImmutableMatrix:
+        """All joint accelerations from the actuated joints' ``rates`` and ``accelerations``:
+        the differentiated closure ``A qddot + quadratic_terms(qdot) = 0`` solved for the
+        passive ones (see :mod:`~screwsym.systems.loop_dynamics`)."""
+        return joint_accelerations(cast("Mechanism", self), actuated, rates, accelerations)
+
+    def link_twist(self, link: Any, actuated: Any, rates: Any) -> Twist:
+        """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``."""
+        return link_twist(cast("Mechanism", self), link, actuated, rates)
+
+    def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any) -> Twist:
+        """The twist rate ``dV/dt`` of ``link`` (its spatial acceleration, space frame, ray
+        order) for the actuated joints' ``rates`` and ``accelerations``."""
+        return link_acceleration(cast("Mechanism", self), link, actuated, rates, accelerations)
+
+    def mass_matrix(self, actuated: Any, *, conds: str = "none") -> ImmutableMatrix:
+        r"""The k x k mass matrix in the rates of the joints ``actuated`` (k, the mobility).
+
+        Explanation
+        ===========
+
+        ``H = sum_l A_l^T Delta M_l A_l``, ``A_l`` link ``l``'s twist per actuated
+        rate and ``M_l`` its inertia (``inertias=``): the kinetic energy of the
+        mechanism is ``1/2 qa^T H qa``.  Exact; generic with symbols, holding where
+        :meth:`actuation_condition` does (``conds="piecewise"``: each entry a
+        ``Piecewise`` with that condition, ``nan`` elsewhere).  An actuation
+        singularity (the passive joints move with the actuated ones locked) is a
+        ``ValueError``.  See :mod:`~screwsym.systems.loop_dynamics`.
+
+        Examples
+        ========
+
+        A four-bar driven by its crank, a point mass of 1 at the coupler joint
+        ``(1, 2, 0)`` on the crank and one of 2 at ``(3, 3, 0)`` on the rocker
+        (about ``(4, 0, 0)``, at distance ``sqrt(10)``).  Per unit crank rate the
+        first moves at speed ``sqrt(5)`` and the rocker turns at ``3/7``
+        (:meth:`joint_rates <screwsym.systems.linkage.Mechanism.joint_rates>`), so ``H = 1 * 5 + 2 * (3/7)**2 * 10 = 425/49``.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> fourbar.mass_matrix([0])
+        Matrix([[425/49]])
+        """
+        return mass_matrix(cast("Mechanism", self), actuated, conds)
+
+    def inverse_dynamics(self, actuated: Any, rates: Any, accelerations: Any,
+                         gravity: Any = None, *, conds: str = "none") -> ImmutableMatrix:
+        r"""The forces or torques of the joints ``actuated`` for their ``rates`` and
+        ``accelerations``, every other joint passive and frictionless.
+
+        Explanation
+        ===========
+
+        By virtual power (Jourdain's principle):
+        ``tau = sum_l A_l^T Delta (M_l dV_l/dt + [V_l, M_l V_l] - W_l)``, ``V_l``
+        link ``l``'s twist, ``dV_l/dt`` its twist rate (:meth:`link_acceleration`),
+        ``W_l`` its weight under ``gravity`` (default ``(0, 0, -g)``, ``g`` a
+        positive symbol).  Exact; generic with symbols as :meth:`mass_matrix`.
+
+        Examples
+        ========
+
+        The four-bar of :meth:`mass_matrix` at rest, gravity ``-10`` along y.  Per
+        unit crank rate the first mass rises at ``1`` and the second at ``-3/7``
+        (it moves with ``3/7 * (-3, -1)``), so by virtual work the crank holds
+        ``1 * 10 * 1 + 2 * 10 * (-3/7) = 10/7``.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> fourbar.inverse_dynamics([0], [0], [0], [0, -10, 0])
+        Matrix([[10/7]])
+        """
+        return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)

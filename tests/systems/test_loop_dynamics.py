@@ -344,6 +344,45 @@ def test_mass_matrix_symmetric_positive_definite_at_random_states():
     assert not is_symmetric_positive_definite(H + Matrix([[0, 1], [0, 0]]))
 
 
+# ------------------------------------------------------------------ a 3-RPR parallel mechanism
+def test_3rpr_platform_dynamics_matches_tsais_virtual_work_model():
+    """A planar 3-RPR (legs massless, prismatic joints actuated) built as a
+    ``ParallelMechanism``: the mass matrix and the static forces against Tsai's
+    virtual-work model, ``H = J^-T M_x J^-1`` and ``tau = -J^-T w_g``, with the inverse
+    Jacobian rows ``[u_i; (p_i x u_i)_z]`` (Tsai, *Robot Analysis*, 1999, §4.6 and §9.6;
+    ``u_i`` the unit leg directions, ``p_i`` the platform pivots)."""
+    from screwsym.systems.joints import P
+    from screwsym.systems.parallel import Limb, ParallelMechanism
+
+    base = [Matrix([0, 0]), Matrix([10, 0]), Matrix([5, 12])]
+    pivots = [Matrix([3, 4]), Matrix([6, 3]), Matrix([5, 7])]  # each leg 5 long
+    u = [(p - b) / 5 for b, p in zip(base, pivots, strict=True)]
+    pm = ParallelMechanism(*(Limb(R(list(b) + [0], Z), P(list(d) + [0]), R(list(p) + [0], Z))
+                             for b, d, p in zip(base, u, pivots, strict=True)))
+    m, c, Izz = 3, Matrix([Rational(14, 3), Rational(14, 3)]), Rational(5, 2)
+    platform = SpatialInertia(m, list(c) + [0], diag(1, Rational(3, 2), Izz))
+    mech = Mechanism.from_parallel(pm, inertias={"platform": platform})
+    actuated = [1, 4, 7]  # the prismatic joints, limb by limb
+    # Tsai's model, in the platform's coordinates (v_O, omega)
+    Jinv = Matrix([[ui[0], ui[1], pi[0] * ui[1] - pi[1] * ui[0]]
+                   for ui, pi in zip(u, pivots, strict=True)])
+    J = Jinv.inv()
+    # kinetic energy 1/2 m |v_O + omega x c|^2 + 1/2 Izz omega^2
+    E = Matrix([[1, 0, -c[1]], [0, 1, c[0]]])  # the com's velocity per (v_O, omega)
+    Mx = m * E.T * E + diag(0, 0, Izz)
+    g = Matrix([0, -10])
+    wg = Matrix([m * g[0], m * g[1], c[0] * m * g[1] - c[1] * m * g[0]])  # force, moment at O
+    H = mech.mass_matrix(actuated)
+    assert H == J.T * Mx * J
+    tau = mech.inverse_dynamics(actuated, [0, 0, 0], [0, 0, 0], [0, -10, 0])
+    assert tau == -J.T * wg
+    # the checks reject a perturbed platform
+    heavier = Mechanism.from_parallel(pm, inertias={
+        "platform": SpatialInertia(m + Rational(1, 100), list(c) + [0], diag(1, Rational(3, 2), Izz))})
+    assert heavier.mass_matrix(actuated) != J.T * Mx * J
+    assert heavier.inverse_dynamics(actuated, [0, 0, 0], [0, 0, 0], [0, -10, 0]) != -J.T * wg
+
+
 # ------------------------------------------------------------------ singular and bad input
 def test_actuation_singularity_is_a_clear_error():
     """Coupler and rocker in line (B on the line AD): the crank cannot drive the four-bar;
