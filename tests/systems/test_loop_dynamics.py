@@ -17,7 +17,7 @@ import random
 
 import numpy as np
 import pytest
-from _linkages import DELTA_RADIAL, delta_joints
+from _linkages import DELTA_RADIAL, bennett, delta_joints, shaky_4r
 from mpmath import mp, mpf
 from sympy import (
     ImmutableMatrix,
@@ -422,7 +422,7 @@ def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
     J = S.solve(Matrix.diag(*(S.row(i).dot(u.cross(elbow - b))
                               for i, (u, b, elbow, attach, _) in enumerate(legs))))
     tau = []
-    for i, (u, b, elbow, attach, c) in enumerate(legs):
+    for i, (u, b, _, _, c) in enumerate(legs):
         r = c - b
         axial = (u.T * I_c * u)[0] + m_arm * (r.dot(r) - r.dot(u) ** 2)  # about the arm's axis
         weight = m_arm * g.dot(u.cross(r))  # the weight's power per unit arm rate
@@ -468,6 +468,35 @@ def test_symbolic_configuration_gives_the_generic_result_and_its_condition():
     assert isinstance(pw[0], Piecewise) and pw[0].subs({x: Rational(5, 2), y: 1}) is nan
     tau = mech.inverse_dynamics([0], [0], [0], [0, -10, 0])
     assert tau.subs({x: 3, y: 3}) == Matrix([[Rational(10, 7)]])
+
+
+def test_a_mechanism_with_inertias_substitutes_and_compares_as_a_value():
+    """``subs`` rebuilds the mechanism with its inertias (the canonical pairs are accepted)."""
+    x, y = symbols("x y", real=True)
+    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
+    joints = [("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
+              ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))]
+    mech = Mechanism(joints, base="ground", inertias=inert)
+    here = mech.subs({x: 3, y: 3})
+    assert here.mass_matrix([0]) == Matrix([[Rational(425, 49)]])
+    assert here.inertias["rocker"] == SpatialInertia.point_mass(2, [3, 3, 0])
+    assert mech != Mechanism(joints, base="ground")
+    assert mech == Mechanism(joints, base="ground", inertias=dict(reversed(list(inert.items()))))
+
+
+def test_a_shaky_configuration_has_no_accelerations():
+    """Four revolutes on one regulus (Müller 2016, §6): one instantaneous freedom, none to
+    second order, so no joint accelerations close the loop for a non-zero rate: a clear
+    error, not a number.  Bennett's linkage (a finite motion) has them."""
+    mech = shaky_4r()
+    assert mech.joint_rates([0], [1]) != ImmutableMatrix.zeros(4, 1)
+    with pytest.raises(ValueError, match="second order"):
+        mech.joint_accelerations([0], [1], [0])
+    ben = bennett()
+    qdd = ben.joint_accelerations([0], [1], [2])
+    qd = ben.joint_rates([0], [1])
+    assert ben.network_matrix() * qdd + ben.quadratic_terms(qd) == ImmutableMatrix.zeros(6, 1)
 
 
 def false_():
