@@ -76,9 +76,12 @@ from functools import lru_cache
 from typing import TYPE_CHECKING, Any, cast
 
 from sympy import (
+    Float,
     ImmutableMatrix,
     Matrix,
     Ne,
+    Poly,
+    Rational,
     S,
     Symbol,
     Tuple,
@@ -147,6 +150,7 @@ class _Actuation:
     G: ImmutableMatrix  # F x k: all joint rates per actuated rate
     det: Any  # det A_p[R] (a non-zero number, or an expression in the symbols)
     condition: Any  # where G holds: True, or Ne(det, 0)
+    terms: list  # the loops' second-order terms (loop_terms)
 
 
 def _check_actuated(mech: Mechanism, actuated: Any) -> tuple:
@@ -228,7 +232,7 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
         det = _determinant(B)
     condition = Ne(det, 0) if getattr(det, "free_symbols", None) else true
     return _Actuation(actuated, passive, rows, ImmutableMatrix(G.applyfunc(_tidy)), det,
-                      condition)
+                      condition, loop_terms(net))
 
 
 def _tidy(e: Any) -> Any:
@@ -255,7 +259,7 @@ def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) ->
     """All joint accelerations for the joint rates ``qd`` and actuated accelerations ``qa2``."""
     net = network(mech)
     A = net.A
-    c = _quadratic(loop_terms(net), qd)
+    c = _quadratic(act.terms, qd)
     qdd = Matrix(act.G * qa2)
     if act.passive:
         B = A.extract(list(act.rows), list(act.passive))
@@ -263,13 +267,35 @@ def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) ->
         for r, p in enumerate(act.passive):
             qdd[p] += b[r]
     qdd = qdd.applyfunc(_tidy)
-    if not (A.free_symbols or qd.free_symbols or qa2.free_symbols):
-        residual = A * qdd + c
-        if any(is_zero(expand(e)) is not True for e in residual):
+    if not A.free_symbols:
+        _check_second_order(act, A, qd)
+    return qdd
+
+
+def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
+    """Refuse rates along which the closure does not extend to second order: the rows of the
+    differentiated closure outside ``R`` must hold too.  Exact: floats in the rates are taken
+    at their exact binary values; rates with symbols must satisfy it identically."""
+    qx = qd.applyfunc(lambda e: e.xreplace({f: Rational(f) for f in e.atoms(Float)}))
+    c = _quadratic(act.terms, qx)
+    b = zeros(A.cols, 1)
+    if act.passive:
+        B = A.extract(list(act.rows), list(act.passive))
+        x = _solve(B, -c.extract(list(act.rows), [0]))
+        for r, p in enumerate(act.passive):
+            b[p] = x[r]
+    residual = A * b + c
+    rates = sorted(qx.free_symbols, key=str)
+    for e in residual:
+        e = expand(e)
+        if e == 0:
+            continue
+        coefficients = Poly(e, *rates).coeffs() if rates else [e]
+        if any(is_zero(expand(k)) is not True for k in coefficients):
             raise ValueError(
                 "rates: the loop closure does not extend to second order along these rates "
-                "(no joint accelerations close the loops: a shaky configuration)")
-    return qdd
+                "(no joint accelerations close the loops: a shaky configuration), or that it "
+                "does could not be proved")
 
 
 def _quadratic(terms: list, qd: Matrix) -> Matrix:

@@ -199,6 +199,15 @@ def test_fourbar_inverse_dynamics_matches_the_lagrangian():
     assert not agrees(list(heavier), truth)
 
 
+def test_decimal_rates_and_inertias_give_the_exact_answer_rounded():
+    """Floats in the rates, accelerations and inertias (the joints stay exact): the answer is
+    the exact one to float precision (the closure check takes the floats' exact values)."""
+    exact = fourbar().inverse_dynamics([0], [Rational(3, 2)], [Rational(-1, 4)], [0, -10, 0])
+    floats = fourbar({"coupler": 2.0}).inverse_dynamics([0], [1.5], [-0.25], [0, -10.0, 0])
+    assert abs(float(floats[0]) - float(exact[0])) < 1e-12 * abs(float(exact[0]))
+    assert abs(float(floats[0]) - float(exact[0]) * (1 + 1e-9)) > 1e-12 * abs(float(exact[0]))
+
+
 def test_fourbar_mass_matrix_and_joint_rates():
     """H = dT/dqd^2 of the Lagrangian (rates only), and the joint rates by instant centres."""
     mech = fourbar()
@@ -493,6 +502,11 @@ def test_a_shaky_configuration_has_no_accelerations():
     assert mech.joint_rates([0], [1]) != ImmutableMatrix.zeros(4, 1)
     with pytest.raises(ValueError, match="second order"):
         mech.joint_accelerations([0], [1], [0])
+    w = symbols("w", real=True)
+    with pytest.raises(ValueError, match="second order"):
+        mech.joint_accelerations([0], [w], [0])
+    with pytest.raises(ValueError, match="second order"):
+        mech.joint_accelerations([0], [0.5], [0])
     ben = bennett()
     qdd = ben.joint_accelerations([0], [1], [2])
     qd = ben.joint_rates([0], [1])
