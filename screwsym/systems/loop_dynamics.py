@@ -151,6 +151,7 @@ class _Actuation:
     det: Any  # det A_p[R] (a non-zero number, or an expression in the symbols)
     condition: Any  # where G holds: True, or Ne(det, 0)
     terms: list  # the loops' second-order terms (loop_terms)
+    inverse: ImmutableMatrix  # A_p[R]^-1, (F - k) x (F - k)
 
 
 def _check_actuated(mech: Mechanism, actuated: Any) -> tuple:
@@ -222,17 +223,19 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     for c, a in enumerate(actuated):
         G[a, c] = 1
     det: Any = S.One
+    inverse = zeros(0, 0)
     if passive:
         B = Ap.extract(list(rows), list(range(len(passive))))
         Aa = A.extract(list(rows), list(actuated))
-        X = _solve(B, -Aa)
+        inverse = _solve(B, Matrix.eye(len(passive))).applyfunc(_tidy)
+        X = inverse * -Aa
         for r, p in enumerate(passive):
             for c in range(k):
                 G[p, c] = X[r, c]
         det = _determinant(B)
     condition = Ne(det, 0) if getattr(det, "free_symbols", None) else true
     return _Actuation(actuated, passive, rows, ImmutableMatrix(G.applyfunc(_tidy)), det,
-                      condition, loop_terms(net))
+                      condition, loop_terms(net), ImmutableMatrix(inverse))
 
 
 def _tidy(e: Any) -> Any:
@@ -262,8 +265,7 @@ def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) ->
     c = _quadratic(act.terms, qd)
     qdd = Matrix(act.G * qa2)
     if act.passive:
-        B = A.extract(list(act.rows), list(act.passive))
-        b = _solve(B, -c.extract(list(act.rows), [0]))
+        b = act.inverse * -c.extract(list(act.rows), [0])
         for r, p in enumerate(act.passive):
             qdd[p] += b[r]
     qdd = qdd.applyfunc(_tidy)
@@ -280,8 +282,7 @@ def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
     c = _quadratic(act.terms, qx)
     b = zeros(A.cols, 1)
     if act.passive:
-        B = A.extract(list(act.rows), list(act.passive))
-        x = _solve(B, -c.extract(list(act.rows), [0]))
+        x = act.inverse * -c.extract(list(act.rows), [0])
         for r, p in enumerate(act.passive):
             b[p] = x[r]
     residual = A * b + c
