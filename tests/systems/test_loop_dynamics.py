@@ -199,6 +199,45 @@ def test_fourbar_inverse_dynamics_matches_the_lagrangian():
     assert not agrees(list(heavier), truth)
 
 
+def test_fourbar_against_pinocchios_constrained_dynamics():
+    """pinocchio's ``constraintDynamics`` (Carpentier et al., RSS 2021, the proximal
+    constrained dynamics) on the same four-bar: an open chain of three revolutes whose rocker
+    point D is held at D by a 3D point constraint.  Driven by our crank torque, at our joint
+    rates, it gives our joint accelerations (float precision); a torque off by 1e-6 does not."""
+    pin = pytest.importorskip("pinocchio")
+    mech = fourbar()
+    model = pin.Model()
+    pts = [np.array([float(p[0]), float(p[1]), 0.0]) for p in (O, A0, B0, D)]
+    parent, prev = 0, np.zeros(3)
+    for k, (name, m, c, I) in enumerate(FOURBAR_BODIES):
+        jid = model.addJoint(parent, pin.JointModelRZ(), pin.SE3(np.eye(3), pts[k] - prev), name)
+        com = np.array([float(c[0]), float(c[1]), 0.0]) - pts[k]
+        model.appendBodyToJoint(jid, pin.Inertia(float(m), com, np.array(I.tolist(), dtype=float)),
+                                pin.SE3.Identity())
+        parent, prev = jid, pts[k]
+    model.gravity.linear = np.array([0, -9.81, 0])
+    data = model.createData()
+    cm = pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, 3,
+                                  pin.SE3(np.eye(3), pts[3] - pts[2]), 0,
+                                  pin.SE3(np.eye(3), pts[3]), pin.ReferenceFrame.LOCAL)
+    cms, cds = pin.StdVec_RigidConstraintModel(), pin.StdVec_RigidConstraintData()
+    cms.append(cm)
+    cds.append(cm.createData())
+    pin.initConstraintDynamics(model, data, cms, cds)
+    qd, qdd = Rational(3, 2), Rational(-2, 3)
+    v = np.array([float(x) for x in mech.joint_rates([0], [qd])[:3]])
+    tau = float(mech.inverse_dynamics([0], [qd], [qdd], [0, Rational(-981, 100), 0])[0])
+    ours = np.array([float(x) for x in mech.joint_accelerations([0], [qd], [qdd])[:3]])
+    prox = pin.ProximalSettings(1e-12, 1e-10, 100)
+
+    def pinocchio(t):
+        return pin.constraintDynamics(model, data, np.zeros(3), v, np.array([t, 0, 0]), cms, cds,
+                                      prox)
+
+    assert np.max(np.abs(pinocchio(tau) - ours)) < 1e-12
+    assert np.max(np.abs(pinocchio(tau + 1e-6) - ours)) > 1e-12
+
+
 def test_decimal_rates_and_inertias_give_the_exact_answer_rounded():
     """Floats in the rates, accelerations and inertias (the joints stay exact): the answer is
     the exact one to float precision (the closure check takes the floats' exact values)."""
