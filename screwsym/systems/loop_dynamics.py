@@ -416,8 +416,24 @@ class LoopDynamicsMixin:
 
         ``True`` with numbers (an actuation singularity is a ``ValueError``); with
         symbols ``Ne(det, 0)``, ``det`` the minor of the passive joints' columns of
-        the network matrix the results of :meth:`joint_rates <screwsym.systems.linkage.Mechanism.joint_rates>`, :meth:`mass_matrix` and
-        :meth:`inverse_dynamics` are solved on (see :mod:`~screwsym.systems.loop_dynamics`).
+        the network matrix the results of :meth:`joint_rates`,
+        :meth:`mass_matrix` and :meth:`inverse_dynamics` are solved on (see :mod:`~screwsym.systems.loop_dynamics`).
+
+        The four-bar whose coupler-rocker joint is at ``(x, y)``: the crank drives it
+        except where that joint lies on the line from the crank pin ``(1, 2)`` to the
+        rocker pivot ``(4, 0)`` (coupler and rocker in line: Gosselin & Angeles' second kind).
+
+        >>> from sympy import symbols
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> x, y = symbols("x y", real=True)
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([x, y, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.actuation_condition([0])
+        Ne(-2*x - 3*y + 8, 0)
         """
         return actuation_condition(cast("Mechanism", self), actuated)
 
@@ -441,16 +457,59 @@ class LoopDynamicsMixin:
     def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any) -> ImmutableMatrix:
         """All joint accelerations from the actuated joints' ``rates`` and ``accelerations``:
         the differentiated closure ``A qddot + quadratic_terms(qdot) = 0`` solved for the
-        passive ones (see :mod:`~screwsym.systems.loop_dynamics`)."""
+        passive ones (see :mod:`~screwsym.systems.loop_dynamics`).  A configuration whose
+        closure does not extend to second order along the rates is a ``ValueError``.
+
+        A crank turning steadily at 5 still accelerates the other joints:
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.joint_accelerations([0], [5], [0]).T
+        Matrix([[0, 4500/343, 3300/343, -7800/343]])
+        """
         return joint_accelerations(cast("Mechanism", self), actuated, rates, accelerations)
 
     def link_twist(self, link: Any, actuated: Any, rates: Any) -> Twist:
-        """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``."""
+        """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``.
+
+        The coupler turns about its instant centre ``(12/5, 24/5)``:
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.link_twist("coupler", [0], [7])
+        Twist([0, 0, -5], [-24, 12, 0])
+        """
         return link_twist(cast("Mechanism", self), link, actuated, rates)
 
     def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any) -> Twist:
         """The twist rate ``dV/dt`` of ``link`` (its spatial acceleration, space frame, ray
-        order) for the actuated joints' ``rates`` and ``accelerations``."""
+        order) for the actuated joints' ``rates`` and ``accelerations``.
+
+        The rate of change of the twist ``(omega; v_O)``, not a point's acceleration: a
+        crank turning steadily about a fixed axis has a constant twist.
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.link_acceleration("crank", [0], [1], [0])
+        Twist([0, 0, 0], [0, 0, 0])
+        >>> fourbar.link_acceleration("coupler", [0], [7], [0])
+        Twist([0, 0, 180/7], [-228/7, -1356/7, 0])
+        """
         return link_acceleration(cast("Mechanism", self), link, actuated, rates, accelerations)
 
     def mass_matrix(self, actuated: Any, *, conds: str = "none") -> ImmutableMatrix:
@@ -461,7 +520,8 @@ class LoopDynamicsMixin:
 
         ``H = sum_l A_l^T Delta M_l A_l``, ``A_l`` link ``l``'s twist per actuated
         rate and ``M_l`` its inertia (``inertias=``): the kinetic energy of the
-        mechanism is ``1/2 qa^T H qa``.  Exact; generic with symbols, holding where
+        mechanism is ``1/2 qa^T H qa``.  A joint's rate is the coefficient of its twist
+        as given (a unit axis: radians or lengths per unit time).  Exact; generic with symbols, holding where
         :meth:`actuation_condition` does (``conds="piecewise"``: each entry a
         ``Piecewise`` with that condition, ``nan`` elsewhere).  An actuation
         singularity (the passive joints move with the actuated ones locked) is a
