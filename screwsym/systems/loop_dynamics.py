@@ -76,6 +76,7 @@ from functools import lru_cache
 from typing import TYPE_CHECKING, Any, cast
 
 from sympy import (
+    And,
     Float,
     ImmutableMatrix,
     Matrix,
@@ -92,6 +93,8 @@ from sympy import (
 )
 from sympy.polys.matrices import DomainMatrix
 
+from ..algebra.linalg import field_matrix, field_rank
+from ..algebra.rings import vanishes
 from ..core.checks import check_choice, check_scalar, check_sequence, check_vector
 from ..core.conditions import CONDS, piecewise
 from ..core.decide import is_zero
@@ -100,7 +103,7 @@ from ..core.inertia import SpatialInertia
 from ..core.tidy import tidy
 from ..core.twist import Twist
 from .second_order import chain_terms, loop_terms
-from .topology import check_link, link_label, network, path_matrix, spanning_tree
+from .topology import bare_network, check_link, link_label, path_matrix, spanning_tree
 
 if TYPE_CHECKING:
     from .linkage import Mechanism
@@ -152,6 +155,7 @@ class _Actuation:
     condition: Any  # where G holds: True, or Ne(det, 0)
     terms: list  # the loops' second-order terms (loop_terms)
     inverse: ImmutableMatrix  # A_p[R]^-1, (F - k) x (F - k)
+    net: Any  # the network (its matrix, tree paths and twists)
 
 
 def _check_actuated(mech: Mechanism, actuated: Any) -> tuple:
@@ -187,23 +191,37 @@ def _solve(B: Matrix, C: Matrix) -> Matrix:
     return num.to_Matrix().applyfunc(lambda e: e / d)
 
 
-def _determinant(B: Matrix) -> Any:
+#: the most terms of a determinant factored for the condition (SymPy's multivariate
+#: factorisation has no bound; past this the condition is the determinant itself)
+FACTOR_TERMS = 300
+
+
+def _determinant(B: Matrix) -> tuple[Any, Any]:
+    """``det B`` and the condition ``det B != 0``: ``True`` for a number, else one ``Ne`` per
+    distinct irreducible factor of the determinant in the polynomial ring of its entries
+    (``sin(q)``, ``cos(q)`` as independent symbols: a factorisation there holds on the
+    circle too), or ``Ne(det, 0)`` where the ring is not a polynomial ring or the
+    determinant has more than :data:`FACTOR_TERMS` terms."""
     dm = DomainMatrix.from_Matrix(B)
-    return dm.domain.to_sympy(dm.det())
+    K = dm.domain
+    d = dm.det()
+    det = K.to_sympy(d)
+    if not getattr(det, "free_symbols", None):
+        return det, true
+    if K.is_PolynomialRing and len(d.terms()) <= FACTOR_TERMS:
+        factors = [f for f, _ in d.factor_list()[1] if not f.is_ground]
+        return det, And(*(Ne(f.as_expr(), 0) for f in factors))
+    return det, Ne(det, 0)
 
 
 @lru_cache(maxsize=64)
 def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
-    from ..algebra.linalg import field_matrix
-
-    net = network(mech)
+    # the network matrix without its null space (a generic null space of a symbolic
+    # mechanism is dear, and only the rank on the passive columns is needed here)
+    net = bare_network(mech)
     A = net.A
     F = A.cols
     k = len(actuated)
-    M = F - net.rank
-    if k != M:
-        raise ValueError(f"actuated: expected as many actuated joints as the mobility, {M}, "
-                         f"got {k}")
     passive = tuple(i for i in range(F) if i not in actuated)
     Ap = A.extract(list(range(A.rows)), list(passive))
     if passive:
@@ -212,6 +230,7 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     else:
         rows = ()
     if len(rows) < len(passive):
+        _check_count(A, k)
         with_symbols = " at every value of the symbols" if A.free_symbols else ""
         raise ValueError(
             "actuated: an actuation singularity: the passive joints' columns of the network "
@@ -224,6 +243,7 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
         G[a, c] = 1
     det: Any = S.One
     inverse = zeros(0, 0)
+    condition: Any = true
     if passive:
         B = Ap.extract(list(rows), list(range(len(passive))))
         Aa = A.extract(list(rows), list(actuated))
@@ -232,10 +252,23 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
         for r, p in enumerate(passive):
             for c in range(k):
                 G[p, c] = X[r, c]
-        det = _determinant(B)
-    condition = Ne(det, 0) if getattr(det, "free_symbols", None) else true
-    return _Actuation(actuated, passive, rows, ImmutableMatrix(G.applyfunc(_tidy)), det,
-                      condition, loop_terms(net), ImmutableMatrix(inverse))
+        det, condition = _determinant(B)
+    G = G.applyfunc(_tidy)
+    # the other rows hold too unless the actuated rates are constrained (k > the mobility)
+    others = [r for r in range(A.rows) if r not in rows]
+    if others and not all(e == 0 or vanishes(e) for e in A.extract(others, list(range(F))) * G):
+        _check_count(A, k)
+        raise ValueError("actuated: the actuated joints' rates are not independent here")  # pragma: no cover
+    return _Actuation(actuated, passive, rows, ImmutableMatrix(G), det,
+                      condition, loop_terms(net), ImmutableMatrix(inverse), net)
+
+
+def _check_count(A: Matrix, k: int) -> None:
+    """A ``ValueError`` unless ``k`` is the mobility (the generic one with symbols)."""
+    M = A.cols - field_rank(A)
+    if k != M:
+        raise ValueError(f"actuated: expected as many actuated joints as the mobility, {M}, "
+                         f"got {k}")
 
 
 def _tidy(e: Any) -> Any:
@@ -260,8 +293,7 @@ def joint_rates(mech: Mechanism, actuated: Any, rates: Any) -> ImmutableMatrix:
 
 def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) -> Matrix:
     """All joint accelerations for the joint rates ``qd`` and actuated accelerations ``qa2``."""
-    net = network(mech)
-    A = net.A
+    A = act.net.A
     c = _quadratic(act.terms, qd)
     qdd = Matrix(act.G * qa2)
     if act.passive:
@@ -334,11 +366,11 @@ def _twist(V: Matrix) -> Twist:
 def link_twist(mech: Mechanism, link: Any, actuated: Any, rates: Any) -> Twist:
     act = _actuation(mech, _check_actuated(mech, actuated))
     qa = _rates(rates, "rates", len(act.actuated))
-    return _twist(path_matrix(network(mech), _link(mech, link)) * act.G * qa)
+    return _twist(path_matrix(act.net, _link(mech, link)) * act.G * qa)
 
 
-def _link_rate(mech: Mechanism, n: int, qd: Matrix, qdd: Matrix) -> Matrix:
-    net = network(mech)
+def _link_rate(act: _Actuation, n: int, qd: Matrix, qdd: Matrix) -> Matrix:
+    net = act.net
     return path_matrix(net, n) * qdd + _quadratic([chain_terms(net, net.graph.paths[n])], qd)
 
 
@@ -349,7 +381,7 @@ def link_acceleration(mech: Mechanism, link: Any, actuated: Any, rates: Any,
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
     qd = Matrix(act.G * qa)
     n = _link(mech, link)
-    return _twist(_link_rate(mech, n, qd, _accelerations(mech, act, qd, qa2)))
+    return _twist(_link_rate(act, n, qd, _accelerations(mech, act, qd, qa2)))
 
 
 def _bodies(mech: Mechanism) -> list[tuple[int, SpatialInertia]]:
@@ -359,7 +391,7 @@ def _bodies(mech: Mechanism) -> list[tuple[int, SpatialInertia]]:
 
 def _power_rows(mech: Mechanism, act: _Actuation) -> list[tuple[Matrix, Matrix, SpatialInertia]]:
     """Per body: ``P_l``, ``A_l^T Delta`` (k x 6) and its inertia."""
-    net = network(mech)
+    net = act.net
     out = []
     for n, I in _bodies(mech):
         P = path_matrix(net, n)
@@ -398,7 +430,7 @@ def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: 
     tau = zeros(k, 1)
     for (P, swapped, I), (n, _) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
         V = P * qd
-        Vdot = _link_rate(mech, n, qd, qdd)
+        Vdot = _link_rate(act, n, qd, qdd)
         momentum = Matrix(I.matrix) * V
         weight = I.gravity_wrench(g).matrix
         tau += swapped * (Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight)
@@ -433,7 +465,7 @@ class LoopDynamicsMixin:
         ...                      ("coupler", "rocker", R([x, y, 0], z)),
         ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
         >>> fourbar.actuation_condition([0])
-        Ne(-2*x - 3*y + 8, 0)
+        Ne(2*x + 3*y - 8, 0)
         """
         return actuation_condition(cast("Mechanism", self), actuated)
 

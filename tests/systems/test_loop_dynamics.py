@@ -22,6 +22,7 @@ from mpmath import mp, mpf
 from sympy import (
     ImmutableMatrix,
     Matrix,
+    Ne,
     Piecewise,
     Rational,
     cos,
@@ -481,6 +482,47 @@ def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
     assert mech(m_arm + Rational(1, 100)).inverse_dynamics([0, 7, 14], qd, qdd, list(g)) != truth
     H = mech().mass_matrix([0, 7, 14])
     assert is_symmetric_positive_definite(H)
+
+
+@pytest.mark.slow
+def test_delta_at_a_symbolic_height_holds_off_the_flat_pose():
+    """The Delta with its platform at height ``z`` (arms fixed; the rods' length follows):
+    the crank-driven dynamics hold where ``z != -1``, the pose where the six rods lie flat
+    and radial so that the platform moves up and down with the arms locked (the second kind
+    of singularity of Gosselin & Angeles 1990); at ``z = -3`` the mass matrix is the numeric
+    Delta's (10 s)."""
+    z = symbols("z", real=True)
+    top = [0, 0, z]
+
+    def leg(i, e):
+        e = list(e)
+        u = [-e[1], e[0], 0]
+        b = [2 * x for x in e]
+        elbow = [3 * e[0], 3 * e[1], -1]
+        attach = [e[0], e[1], z]
+        n = list(Matrix(u).cross(Matrix(attach) - Matrix(elbow)))
+        half = [Rational(1, 2) * x for x in u]
+        plus = [[p + h for p, h in zip(q, half, strict=True)] for q in (elbow, attach)]
+        minus = [[p - h for p, h in zip(q, half, strict=True)] for q in (elbow, attach)]
+        arm, upper, r1, r2, lower = (f"{k}{i}" for k in ("arm", "upper", "rodA", "rodB", "lower"))
+        return [("base", arm, R(b, u)), (arm, upper, R(elbow, u)), (upper, r1, R(plus[0], n)),
+                (r1, lower, R(plus[1], n)), (upper, r2, R(minus[0], n)), (r2, lower, R(minus[1], n)),
+                (lower, "platform", R(attach, u))]
+
+    joints = [t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)]
+    # at z = -3 the joints are those of the Delta of tests/_linkages.py
+    assert [(a, b, j.subs(z, -3)) for a, b, j in joints] == [
+        t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)]
+    inertias = {f"arm{i + 1}": SpatialInertia(2, [Rational(5, 2) * e[0], Rational(5, 2) * e[1],
+                                                  Rational(-1, 2)], diag(1, 1, 1))
+                for i, e in enumerate(DELTA_RADIAL)}
+    inertias["platform"] = SpatialInertia(3, top, diag(1, 1, 2))
+    mech = Mechanism(joints, base="base", inertias=inertias)
+    assert mech.actuation_condition([0, 7, 14]) == (Ne(z + 1, 0) & Ne(z**2 + 2 * z + 5, 0))
+    H = mech.mass_matrix([0, 7, 14])
+    here = Mechanism([(a, b, j.subs(z, -3)) for a, b, j in joints], base="base",
+                     inertias={k: v.subs(z, -3) for k, v in inertias.items()})
+    assert H.subs(z, -3) == here.mass_matrix([0, 7, 14])
 
 
 # ------------------------------------------------------------------ singular and bad input
