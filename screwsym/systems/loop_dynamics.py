@@ -88,6 +88,7 @@ from sympy import (
     Tuple,
     expand,
     nan,
+    radsimp,
     true,
     zeros,
 )
@@ -272,7 +273,10 @@ def _check_count(A: Matrix, k: int) -> None:
 
 
 def _tidy(e: Any) -> Any:
-    return tidy(e) if e.free_symbols else expand(e)
+    if e.is_Rational:
+        return e
+    # a number with roots: denominators rationalised, so that a zero shows as 0
+    return tidy(e) if e.free_symbols else radsimp(expand(e))
 
 
 def _rates(value: Any, name: str, k: int) -> Matrix:
@@ -324,7 +328,7 @@ def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
         if e == 0:
             continue
         coefficients = Poly(e, *rates).coeffs() if rates else [e]
-        if any(is_zero(expand(k)) is not True for k in coefficients):
+        if any(is_zero(radsimp(expand(k))) is not True for k in coefficients):
             raise ValueError(
                 "rates: the loop closure does not extend to second order along these rates "
                 "(no joint accelerations close the loops: a shaky configuration), or that it "

@@ -239,6 +239,36 @@ def test_fourbar_against_pinocchios_constrained_dynamics():
     assert np.max(np.abs(pinocchio(tau + 1e-6) - ours)) > 1e-12
 
 
+def test_roots_in_the_geometry_and_the_default_gravity():
+    """Joints at (1, sqrt 3) and (3, sqrt 2): the exact mass matrix and static torque against
+    the velocity polygon and virtual work in floating point; the default gravity is
+    ``(0, 0, -g)`` as for serial chains (here along z: no torque on a planar loop)."""
+    from sympy import sqrt
+
+    from screwsym.motion.dynamics import GRAVITY
+    from screwsym.systems.loop_dynamics import GRAVITY as LOOP_GRAVITY
+
+    a, b = [1, sqrt(3), 0], [3, sqrt(2), 0]
+    mech = Mechanism([("g", "c", R([0, 0, 0], Z)), ("c", "k", R(a, Z)), ("k", "r", R(b, Z)),
+                      ("r", "g", R([4, 0, 0], Z))], base="g",
+                     inertias={"c": SpatialInertia.point_mass(1, a),
+                               "r": SpatialInertia.point_mass(2, b)})
+    H = mech.mass_matrix([0])
+    tau = mech.inverse_dynamics([0], [0], [0], [0, -10, 0])
+    A, B, D = (np.array([float(x) for x in p[:2]]) for p in (a, b, [4, 0]))
+
+    def perp(v):
+        return np.array([-v[1], v[0]])
+
+    w2, w3 = np.linalg.solve(np.column_stack([perp(B - A), -perp(B - D)]), -perp(A))
+    vA, vB = perp(A), w3 * perp(B - D)  # per unit crank rate
+    assert abs(float(H[0]) - (vA @ vA + 2 * vB @ vB)) < 1e-12
+    assert abs(float(tau[0]) - (10 * vA[1] + 2 * 10 * vB[1])) < 1e-12
+    assert abs(float(tau[0]) + 1e-9 - (10 * vA[1] + 2 * 10 * vB[1])) > 1e-12
+    assert LOOP_GRAVITY == GRAVITY
+    assert mech.inverse_dynamics([0], [0], [0]) == Matrix([[0]])
+
+
 def test_decimal_rates_and_inertias_give_the_exact_answer_rounded():
     """Floats in the rates, accelerations and inertias (the joints stay exact): the answer is
     the exact one to float precision (the closure check takes the floats' exact values)."""
