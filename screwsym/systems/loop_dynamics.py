@@ -71,11 +71,14 @@ Lynch & Park, *Modern Robotics*, Cambridge 2017, Section 8.2.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any, cast
 
 from sympy import (
+    Add,
     And,
     Float,
     ImmutableMatrix,
@@ -94,9 +97,10 @@ from sympy import (
 )
 from sympy.polys.matrices import DomainMatrix
 
+from ..algebra.budget import BUDGET, OverBudget, budget_name, case_budget, charge
 from ..algebra.linalg import field_matrix, field_rank
 from ..algebra.rings import vanishes
-from ..core.checks import check_choice, check_scalar, check_sequence, check_vector
+from ..core.checks import check_choice, check_count, check_scalar, check_sequence, check_vector
 from ..core.conditions import CONDS, piecewise
 from ..core.decide import is_zero
 from ..core.formulas import bracket
@@ -114,6 +118,35 @@ __all__: list[str] = []  # its names serve Mechanism's methods; users reach them
 #: the default gravitational acceleration, ``(0, 0, -g)``: the same as
 #: :data:`screwsym.motion.dynamics.GRAVITY` (systems does not import motion)
 GRAVITY = (S.Zero, S.Zero, -Symbol("g", positive=True))
+
+
+#: the units charged per symbolic entry tidied or product formed (about a millisecond)
+STEP_UNITS = 1000
+
+
+@contextmanager
+def _bounded(budget: Any, name: str) -> Iterator[None]:
+    """The exact arithmetic of ``name`` within ``budget`` units (about a microsecond each,
+    and the CPU time ``SLACK`` times that: :mod:`screwsym.algebra.budget`); past it a
+    ``ValueError`` naming ``name``.  Inside another budget the outer one holds."""
+    budget = check_count(budget, "budget")
+    if budget_name(""):
+        yield
+        return
+    with case_budget(budget, name):
+        try:
+            yield
+        except OverBudget:
+            raise ValueError(
+                f"{name}: the exact arithmetic needs more than budget={budget} units (or its "
+                "CPU time); give some symbols values (subs) or pass a larger budget") from None
+
+
+def _charge_matrix(M: Matrix, power: int) -> None:
+    """Charge ``n**power`` times the largest entry's terms for work on the matrix ``M``."""
+    n = max(M.rows, M.cols, 1)
+    terms = max((len(Add.make_args(e)) for e in M), default=1)
+    charge(n**power * terms)
 
 
 def check_inertias(inertias: Any, links: dict, base: Any) -> Tuple:
@@ -210,6 +243,7 @@ def _determinant(B: Matrix) -> tuple[Any, Any]:
     if not getattr(det, "free_symbols", None):
         return det, true
     if K.is_PolynomialRing and len(d.terms()) <= FACTOR_TERMS:
+        charge(len(d.terms()) ** 2)
         factors = [f for f, _ in d.factor_list()[1] if not f.is_ground]
         return det, And(*(Ne(f.as_expr(), 0) for f in factors))
     return det, Ne(det, 0)
@@ -227,6 +261,7 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     Ap = A.extract(list(range(A.rows)), list(passive))
     if passive:
         # the independent rows of A_p: exact (generic with symbols, on the circle for angles)
+        _charge_matrix(Ap, 3)
         _, rows = field_matrix(Ap.T).rref()
     else:
         rows = ()
@@ -248,6 +283,7 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     if passive:
         B = Ap.extract(list(rows), list(range(len(passive))))
         Aa = A.extract(list(rows), list(actuated))
+        _charge_matrix(B, 3)
         inverse = _solve(B, Matrix.eye(len(passive))).applyfunc(_tidy)
         X = inverse * -Aa
         for r, p in enumerate(passive):
@@ -275,6 +311,7 @@ def _check_count(A: Matrix, k: int) -> None:
 def _tidy(e: Any) -> Any:
     if e.is_Rational:
         return e
+    charge(STEP_UNITS if e.free_symbols else 1)
     # a number with roots: denominators rationalised, so that a zero shows as 0
     return tidy(e) if e.free_symbols else radsimp(expand(e))
 
@@ -418,6 +455,7 @@ def mass_matrix(mech: Mechanism, actuated: Any, conds: str = "none") -> Immutabl
     k = len(act.actuated)
     H = zeros(k, k)
     for P, swapped, I in _power_rows(mech, act):
+        charge(STEP_UNITS * k * k)
         H += swapped * Matrix(I.matrix) * (P * act.G)
     return _conds(ImmutableMatrix(H.applyfunc(_tidy)), act, conds)
 
@@ -433,6 +471,7 @@ def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: 
     qdd = _accelerations(mech, act, qd, qa2)
     tau = zeros(k, 1)
     for (P, swapped, I), (n, _) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
+        charge(STEP_UNITS * k)
         V = P * qd
         Vdot = _link_rate(act, n, qd, qdd)
         momentum = Matrix(I.matrix) * V
@@ -447,7 +486,7 @@ class LoopDynamicsMixin:
 
     __slots__ = ()
 
-    def actuation_condition(self, actuated: Any) -> Any:
+    def actuation_condition(self, actuated: Any, *, budget: int = BUDGET) -> Any:
         """Where the joints ``actuated`` (numbers into :attr:`joints`) determine the motion.
 
         ``True`` with numbers (an actuation singularity is a ``ValueError``); with
@@ -471,9 +510,10 @@ class LoopDynamicsMixin:
         >>> fourbar.actuation_condition([0])
         Ne(2*x + 3*y - 8, 0)
         """
-        return actuation_condition(cast("Mechanism", self), actuated)
+        with _bounded(budget, "actuation_condition"):
+            return actuation_condition(cast("Mechanism", self), actuated)
 
-    def joint_rates(self, actuated: Any, rates: Any) -> ImmutableMatrix:
+    def joint_rates(self, actuated: Any, rates: Any, *, budget: int = BUDGET) -> ImmutableMatrix:
         """All joint rates (F, the joints' freedoms in order) from the ``rates`` of the joints
         ``actuated``: Davies' null space restricted to the actuated rates (see
         :mod:`~screwsym.systems.loop_dynamics`).
@@ -488,9 +528,11 @@ class LoopDynamicsMixin:
         >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
         Matrix([[5, -60/7, 40/7, -15/7]])
         """
-        return joint_rates(cast("Mechanism", self), actuated, rates)
+        with _bounded(budget, "joint_rates"):
+            return joint_rates(cast("Mechanism", self), actuated, rates)
 
-    def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any) -> ImmutableMatrix:
+    def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any, *,
+                            budget: int = BUDGET) -> ImmutableMatrix:
         """All joint accelerations from the actuated joints' ``rates`` and ``accelerations``:
         the differentiated closure ``A qddot + quadratic_terms(qdot) = 0`` solved for the
         passive ones (see :mod:`~screwsym.systems.loop_dynamics`).  A configuration whose
@@ -508,9 +550,10 @@ class LoopDynamicsMixin:
         >>> fourbar.joint_accelerations([0], [5], [0]).T
         Matrix([[0, 4500/343, 3300/343, -7800/343]])
         """
-        return joint_accelerations(cast("Mechanism", self), actuated, rates, accelerations)
+        with _bounded(budget, "joint_accelerations"):
+            return joint_accelerations(cast("Mechanism", self), actuated, rates, accelerations)
 
-    def link_twist(self, link: Any, actuated: Any, rates: Any) -> Twist:
+    def link_twist(self, link: Any, actuated: Any, rates: Any, *, budget: int = BUDGET) -> Twist:
         """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``.
 
         The coupler turns about its instant centre ``(12/5, 24/5)``:
@@ -525,9 +568,11 @@ class LoopDynamicsMixin:
         >>> fourbar.link_twist("coupler", [0], [7])
         Twist([0, 0, -5], [-24, 12, 0])
         """
-        return link_twist(cast("Mechanism", self), link, actuated, rates)
+        with _bounded(budget, "link_twist"):
+            return link_twist(cast("Mechanism", self), link, actuated, rates)
 
-    def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any) -> Twist:
+    def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any, *,
+                          budget: int = BUDGET) -> Twist:
         """The twist rate ``dV/dt`` of ``link`` (its spatial acceleration, space frame, ray
         order) for the actuated joints' ``rates`` and ``accelerations``.
 
@@ -546,9 +591,11 @@ class LoopDynamicsMixin:
         >>> fourbar.link_acceleration("coupler", [0], [7], [0])
         Twist([0, 0, 180/7], [-228/7, -1356/7, 0])
         """
-        return link_acceleration(cast("Mechanism", self), link, actuated, rates, accelerations)
+        with _bounded(budget, "link_acceleration"):
+            return link_acceleration(cast("Mechanism", self), link, actuated, rates, accelerations)
 
-    def mass_matrix(self, actuated: Any, *, conds: str = "none") -> ImmutableMatrix:
+    def mass_matrix(self, actuated: Any, *, conds: str = "none",
+                    budget: int = BUDGET) -> ImmutableMatrix:
         r"""The k x k mass matrix in the rates of the joints ``actuated`` (k, the mobility).
 
         Explanation
@@ -561,7 +608,9 @@ class LoopDynamicsMixin:
         :meth:`actuation_condition` does (``conds="piecewise"``: each entry a
         ``Piecewise`` with that condition, ``nan`` elsewhere).  An actuation
         singularity (the passive joints move with the actuated ones locked) is a
-        ``ValueError``.  See :mod:`~screwsym.systems.loop_dynamics`.
+        ``ValueError``.  ``budget`` bounds the exact arithmetic (units of about a
+        microsecond, and the CPU time: :mod:`screwsym.algebra.budget`; every method here
+        takes it).  See :mod:`~screwsym.systems.loop_dynamics`.
 
         Examples
         ========
@@ -585,10 +634,12 @@ class LoopDynamicsMixin:
         >>> fourbar.mass_matrix([0])
         Matrix([[425/49]])
         """
-        return mass_matrix(cast("Mechanism", self), actuated, conds)
+        with _bounded(budget, "mass_matrix"):
+            return mass_matrix(cast("Mechanism", self), actuated, conds)
 
     def inverse_dynamics(self, actuated: Any, rates: Any, accelerations: Any,
-                         gravity: Any = None, *, conds: str = "none") -> ImmutableMatrix:
+                         gravity: Any = None, *, conds: str = "none",
+                         budget: int = BUDGET) -> ImmutableMatrix:
         r"""The forces or torques of the joints ``actuated`` for their ``rates`` and
         ``accelerations``, every other joint passive and frictionless.
 
@@ -622,4 +673,5 @@ class LoopDynamicsMixin:
         >>> fourbar.inverse_dynamics([0], [0], [0], [0, -10, 0])
         Matrix([[10/7]])
         """
-        return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)
+        with _bounded(budget, "inverse_dynamics"):
+            return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)

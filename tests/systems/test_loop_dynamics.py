@@ -588,6 +588,14 @@ def test_symbolic_configuration_gives_the_generic_result_and_its_condition():
     assert isinstance(pw[0], Piecewise) and pw[0].subs({x: Rational(5, 2), y: 1}) is nan
     tau = mech.inverse_dynamics([0], [0], [0], [0, -10, 0])
     assert tau.subs({x: 3, y: 3}) == Matrix([[Rational(10, 7)]])
+    # every call is bounded: a budget too small is a clear error naming the method
+    fresh = Mechanism([(a, b, j) for a, b, j in mech.joints], base="ground",
+                      inertias={"crank": SpatialInertia.point_mass(3, [1, 2, 0])})
+    with pytest.raises(ValueError, match="mass_matrix: the exact arithmetic needs more than "
+                                         "budget=10 units"):
+        fresh.mass_matrix([0], budget=10)
+    with pytest.raises(ValueError, match="budget"):
+        fresh.inverse_dynamics([0], [1], [0], budget=0)
 
 
 def test_a_mechanism_with_inertias_substitutes_and_compares_as_a_value():
