@@ -424,6 +424,38 @@ def test_mass_matrix_symmetric_positive_definite_at_random_states():
     assert not is_symmetric_positive_definite(H + Matrix([[0, 1], [0, 0]]))
 
 
+# ------------------------------------------------------------------ no loop: a serial chain
+def test_a_serial_chain_agrees_with_the_recursive_newton_euler_algorithm():
+    """A spatial R-R-P-H chain as a tree, every joint actuated, at its home configuration:
+    the virtual-power sum along the tree paths equals screwsym's recursive Newton-Euler
+    algorithm (Park, Bobrow & Ploen 1995; itself checked against pinocchio in
+    tests/motion) exactly, brackets of non-parallel axes and a helical pitch included; a
+    perturbed inertia disagrees."""
+    from screwsym import Chain, Twist
+    from screwsym.motion.dynamics import inverse_dynamics
+    from screwsym.systems.joints import Helical, P
+
+    twists = [Twist.rotation([0, 0, 1], point=[0, 0, 0]), Twist.rotation([0, 1, 0], point=[0, 0, 1]),
+              Twist.translation([1, 0, 0]), Twist.screw_motion([1, 0, 0], point=[0, 1, 1], pitch=2)]
+    joints = [R([0, 0, 0], [0, 0, 1]), R([0, 0, 1], [0, 1, 0]), P([1, 0, 0]),
+              Helical([0, 1, 1], [1, 0, 0], 2)]
+    I3 = Matrix([[2, Rational(1, 3), 0], [Rational(1, 3), 3, Rational(1, 5)], [0, Rational(1, 5), 4]])
+    bodies = [SpatialInertia(k + 1, [k, 1 - k, 2], I3) for k in range(4)]
+    qd, qdd, g = [1, -2, Rational(1, 2), 3], [2, 0, -1, Rational(1, 3)], [0, -10, Rational(-1, 2)]
+    truth = inverse_dynamics(Chain(twists, inertias=bodies), [0, 0, 0, 0], qd, qdd, gravity=g)
+    names = ["base", "l1", "l2", "l3", "l4"]
+
+    def tree(inertias):
+        return Mechanism([(names[i], names[i + 1], joints[i]) for i in range(4)], base="base",
+                         inertias={names[i + 1]: inertias[i] for i in range(4)})
+
+    assert tree(bodies).inverse_dynamics([0, 1, 2, 3], qd, qdd, g) == truth
+    heavier = bodies[:2] + [SpatialInertia(3 + Rational(1, 100), [2, -1, 2], I3), bodies[3]]
+    assert tree(heavier).inverse_dynamics([0, 1, 2, 3], qd, qdd, g) != truth
+    with pytest.raises(ValueError, match="mobility, 4, got 3"):
+        tree(bodies).mass_matrix([0, 1, 2])
+
+
 # ------------------------------------------------------------------ a 3-RPR parallel mechanism
 def test_3rpr_platform_dynamics_matches_tsais_virtual_work_model():
     """A planar 3-RPR (legs massless, prismatic joints actuated) built as a
