@@ -587,6 +587,45 @@ def test_delta_at_a_symbolic_height_holds_off_the_flat_pose():
     assert H.subs(z, -3) == here.mass_matrix([0, 7, 14])
 
 
+def test_delta_with_compound_parallelograms_equals_the_delta_link_by_link():
+    """The Delta's forearms as compound :class:`Parallelogram` pairs (their circular
+    translation's second derivative enters the twist rates) against the same Delta link by
+    link, the rods massless, the arms, the forearms' upper and lower bars and the platform
+    with inertia: the same inverse dynamics and mass matrix, exactly."""
+    from _linkages import HALF, add, scale, sub
+
+    from screwsym.systems.joints import Parallelogram
+
+    def leg(i, e):
+        u = [-e[1], e[0], 0]
+        b = scale(2, e)
+        elbow = add(add(b, e), [0, 0, -1])
+        attach = add([0, 0, -3], e)
+        pair = Parallelogram(add(elbow, scale(HALF, u)), sub(elbow, scale(HALF, u)),
+                             add(attach, scale(HALF, u)))
+        return [("base", f"arm{i}", R(b, u)), (f"arm{i}", f"upper{i}", R(elbow, u)),
+                (f"upper{i}", f"lower{i}", pair), (f"lower{i}", "platform", R(attach, u))]
+
+    I_c = diag(Rational(1, 5), Rational(1, 4), Rational(1, 3))
+    inertias = {"platform": SpatialInertia(3, [0, 0, -3], diag(1, 1, 2))}
+    for i, e in enumerate(DELTA_RADIAL):
+        e = Matrix(e)
+        elbow = 3 * e + Matrix([0, 0, -1])
+        inertias[f"arm{i + 1}"] = SpatialInertia(2, list((2 * e + elbow) / 2), I_c)
+        inertias[f"upper{i + 1}"] = SpatialInertia(Rational(1, 2), list(elbow), I_c / 4)
+        inertias[f"lower{i + 1}"] = SpatialInertia(Rational(1, 3), list(e + Matrix([0, 0, -3])),
+                                                   I_c / 5)
+    compound = Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)],
+                         base="base", inertias=inertias)
+    full = Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
+                     base="base", inertias=inertias)
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], [0, 0, -10]
+    tau = full.inverse_dynamics([0, 7, 14], qd, qdd, g)
+    assert compound.inverse_dynamics([0, 4, 8], qd, qdd, g) == tau
+    assert compound.mass_matrix([0, 4, 8]) == full.mass_matrix([0, 7, 14])
+    assert compound.inverse_dynamics([0, 4, 8], qd, [Rational(1, 3), 0, 0], g) != tau
+
+
 # ------------------------------------------------------------------ singular and bad input
 def test_actuation_singularity_is_a_clear_error():
     """Coupler and rocker in line (B on the line AD): the crank cannot drive the four-bar;
