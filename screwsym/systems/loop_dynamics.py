@@ -143,10 +143,17 @@ def _bounded(budget: Any, name: str) -> Iterator[None]:
 
 
 def _charge_matrix(M: Matrix, power: int) -> None:
-    """Charge ``n**power`` times the largest entry's terms for work on the matrix ``M``."""
+    """Charge an elimination on ``M`` before it runs: ``n**power`` times the largest entry's
+    terms, times ``10**s`` for ``s`` symbols (an angle's sine and cosine count once).
+
+    A single SymPy elimination is not interrupted, so its cost is charged in advance: a
+    rough bound on the swell of rational functions in ``s`` symbols, not a calibration.
+    Measured: the Delta link by link with one pose symbol (30 x 18, 1e6 units) takes
+    seconds; with three (3e7 units) it ran past 4 CPU minutes, and is now refused at once
+    by the default budget."""
     n = max(M.rows, M.cols, 1)
     terms = max((len(Add.make_args(e)) for e in M), default=1)
-    charge(n**power * terms)
+    charge(n**power * terms * 10 ** len(M.free_symbols))
 
 
 def check_inertias(inertias: Any, links: dict, base: Any) -> Tuple:

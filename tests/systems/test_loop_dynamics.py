@@ -546,6 +546,27 @@ def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
     assert is_symmetric_positive_definite(H)
 
 
+def delta_at(top):
+    """The Delta link by link (as tests/_linkages.py's) with its platform at ``top``."""
+
+    def leg(i, e):
+        e = list(e)
+        u = [-e[1], e[0], 0]
+        b = [2 * x for x in e]
+        elbow = [3 * e[0], 3 * e[1], -1]
+        attach = [e[0] + top[0], e[1] + top[1], top[2]]
+        n = list(Matrix(u).cross(Matrix(attach) - Matrix(elbow)))
+        half = [Rational(1, 2) * x for x in u]
+        plus = [[p + h for p, h in zip(q, half, strict=True)] for q in (elbow, attach)]
+        minus = [[p - h for p, h in zip(q, half, strict=True)] for q in (elbow, attach)]
+        arm, upper, r1, r2, lower = (f"{k}{i}" for k in ("arm", "upper", "rodA", "rodB", "lower"))
+        return [("base", arm, R(b, u)), (arm, upper, R(elbow, u)), (upper, r1, R(plus[0], n)),
+                (r1, lower, R(plus[1], n)), (upper, r2, R(minus[0], n)), (r2, lower, R(minus[1], n)),
+                (lower, "platform", R(attach, u))]
+
+    return [t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)]
+
+
 @pytest.mark.slow
 def test_delta_at_a_symbolic_height_holds_off_the_flat_pose():
     """The Delta with its platform at height ``z`` (arms fixed; the rods' length follows):
@@ -556,22 +577,7 @@ def test_delta_at_a_symbolic_height_holds_off_the_flat_pose():
     z = symbols("z", real=True)
     top = [0, 0, z]
 
-    def leg(i, e):
-        e = list(e)
-        u = [-e[1], e[0], 0]
-        b = [2 * x for x in e]
-        elbow = [3 * e[0], 3 * e[1], -1]
-        attach = [e[0], e[1], z]
-        n = list(Matrix(u).cross(Matrix(attach) - Matrix(elbow)))
-        half = [Rational(1, 2) * x for x in u]
-        plus = [[p + h for p, h in zip(q, half, strict=True)] for q in (elbow, attach)]
-        minus = [[p - h for p, h in zip(q, half, strict=True)] for q in (elbow, attach)]
-        arm, upper, r1, r2, lower = (f"{k}{i}" for k in ("arm", "upper", "rodA", "rodB", "lower"))
-        return [("base", arm, R(b, u)), (arm, upper, R(elbow, u)), (upper, r1, R(plus[0], n)),
-                (r1, lower, R(plus[1], n)), (upper, r2, R(minus[0], n)), (r2, lower, R(minus[1], n)),
-                (lower, "platform", R(attach, u))]
-
-    joints = [t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)]
+    joints = delta_at(top)
     # at z = -3 the joints are those of the Delta of tests/_linkages.py
     assert [(a, b, j.subs(z, -3)) for a, b, j in joints] == [
         t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)]
@@ -624,6 +630,16 @@ def test_delta_with_compound_parallelograms_equals_the_delta_link_by_link():
     assert compound.inverse_dynamics([0, 4, 8], qd, qdd, g) == tau
     assert compound.mass_matrix([0, 4, 8]) == full.mass_matrix([0, 7, 14])
     assert compound.inverse_dynamics([0, 4, 8], qd, [Rational(1, 3), 0, 0], g) != tau
+
+
+def test_a_delta_at_a_symbolic_pose_is_refused_within_the_budget():
+    """The Delta with its platform at (x, y, z): its elimination is charged in advance and
+    refused by the default budget at once (it ran past 4 CPU minutes unbounded)."""
+    x, y, z = symbols("x y z", real=True)
+    mech = Mechanism(delta_at([x, y, z]), base="base",
+                     inertias={"platform": SpatialInertia(3, [x, y, z], diag(1, 1, 2))})
+    with pytest.raises(ValueError, match="mass_matrix: the exact arithmetic needs more than"):
+        mech.mass_matrix([0, 7, 14])
 
 
 # ------------------------------------------------------------------ singular and bad input
