@@ -80,11 +80,13 @@ from ..algebra.surface import null_on_surface
 from ..core.basic import ScrewsymBasic
 from ..core.checks import check_count, check_flag
 from ..core.formulas import ad_matrix, cross_matrix
+from ..core.inertia import SpatialInertia
 from ..core.twist import Twist
 from ..core.wrench import Wrench
 from ._cases import Leaf, Stage, merge_cases, split_mechanism
 from ._rank_cases import apply_subs, case_budget, swapped
 from .joints import Joint, Parallelogram, Spherical, Universal
+from .loop_dynamics import LoopDynamicsMixin, check_inertias
 from .motion_type import motion_of
 from .parallel import Degenerate, ParallelMechanism
 from .screw_system import ScrewSystem, basis_with
@@ -134,7 +136,7 @@ class MechanismMobility(NamedTuple):
 
 
 
-class Mechanism(ScrewsymBasic):
+class Mechanism(LoopDynamicsMixin, ScrewsymBasic):
     r"""A mechanism of any topology: links joined by joints, one link the base.
 
     Explanation
@@ -205,6 +207,10 @@ class Mechanism(ScrewsymBasic):
     joints : list of (link_a, link_b, joint)
     base : str, int or Symbol
         The link that is fixed.
+    inertias : dict, optional
+        ``{link: SpatialInertia}``: each moving link's inertia in the space frame at
+        the configuration given (a link left out is massless), for
+        :meth:`mass_matrix` and :meth:`inverse_dynamics`.
 
     See Also
     ========
@@ -219,7 +225,7 @@ class Mechanism(ScrewsymBasic):
 
     __slots__ = ()
 
-    def __new__(cls, joints: Any, base: Any = None) -> Self:
+    def __new__(cls, joints: Any, base: Any = None, inertias: Any = None) -> Self:
         if isinstance(joints, (str, bytes)) or not hasattr(joints, "__iter__"):
             raise TypeError(
                 "joints: expected a list of (link_a, link_b, joint) triples, got "
@@ -250,15 +256,22 @@ class Mechanism(ScrewsymBasic):
         if not any(base in t.args[:2] for t in triples):
             raise ValueError(f"base: {link_label(base)!r} is not a link of any joint")
         obj = ScrewsymBasic.__new__(cls, Tuple(*triples), base)
-        spanning_tree(obj)  # refuses a disconnected graph now
+        g = spanning_tree(obj)  # refuses a disconnected graph now
+        if inertias is not None:
+            pairs = check_inertias(inertias, g.index, base)
+            if pairs.args:
+                obj = ScrewsymBasic.__new__(cls, Tuple(*triples), base, pairs)
         return obj
 
     @classmethod
-    def from_parallel(cls, pm: ParallelMechanism) -> Mechanism:
+    def from_parallel(cls, pm: ParallelMechanism, inertias: Any = None) -> Mechanism:
         """The mechanism of a :class:`~screwsym.systems.parallel.ParallelMechanism`, as a graph.
 
         The links are ``"base"``, ``"platform"`` and, for limb ``i`` (from 1),
-        ``"limb<i>.<k>"``, the ``k``-th link from the base.
+        ``"limb<i>.<k>"``, the ``k``-th link from the base; the joints are the limbs'
+        in order (limb 1's first).  ``inertias`` as for :class:`Mechanism`, by those
+        names: the dynamics of the parallel mechanism (:meth:`mass_matrix`,
+        :meth:`inverse_dynamics`) in its actuated joints' rates.
 
         >>> from screwsym.systems.linkage import Mechanism
         >>> from screwsym.systems.parallel import Limb, ParallelMechanism
@@ -272,7 +285,7 @@ class Mechanism(ScrewsymBasic):
         >>> m.relative_twists("platform").rank == pm.mobility().mobility == 1
         True
         """
-        return _from_parallel(pm)
+        return _from_parallel(pm, inertias)
 
     # ------------------------------------------------------------ parts
     @property
@@ -289,6 +302,16 @@ class Mechanism(ScrewsymBasic):
     def joints(self) -> tuple[tuple[Any, Any, Joint], ...]:
         """The triples ``(link_a, link_b, joint)`` as given."""
         return tuple((link_label(a), link_label(b), j) for a, b, j in self.args[0].args)
+
+    @property
+    def inertias(self) -> dict[Any, SpatialInertia]:
+        """``{link: SpatialInertia}`` as given (in the space frame, at this configuration)."""
+        return {link_label(p.args[0]): p.args[1] for p in self.inertia_pairs}
+
+    @property
+    def inertia_pairs(self) -> tuple[Tuple, ...]:
+        """The inertias as ``(link, SpatialInertia)`` pairs of link objects, in link order."""
+        return tuple(self.args[2].args) if len(self.args) > 2 else ()
 
     @property
     def freedom(self) -> int:
@@ -610,7 +633,6 @@ class Mechanism(ScrewsymBasic):
 
 
 
-
 def _put(M: Matrix, subs: dict | None) -> Matrix:
     """``M`` with a case's substitution made (``sin(q)``, ``cos(q)`` reach ``sin(2 q)``)."""
     return Matrix(apply_subs(M, subs)) if subs else M
@@ -838,7 +860,7 @@ def _elements(j: Joint, twists: tuple, side: int) -> list[Matrix]:
 
 
 
-def _from_parallel(pm: ParallelMechanism) -> Mechanism:
+def _from_parallel(pm: ParallelMechanism, inertias: Any = None) -> Mechanism:
     if not isinstance(pm, ParallelMechanism):
         raise TypeError(f"pm: expected a ParallelMechanism, got {type(pm).__name__}")
     triples = []
@@ -846,7 +868,7 @@ def _from_parallel(pm: ParallelMechanism) -> Mechanism:
         chain = ["base"] + [f"limb{i + 1}.{k}" for k in range(1, len(limb.joints))] + ["platform"]
         for k, j in enumerate(limb.joints):
             triples.append((chain[k], chain[k + 1], j))
-    return Mechanism(triples, base="base")
+    return Mechanism(triples, base="base", inertias=inertias)
 
 
 def _reduced(system: ScrewSystem) -> ScrewSystem:

@@ -97,30 +97,39 @@ class SecondOrder(NamedTuple):
     forms: tuple[ImmutableMatrix, ...]  #: the quadratic forms on the rates' coordinates
 
 
+def chain_terms(net: Network, chain: tuple) -> tuple[list, list]:
+    """The second-order terms of a chain of joints ``((joint, +1 or -1), ...)``, in its order.
+
+    The pairs ``(a, b, [X_a, X_b])`` (freedom numbers, ``a`` before ``b`` along the
+    chain, non-zero brackets only) and the squares ``(a, Y_a)``: the twist rate of the
+    chain's end is ``sum X_a qddot_a + sum [X_a, X_b] qdot_a qdot_b + sum Y_a qdot_a**2``
+    (each joint's axes in order ``link_a`` to ``link_b``, reversed and negated where
+    the chain runs the other way).  A loop is a chain whose end is its start.
+    """
+    g = net.graph
+    seq = []  # (freedom number, signed twist)
+    squares = []
+    for e, s in chain:
+        idx = list(range(len(net.twists[e])))
+        if s < 0:
+            idx.reverse()
+        for k in idx:
+            seq.append((g.offsets[e] + k, [s * x for x in net.twists[e][k]]))
+            y = net.accel[e][k]
+            if y is not None:
+                squares.append((g.offsets[e] + k, [s * x for x in y]))
+    pairs = []
+    for u in range(len(seq)):
+        for v in range(u + 1, len(seq)):
+            c = bracket(seq[u][1], seq[v][1])
+            if any(x != 0 for x in c):
+                pairs.append((seq[u][0], seq[v][0], c))
+    return pairs, squares
+
+
 def loop_terms(net: Network) -> list:
     """Per loop: the pairs ``(a, b, [X_a, X_b])`` in loop order and the squares ``(a, Y_a)``."""
-    g = net.graph
-    out = []
-    for loop in g.loops:
-        seq = []  # (freedom number, signed twist)
-        squares = []
-        for e, s in loop:
-            idx = list(range(len(net.twists[e])))
-            if s < 0:
-                idx.reverse()
-            for k in idx:
-                seq.append((g.offsets[e] + k, [s * x for x in net.twists[e][k]]))
-                y = net.accel[e][k]
-                if y is not None:
-                    squares.append((g.offsets[e] + k, [s * x for x in y]))
-        pairs = []
-        for u in range(len(seq)):
-            for v in range(u + 1, len(seq)):
-                c = bracket(seq[u][1], seq[v][1])
-                if any(x != 0 for x in c):
-                    pairs.append((seq[u][0], seq[v][0], c))
-        out.append((pairs, squares))
-    return out
+    return [chain_terms(net, loop) for loop in net.graph.loops]
 
 
 def _forms(mech: Mechanism) -> list[Matrix]:

@@ -76,7 +76,7 @@ class Graph:
 
 
 def spanning_tree(mech: Mechanism) -> Graph:
-    triples, base = mech.args
+    triples, base = mech.args[:2]
     links: list = [base]
     index = {base: 0}
     edges = []

@@ -1,0 +1,684 @@
+r"""The dynamics of closed loops at a configuration, in the rates of the actuated joints.
+
+A :class:`~screwsym.systems.linkage.Mechanism` with an inertia on each moving link
+(``inertias=``) has, at the configuration given, a mass matrix and an inverse
+dynamics in the rates of any set of ``k`` actuated one-freedom joints that
+determines its motion (``k`` the mobility).  Everything is first and second
+order kinematics of the loops (:mod:`~screwsym.systems.topology`,
+:mod:`~screwsym.systems.second_order`) and the principle of virtual power.
+
+Velocities.  The joint rates ``qdot`` (``F`` of them) close the loops when
+``A qdot = 0``, ``A`` the network matrix (Davies 1981).  Split into the actuated
+rates ``qa`` and the passive ones ``qp``: ``A_p qp = -A_a qa``.  The actuated
+rates determine the others iff ``A_p`` has full column rank ``F - k`` (else the
+passive joints can move with the actuators locked: an *actuation singularity*,
+the singularity of the second kind of Gosselin & Angeles for a parallel
+mechanism).  Then ``F - k`` rows ``R`` of ``A_p`` are independent, and
+``qdot = G qa`` with ``G`` the identity on the actuated rates and
+``-A_p[R]^-1 A_a[R]`` on the passive ones: Davies' null space restricted to the
+actuated rates.  ``G`` holds wherever ``det A_p[R] != 0``.
+
+Accelerations.  Differentiating the closure, on every loop (Müller 2016)
+``sum_i $_i qddot_i + sum_{i<j} [$_i, $_j] qdot_i qdot_j = 0`` in loop order,
+stacked ``A qddot + c(qdot) = 0`` (:meth:`Mechanism.quadratic_terms
+<screwsym.systems.linkage.Mechanism.quadratic_terms>`), so
+``qddot = G qa'' + b`` with ``b`` zero on the actuated rates and
+``-A_p[R]^-1 c_R`` on the passive ones.
+
+Links.  Link ``l``'s twist is the sum of the joint twists along the tree path
+from the base, ``V_l = P_l qdot`` (:func:`~screwsym.systems.topology.path_matrix`),
+and its twist rate (its spatial acceleration, ``dV_l/dt`` in the space frame)
+the same chain differentiated, ``P_l qddot + sum_{i<j} [$_i, $_j] qdot_i qdot_j``
+along the path (:func:`~screwsym.systems.second_order.chain_terms`).
+
+Dynamics.  Link ``l``'s twist per actuated rate is ``A_l = P_l G``; its momentum
+``M_l V_l`` (:class:`~screwsym.core.inertia.SpatialInertia`, ray order) changes
+as ``M_l dV_l/dt + [V_l, M_l V_l]`` (the Newton–Euler equation in screw form,
+as in :mod:`screwsym.motion.dynamics`).  The constraint wrenches of
+frictionless joints do no work on a motion the loops allow, so by virtual power
+(Jourdain's principle) the actuator forces are
+
+    tau = sum_l A_l^T Delta (M_l dV_l/dt + [V_l, M_l V_l] - W_l),
+
+``W_l`` the weight of link ``l`` (:meth:`SpatialInertia.gravity_wrench
+<screwsym.core.inertia.SpatialInertia.gravity_wrench>`) and ``Delta`` the half
+swap, so that ``x^T Delta w`` is the power of the wrench ``w`` on the twist ``x``
+(1.45).  The mass matrix, from the kinetic energy
+``T = 1/2 sum_l V_l^T Delta M_l V_l``, is ``H = sum_l A_l^T Delta M_l A_l``
+(``Delta M_l`` is symmetric), and ``tau = H qa'' + h(qa')``.
+
+Exact for exact input.  With symbols in the geometry the results are the generic
+ones: they hold where ``det A_p[R] != 0`` (:func:`actuation_condition`;
+``conds="piecewise"`` returns them with that condition, ``nan`` elsewhere).  With
+numbers an actuation singularity is a ``ValueError``; so is a configuration
+whose closure does not extend to second order along the rates given (a shaky
+one: no acceleration closes the loops).  With symbols the rows outside ``R`` are
+taken to close to second order as they do on a genuine configuration.
+
+References
+==========
+
+J. M. Davies, "Kirchhoff's circulation law applied to multi-loop kinematic
+chains", Mech. Mach. Theory 16 (1981) 171-183.
+A. Müller, "Local kinematic analysis of closed-loop linkages", J. Mechanisms
+Robotics 8(4) (2016) 041013.
+C. Gosselin, J. Angeles, "Singularity analysis of closed-loop kinematic chains",
+IEEE Trans. Robotics and Automation 6(3) (1990) 281-290.
+L.-W. Tsai, *Robot Analysis*, Wiley 1999, Chapter 9 (virtual work); F. E. Udwadia,
+R. E. Kalaba, *Analytical Dynamics*, Cambridge 1996 (Jourdain's principle).
+Lynch & Park, *Modern Robotics*, Cambridge 2017, Section 8.2.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import TYPE_CHECKING, Any, cast
+
+from sympy import (
+    Add,
+    And,
+    Float,
+    ImmutableMatrix,
+    Matrix,
+    Ne,
+    Poly,
+    Rational,
+    S,
+    Symbol,
+    Tuple,
+    expand,
+    nan,
+    radsimp,
+    true,
+    zeros,
+)
+from sympy.polys.matrices import DomainMatrix
+
+from ..algebra.budget import BUDGET, OverBudget, budget_name, case_budget, charge
+from ..algebra.linalg import field_matrix, field_rank
+from ..algebra.rings import vanishes
+from ..core.checks import check_choice, check_count, check_scalar, check_sequence, check_vector
+from ..core.conditions import CONDS, piecewise
+from ..core.decide import is_zero
+from ..core.formulas import bracket
+from ..core.inertia import SpatialInertia
+from ..core.tidy import tidy
+from ..core.twist import Twist
+from .second_order import chain_terms, loop_terms
+from .topology import bare_network, check_link, link_label, path_matrix, spanning_tree
+
+if TYPE_CHECKING:
+    from .linkage import Mechanism
+
+__all__: list[str] = []  # its names serve Mechanism's methods; users reach them there
+
+#: the default gravitational acceleration, ``(0, 0, -g)``: the same as
+#: :data:`screwsym.motion.dynamics.GRAVITY` (systems does not import motion)
+GRAVITY = (S.Zero, S.Zero, -Symbol("g", positive=True))
+
+
+#: the units charged per symbolic entry tidied or product formed (about a millisecond)
+STEP_UNITS = 1000
+
+
+@contextmanager
+def _bounded(budget: Any, name: str) -> Iterator[None]:
+    """The exact arithmetic of ``name`` within ``budget`` units (about a microsecond each,
+    and the CPU time ``SLACK`` times that: :mod:`screwsym.algebra.budget`); past it a
+    ``ValueError`` naming ``name``.  Inside another budget the outer one holds."""
+    budget = check_count(budget, "budget")
+    if budget_name(""):
+        yield
+        return
+    with case_budget(budget, name):
+        try:
+            yield
+        except OverBudget:
+            raise ValueError(
+                f"{name}: the exact arithmetic needs more than budget={budget} units (or its "
+                "CPU time); give some symbols values (subs) or pass a larger budget") from None
+
+
+def _charge_matrix(M: Matrix, power: int) -> None:
+    """Charge an elimination on ``M`` before it runs: ``n**power`` times the largest entry's
+    terms, times ``10**s`` for ``s`` symbols (an angle's sine and cosine count once).
+
+    A single SymPy elimination is not interrupted, so its cost is charged in advance: a
+    rough bound on the swell of rational functions in ``s`` symbols, not a calibration.
+    Measured: the Delta link by link with one pose symbol (30 x 18, 1e6 units) takes
+    seconds; with three (3e7 units) it ran past 4 CPU minutes, and is now refused at once
+    by the default budget."""
+    n = max(M.rows, M.cols, 1)
+    terms = max((len(Add.make_args(e)) for e in M), default=1)
+    charge(n**power * terms * 10 ** len(M.free_symbols))
+
+
+def check_inertias(inertias: Any, links: dict, base: Any) -> Tuple:
+    """``inertias`` (a dict link -> SpatialInertia) as the canonical ``Tuple`` of pairs.
+
+    ``links`` maps each link object to its number; the pairs come in that order.
+    """
+    if isinstance(inertias, Tuple):  # the canonical form (rebuilt by SymPy)
+        pairs = [(p.args[0], p.args[1]) for p in inertias.args]
+    elif isinstance(inertias, dict):
+        pairs = list(inertias.items())
+    else:
+        raise TypeError(
+            f"inertias: expected a dict {{link: SpatialInertia}}, got {type(inertias).__name__}")
+    out = {}
+    for key, value in pairs:
+        link = check_link(key, "inertias")
+        label = link_label(link)
+        if link not in links:
+            raise ValueError(f"inertias: {label!r} is not a link of this mechanism")
+        if link == base:
+            raise ValueError(f"inertias: {label!r} is the base, which does not move")
+        if not isinstance(value, SpatialInertia):
+            raise TypeError(f"inertias[{label!r}]: expected a SpatialInertia, got "
+                            f"{type(value).__name__}")
+        if link in out:
+            raise ValueError(f"inertias: {label!r} given twice")
+        out[link] = value
+    return Tuple(*(Tuple(k, v) for k, v in sorted(out.items(), key=lambda kv: links[kv[0]])))
+
+
+# ------------------------------------------------------------------ the actuation
+@dataclass(frozen=True)
+class _Actuation:
+    actuated: tuple  # the freedom numbers of the actuated joints, in the order given
+    passive: tuple  # the other freedom numbers, in order
+    rows: tuple  # R: rows of the network matrix, independent on the passive columns
+    G: ImmutableMatrix  # F x k: all joint rates per actuated rate
+    det: Any  # det A_p[R] (a non-zero number, or an expression in the symbols)
+    condition: Any  # where G holds: True, or Ne(det, 0)
+    terms: list  # the loops' second-order terms (loop_terms)
+    inverse: ImmutableMatrix  # A_p[R]^-1, (F - k) x (F - k)
+    net: Any  # the network (its matrix, tree paths and twists)
+
+
+def _check_actuated(mech: Mechanism, actuated: Any) -> tuple:
+    items = check_sequence(actuated, "actuated", "joint numbers")
+    joints = mech.joints
+    g = spanning_tree(mech)
+    out = []
+    for i, a in enumerate(items):
+        if isinstance(a, bool) or not isinstance(a, int) and not getattr(a, "is_Integer", False):
+            raise TypeError(f"actuated[{i}]: expected a joint number (an int), got {a!r}")
+        a = int(a)
+        if not 0 <= a < len(joints):
+            raise ValueError(f"actuated[{i}]: expected a joint number 0..{len(joints) - 1}, "
+                             f"got {a}")
+        if joints[a][2].freedom != 1:
+            raise ValueError(f"actuated[{i}]: joint {a} has {joints[a][2].freedom} freedoms; an "
+                             "actuated joint has one (a revolute, prismatic or helical joint)")
+        if g.offsets[a] in out:
+            raise ValueError(f"actuated: joint {a} is given twice")
+        out.append(g.offsets[a])
+    return tuple(out)
+
+
+def _solve(B: Matrix, C: Matrix) -> Matrix:
+    """``B^-1 C`` for a square ``B`` non-singular where the result is used: exact, fraction
+    free in the polynomial ring of the entries (``sin(q)``, ``cos(q)`` and roots as its
+    symbols: an identity there is one at every value), one denominator."""
+    n = B.cols
+    dm = DomainMatrix.from_Matrix(Matrix.hstack(B, C))
+    K = dm.domain
+    num, den = dm[:, :n].solve_den(dm[:, n:])
+    d = K.to_sympy(den)
+    return num.to_Matrix().applyfunc(lambda e: e / d)
+
+
+#: the most terms of a determinant factored for the condition (SymPy's multivariate
+#: factorisation has no bound; past this the condition is the determinant itself)
+FACTOR_TERMS = 300
+
+
+def _determinant(B: Matrix) -> tuple[Any, Any]:
+    """``det B`` and the condition ``det B != 0``: ``True`` for a number, else one ``Ne`` per
+    distinct irreducible factor of the determinant in the polynomial ring of its entries
+    (``sin(q)``, ``cos(q)`` as independent symbols: a factorisation there holds on the
+    circle too), or ``Ne(det, 0)`` where the ring is not a polynomial ring or the
+    determinant has more than :data:`FACTOR_TERMS` terms."""
+    dm = DomainMatrix.from_Matrix(B)
+    K = dm.domain
+    d = dm.det()
+    det = K.to_sympy(d)
+    if not getattr(det, "free_symbols", None):
+        return det, true
+    if K.is_PolynomialRing and len(d.terms()) <= FACTOR_TERMS:
+        charge(len(d.terms()) ** 2)
+        factors = [f for f, _ in d.factor_list()[1] if not f.is_ground]
+        return det, And(*(Ne(f.as_expr(), 0) for f in factors))
+    return det, Ne(det, 0)
+
+
+@lru_cache(maxsize=64)
+def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
+    # the network matrix without its null space (a generic null space of a symbolic
+    # mechanism is dear, and only the rank on the passive columns is needed here)
+    net = bare_network(mech)
+    A = net.A
+    F = A.cols
+    k = len(actuated)
+    passive = tuple(i for i in range(F) if i not in actuated)
+    Ap = A.extract(list(range(A.rows)), list(passive))
+    if passive:
+        # the independent rows of A_p: exact (generic with symbols, on the circle for angles)
+        _charge_matrix(Ap, 3)
+        _, rows = field_matrix(Ap.T).rref()
+    else:
+        rows = ()
+    if len(rows) < len(passive):
+        _check_count(A, k)
+        with_symbols = " at every value of the symbols" if A.free_symbols else ""
+        raise ValueError(
+            "actuated: an actuation singularity: the passive joints' columns of the network "
+            f"matrix have rank {len(rows)} < {len(passive)}{with_symbols}, so the passive "
+            "joints move with the actuated ones locked (the actuated rates do not determine "
+            "the motion)")
+    rows = tuple(rows)
+    G = zeros(F, k)
+    for c, a in enumerate(actuated):
+        G[a, c] = 1
+    det: Any = S.One
+    inverse = zeros(0, 0)
+    condition: Any = true
+    if passive:
+        B = Ap.extract(list(rows), list(range(len(passive))))
+        Aa = A.extract(list(rows), list(actuated))
+        _charge_matrix(B, 3)
+        inverse = _solve(B, Matrix.eye(len(passive))).applyfunc(_tidy)
+        X = inverse * -Aa
+        for r, p in enumerate(passive):
+            for c in range(k):
+                G[p, c] = X[r, c]
+        det, condition = _determinant(B)
+    G = G.applyfunc(_tidy)
+    # the other rows hold too unless the actuated rates are constrained (k > the mobility)
+    others = [r for r in range(A.rows) if r not in rows]
+    if others and not all(e == 0 or vanishes(e) for e in A.extract(others, list(range(F))) * G):
+        _check_count(A, k)
+        raise ValueError("actuated: the actuated joints' rates are not independent here")  # pragma: no cover
+    return _Actuation(actuated, passive, rows, ImmutableMatrix(G), det,
+                      condition, loop_terms(net), ImmutableMatrix(inverse), net)
+
+
+def _check_count(A: Matrix, k: int) -> None:
+    """A ``ValueError`` unless ``k`` is the mobility (the generic one with symbols)."""
+    M = A.cols - field_rank(A)
+    if k != M:
+        raise ValueError(f"actuated: expected as many actuated joints as the mobility, {M}, "
+                         f"got {k}")
+
+
+def _tidy(e: Any) -> Any:
+    if e.is_Rational:
+        return e
+    charge(STEP_UNITS if e.free_symbols else 1)
+    # a number with roots: denominators rationalised, so that a zero shows as 0
+    return tidy(e) if e.free_symbols else radsimp(expand(e))
+
+
+def _rates(value: Any, name: str, k: int) -> Matrix:
+    items = check_sequence(value, name, "actuated rates", k)
+    return Matrix([check_scalar(x, f"{name}[{i}]") for i, x in enumerate(items)])
+
+
+def actuation_condition(mech: Mechanism, actuated: Any) -> Any:
+    """Where the actuated joints determine the motion: ``True``, or ``Ne(det, 0)``."""
+    return _actuation(mech, _check_actuated(mech, actuated)).condition
+
+
+def joint_rates(mech: Mechanism, actuated: Any, rates: Any) -> ImmutableMatrix:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    qa = _rates(rates, "rates", len(act.actuated))
+    return ImmutableMatrix((act.G * qa).applyfunc(_tidy))
+
+
+def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) -> Matrix:
+    """All joint accelerations for the joint rates ``qd`` and actuated accelerations ``qa2``."""
+    A = act.net.A
+    c = _quadratic(act.terms, qd)
+    qdd = Matrix(act.G * qa2)
+    if act.passive:
+        b = act.inverse * -c.extract(list(act.rows), [0])
+        for r, p in enumerate(act.passive):
+            qdd[p] += b[r]
+    qdd = qdd.applyfunc(_tidy)
+    if not A.free_symbols:
+        _check_second_order(act, A, qd)
+    return qdd
+
+
+def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
+    """Refuse rates along which the closure does not extend to second order: the rows of the
+    differentiated closure outside ``R`` must hold too.  Exact: floats in the rates are taken
+    at their exact binary values; rates with symbols must satisfy it identically."""
+    qx = qd.applyfunc(lambda e: e.xreplace({f: Rational(f) for f in e.atoms(Float)}))
+    c = _quadratic(act.terms, qx)
+    b = zeros(A.cols, 1)
+    if act.passive:
+        x = act.inverse * -c.extract(list(act.rows), [0])
+        for r, p in enumerate(act.passive):
+            b[p] = x[r]
+    residual = A * b + c
+    rates = sorted(qx.free_symbols, key=str)
+    for e in residual:
+        e = expand(e)
+        if e == 0:
+            continue
+        coefficients = Poly(e, *rates).coeffs() if rates else [e]
+        if any(is_zero(radsimp(expand(k))) is not True for k in coefficients):
+            raise ValueError(
+                "rates: the loop closure does not extend to second order along these rates "
+                "(no joint accelerations close the loops: a shaky configuration), or that it "
+                "does could not be proved")
+
+
+def _quadratic(terms: list, qd: Matrix) -> Matrix:
+    """The second-order terms of each chain of ``terms`` for the joint rates ``qd``, stacked."""
+    out = zeros(6 * len(terms), 1)
+    for i, (pairs, squares) in enumerate(terms):
+        for a, b, c in pairs:
+            out[6 * i:6 * i + 6, 0] += Matrix(c) * qd[a] * qd[b]
+        for a, y in squares:
+            out[6 * i:6 * i + 6, 0] += Matrix(y) * qd[a] ** 2
+    return out
+
+
+def joint_accelerations(mech: Mechanism, actuated: Any, rates: Any,
+                        accelerations: Any) -> ImmutableMatrix:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    return ImmutableMatrix(_accelerations(mech, act, act.G * qa, qa2))
+
+
+def _link(mech: Mechanism, link: Any) -> int:
+    key = check_link(link, "link")
+    g = spanning_tree(mech)
+    if key not in g.index:
+        raise ValueError(f"link: {link_label(key)!r} is not a link of this mechanism")
+    return int(g.index[key])
+
+
+def _twist(V: Matrix) -> Twist:
+    V = V.applyfunc(_tidy)
+    return Twist(V[:3, 0], V[3:, 0])
+
+
+def link_twist(mech: Mechanism, link: Any, actuated: Any, rates: Any) -> Twist:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    qa = _rates(rates, "rates", len(act.actuated))
+    return _twist(path_matrix(act.net, _link(mech, link)) * act.G * qa)
+
+
+def _link_rate(act: _Actuation, n: int, qd: Matrix, qdd: Matrix) -> Matrix:
+    net = act.net
+    return path_matrix(net, n) * qdd + _quadratic([chain_terms(net, net.graph.paths[n])], qd)
+
+
+def link_acceleration(mech: Mechanism, link: Any, actuated: Any, rates: Any,
+                      accelerations: Any) -> Twist:
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    qd = Matrix(act.G * qa)
+    n = _link(mech, link)
+    return _twist(_link_rate(act, n, qd, _accelerations(mech, act, qd, qa2)))
+
+
+def _bodies(mech: Mechanism) -> list[tuple[int, SpatialInertia]]:
+    g = spanning_tree(mech)
+    return [(int(g.index[p.args[0]]), p.args[1]) for p in mech.inertia_pairs]
+
+
+def _power_rows(mech: Mechanism, act: _Actuation) -> list[tuple[Matrix, Matrix, SpatialInertia]]:
+    """Per body: ``P_l``, ``A_l^T Delta`` (k x 6) and its inertia."""
+    net = act.net
+    out = []
+    for n, I in _bodies(mech):
+        P = path_matrix(net, n)
+        Al = P * act.G
+        swapped = Matrix.hstack(Al[3:, :].T, Al[:3, :].T)  # A_l^T Delta
+        out.append((P, swapped, I))
+    return out
+
+
+def _conds(value: ImmutableMatrix, act: _Actuation, conds: str) -> ImmutableMatrix:
+    """``value``, or with ``conds="piecewise"`` each entry where the actuation holds, nan elsewhere."""
+    if conds == "none" or act.condition is true:
+        return value
+    return ImmutableMatrix(piecewise([(value, act.condition)], value.applyfunc(lambda _: nan)))
+
+
+def mass_matrix(mech: Mechanism, actuated: Any, conds: str = "none") -> ImmutableMatrix:
+    conds = check_choice(conds, "conds", CONDS)
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    H = zeros(k, k)
+    for P, swapped, I in _power_rows(mech, act):
+        charge(STEP_UNITS * k * k)
+        H += swapped * Matrix(I.matrix) * (P * act.G)
+    return _conds(ImmutableMatrix(H.applyfunc(_tidy)), act, conds)
+
+
+def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                     gravity: Any = None, conds: str = "none") -> ImmutableMatrix:
+    conds = check_choice(conds, "conds", CONDS)
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+    qd = Matrix(act.G * qa)
+    qdd = _accelerations(mech, act, qd, qa2)
+    tau = zeros(k, 1)
+    for (P, swapped, I), (n, _) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
+        charge(STEP_UNITS * k)
+        V = P * qd
+        Vdot = _link_rate(act, n, qd, qdd)
+        momentum = Matrix(I.matrix) * V
+        weight = I.gravity_wrench(g).matrix
+        tau += swapped * (Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight)
+    return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
+
+
+class LoopDynamicsMixin:
+    """The closed-loop dynamics methods of :class:`~screwsym.systems.linkage.Mechanism`
+    (a module of their own: see the module docstring)."""
+
+    __slots__ = ()
+
+    def actuation_condition(self, actuated: Any, *, budget: int = BUDGET) -> Any:
+        """Where the joints ``actuated`` (numbers into :attr:`joints`) determine the motion.
+
+        ``True`` with numbers (an actuation singularity is a ``ValueError``); with
+        symbols ``Ne(det, 0)``, ``det`` the minor of the passive joints' columns of
+        the network matrix the results of :meth:`joint_rates`,
+        :meth:`mass_matrix` and :meth:`inverse_dynamics` are solved on (see :mod:`~screwsym.systems.loop_dynamics`).
+
+        The four-bar whose coupler-rocker joint is at ``(x, y)``: the crank drives it
+        except where that joint lies on the line from the crank pin ``(1, 2)`` to the
+        rocker pivot ``(4, 0)`` (coupler and rocker in line: Gosselin & Angeles' second kind).
+
+        >>> from sympy import symbols
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> x, y = symbols("x y", real=True)
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([x, y, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.actuation_condition([0])
+        Ne(2*x + 3*y - 8, 0)
+        """
+        with _bounded(budget, "actuation_condition"):
+            return actuation_condition(cast("Mechanism", self), actuated)
+
+    def joint_rates(self, actuated: Any, rates: Any, *, budget: int = BUDGET) -> ImmutableMatrix:
+        """All joint rates (F, the joints' freedoms in order) from the ``rates`` of the joints
+        ``actuated``: Davies' null space restricted to the actuated rates (see
+        :mod:`~screwsym.systems.loop_dynamics`).
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
+        Matrix([[5, -60/7, 40/7, -15/7]])
+        """
+        with _bounded(budget, "joint_rates"):
+            return joint_rates(cast("Mechanism", self), actuated, rates)
+
+    def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any, *,
+                            budget: int = BUDGET) -> ImmutableMatrix:
+        """All joint accelerations from the actuated joints' ``rates`` and ``accelerations``:
+        the differentiated closure ``A qddot + quadratic_terms(qdot) = 0`` solved for the
+        passive ones (see :mod:`~screwsym.systems.loop_dynamics`).  A configuration whose
+        closure does not extend to second order along the rates is a ``ValueError``.
+
+        A crank turning steadily at 5 still accelerates the other joints:
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.joint_accelerations([0], [5], [0]).T
+        Matrix([[0, 4500/343, 3300/343, -7800/343]])
+        """
+        with _bounded(budget, "joint_accelerations"):
+            return joint_accelerations(cast("Mechanism", self), actuated, rates, accelerations)
+
+    def link_twist(self, link: Any, actuated: Any, rates: Any, *, budget: int = BUDGET) -> Twist:
+        """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``.
+
+        The coupler turns about its instant centre ``(12/5, 24/5)``:
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.link_twist("coupler", [0], [7])
+        Twist([0, 0, -5], [-24, 12, 0])
+        """
+        with _bounded(budget, "link_twist"):
+            return link_twist(cast("Mechanism", self), link, actuated, rates)
+
+    def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any, *,
+                          budget: int = BUDGET) -> Twist:
+        """The twist rate ``dV/dt`` of ``link`` (its spatial acceleration, space frame, ray
+        order) for the actuated joints' ``rates`` and ``accelerations``.
+
+        The rate of change of the twist ``(omega; v_O)``, not a point's acceleration: a
+        crank turning steadily about a fixed axis has a constant twist.
+
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
+        >>> fourbar.link_acceleration("crank", [0], [1], [0])
+        Twist([0, 0, 0], [0, 0, 0])
+        >>> fourbar.link_acceleration("coupler", [0], [7], [0])
+        Twist([0, 0, 180/7], [-228/7, -1356/7, 0])
+        """
+        with _bounded(budget, "link_acceleration"):
+            return link_acceleration(cast("Mechanism", self), link, actuated, rates, accelerations)
+
+    def mass_matrix(self, actuated: Any, *, conds: str = "none",
+                    budget: int = BUDGET) -> ImmutableMatrix:
+        r"""The k x k mass matrix in the rates of the joints ``actuated`` (k, the mobility).
+
+        Explanation
+        ===========
+
+        ``H = sum_l A_l^T Delta M_l A_l``, ``A_l`` link ``l``'s twist per actuated
+        rate and ``M_l`` its inertia (``inertias=``): the kinetic energy of the
+        mechanism is ``1/2 qa^T H qa``.  A joint's rate is the coefficient of its twist
+        as given (a unit axis: radians or lengths per unit time).  Exact; generic with symbols, holding where
+        :meth:`actuation_condition` does (``conds="piecewise"``: each entry a
+        ``Piecewise`` with that condition, ``nan`` elsewhere).  An actuation
+        singularity (the passive joints move with the actuated ones locked) is a
+        ``ValueError``.  ``budget`` bounds the exact arithmetic (units of about a
+        microsecond, and the CPU time: :mod:`screwsym.algebra.budget`; every method here
+        takes it).  See :mod:`~screwsym.systems.loop_dynamics`.
+
+        Examples
+        ========
+
+        A four-bar driven by its crank, a point mass of 1 at the coupler joint
+        ``(1, 2, 0)`` on the crank and one of 2 at ``(3, 3, 0)`` on the rocker
+        (about ``(4, 0, 0)``, at distance ``sqrt(10)``).  Per unit crank rate the
+        first moves at speed ``sqrt(5)`` and the rocker turns at ``3/7``
+        (:meth:`joint_rates <screwsym.systems.linkage.Mechanism.joint_rates>`), so ``H = 1 * 5 + 2 * (3/7)**2 * 10 = 425/49``.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> fourbar.mass_matrix([0])
+        Matrix([[425/49]])
+        """
+        with _bounded(budget, "mass_matrix"):
+            return mass_matrix(cast("Mechanism", self), actuated, conds)
+
+    def inverse_dynamics(self, actuated: Any, rates: Any, accelerations: Any,
+                         gravity: Any = None, *, conds: str = "none",
+                         budget: int = BUDGET) -> ImmutableMatrix:
+        r"""The forces or torques of the joints ``actuated`` for their ``rates`` and
+        ``accelerations``, every other joint passive and frictionless.
+
+        Explanation
+        ===========
+
+        By virtual power (Jourdain's principle):
+        ``tau = sum_l A_l^T Delta (M_l dV_l/dt + [V_l, M_l V_l] - W_l)``, ``V_l``
+        link ``l``'s twist, ``dV_l/dt`` its twist rate (:meth:`link_acceleration`),
+        ``W_l`` its weight under ``gravity`` (default ``(0, 0, -g)``, ``g`` a
+        positive symbol).  Exact; generic with symbols as :meth:`mass_matrix`.
+
+        Examples
+        ========
+
+        The four-bar of :meth:`mass_matrix` at rest, gravity ``-10`` along y.  Per
+        unit crank rate the first mass rises at ``1`` and the second at ``-3/7``
+        (it moves with ``3/7 * (-3, -1)``), so by virtual work the crank holds
+        ``1 * 10 * 1 + 2 * 10 * (-3/7) = 10/7``.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> fourbar.inverse_dynamics([0], [0], [0], [0, -10, 0])
+        Matrix([[10/7]])
+        """
+        with _bounded(budget, "inverse_dynamics"):
+            return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)
