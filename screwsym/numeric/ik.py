@@ -131,6 +131,7 @@ class _Compiled:
         out[..., self.order] = q
         for j, i in enumerate(given):
             out[..., i] = f[:, None, j]
+        out[np.isnan(out).any(axis=-1)] = np.nan  # a branch missing a joint does not exist
         turn = np.array(self.revolute)
         out[..., turn] = np.mod(out[..., turn] + np.pi, 2 * np.pi) - np.pi
         return out.reshape(batch + out.shape[1:])
