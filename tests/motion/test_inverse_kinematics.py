@@ -14,10 +14,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from sympy import Dummy, Eq, Matrix, Rational, Symbol, pi, symbols
-from sympy.logic.boolalg import BooleanFalse
-
 from _robots import panda, puma560
+from sympy import Dummy, Eq, Matrix, Rational, Symbol, pi, symbols
+
 from screwsym import Chain, Twist
 from screwsym.motion.chain import ur5
 from screwsym.motion.inverse_kinematics import decomposition, inverse_kinematics, stage_order
@@ -152,7 +151,8 @@ def test_the_exact_closed_forms_reach_exact_poses(make):
         q = [pi * int(k) / 12 for k in rng.integers(-11, 12, 6)]
         pose_exact = arm.forward(q).matrix
         # the exact pose's entries at 30 digits (exact radicals in evalf's subs are far slower)
-        pose = dict(zip(entries, [pose_exact[i, j].evalf(30) for i in range(3) for j in range(4)]))
+        pose = dict(zip(entries, [pose_exact[i, j].evalf(30) for i in range(3) for j in range(4)],
+                        strict=True))
         Tn = np.array(pose_exact, dtype=float)
         found = [v for b in generic if (v := _evaluate(arm, b, pose, order, {})) is not None]
         assert found and all(reproduces(arm, v, Tn) for v in found)
@@ -170,7 +170,7 @@ def test_a_wrist_singularity_is_its_own_branch_with_a_free_parameter():
     assert singular
     q = [Rational(3, 10), Rational(4, 10), Rational(-5, 10), Rational(6, 10), 0, Rational(8, 10)]
     Tn = fk(arm, [float(x) for x in q])
-    pose = dict(zip(entries, arm.forward(q).matrix[:3, :4].evalf(30)))
+    pose = dict(zip(entries, arm.forward(q).matrix[:3, :4].evalf(30), strict=True))
     reached = 0
     for b in singular:
         if {d for v in b.values for d in v.atoms(Dummy)} != {b.values[3]}:
