@@ -128,12 +128,20 @@ class _Compiled:
             q[..., list(joints)] = vals
             q = q.reshape(N, B * nb, 6)
         out = np.empty((N, q.shape[1], self.n))
-        out[..., self.order] = q
+        if self.order == list(range(self.before, self.after)) and not given:
+            out[...] = q
+        else:
+            out[..., self.order] = q
         for j, i in enumerate(given):
             out[..., i] = f[:, None, j]
-        out[np.isnan(out).any(axis=-1)] = np.nan  # a branch missing a joint does not exist
-        turn = np.array(self.revolute)
-        out[..., turn] = np.mod(out[..., turn] + np.pi, 2 * np.pi) - np.pi
+        out[np.isnan(out.sum(axis=-1))] = np.nan  # a branch missing a joint does not exist
+        if all(self.revolute):  # angles into (-pi, pi], in place
+            out += np.pi
+            np.mod(out, 2 * np.pi, out=out)
+            out -= np.pi
+        else:
+            turn = np.array(self.revolute)
+            out[..., turn] = np.mod(out[..., turn] + np.pi, 2 * np.pi) - np.pi
         return out.reshape(batch + out.shape[1:])
 
 
