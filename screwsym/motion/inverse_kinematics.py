@@ -31,12 +31,17 @@ twists (:func:`decomposition`):
     meeting): the reversed chain ``(-$_6, ..., -$_1)`` reaches ``g^-1``.
 
 Every branch is a :class:`~screwsym.motion.subproblems.Branch` ``(condition,
-q)``: the conditions of its subproblems joined, decided exactly for numbers
-(only the branches that exist are returned), symbolic for symbols.  Degenerate
-poses are branches of their own: a wrist singularity (joints 4 and 6 on one
-line) gives a branch with joint 4 a free parameter (a real ``Dummy``) and
-joint 6 depending on it (only their sum is fixed), a shoulder singularity one
-with joint 1 free, and so on, each with its condition.
+q)``: the conditions of its subproblems joined.  The closed forms are built once per
+chain (:func:`stage_forms`: each stage's subproblem on symbols standing for its points,
+the UR5's in about a second) and the pose substituted; each joint's value is a closed
+form in the pose and the joints solved before it (:func:`stage_order`), as IKFast's
+generated code reads, since substituting nests square roots in square roots (see
+:func:`inverse_kinematics`).  Subproblems 1 and 2 are called without their existence
+conditions where the stages before imply them (each stage says why).  Degenerate
+poses are branches of their own: a wrist singularity (joints 4 and 6 on one line)
+gives a branch with joint 4 a free parameter (a real ``Dummy``) and joint 6 depending
+on it (only their sum is fixed), a shoulder singularity one with joint 1 free, and so
+on, each with its condition.
 
 ``free=`` makes joints parameters of a redundant arm: joint ``k`` with value
 ``s`` is moved to the right of the product
