@@ -122,7 +122,7 @@ class _Compiled:
         q = np.zeros((N, 1, 6))
         for joints, nb, prep, solve in self.stages:
             B = q.shape[1]
-            points = prep(np.broadcast_to(gv[:, None, :], (N, B, 12)), q)
+            points = prep(gv[:, None, :], q)
             vals = np.asarray(solve(points)).reshape(N, B, nb, len(joints))
             q = np.repeat(q[:, :, None, :], nb, axis=2)
             q[..., list(joints)] = vals
