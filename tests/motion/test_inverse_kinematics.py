@@ -200,3 +200,29 @@ def test_errors_name_what_prevents_a_decomposition():
         inverse_kinematics_function(panda(), free=(3,))
     with pytest.raises(ValueError, match=r"T: expected poses of shape"):
         inverse_kinematics_function(ur5(), backend="numpy")(np.eye(3))
+
+
+@pytest.mark.slow
+@pytest.mark.filterwarnings("ignore::UserWarning")
+def test_the_panda_with_its_seventh_joint_a_parameter():
+    # the exact closed form with q7 a symbol (free=[6]), evaluated at a pose and its q7
+    arm = panda()
+    entries = symbols("r11 r12 r13 px r21 r22 r23 py r31 r32 r33 pz", real=True)
+    branches = inverse_kinematics(arm, Matrix(4, 4, [*entries, 0, 0, 0, 1]), free=[6])
+    q7 = Symbol("q7", real=True)
+    assert all(b.values[6] == q7 for b in branches)
+    q = [Rational(k, 10) for k in (3, -5, 4, -20, 6, 15, 7)]
+    pose = dict(zip(entries, arm.forward(q).matrix[:3, :4].evalf(30), strict=True))
+    pose[q7] = q[6].evalf(30)
+    generic = [b for b in branches
+               if not any(v.atoms(Dummy) for v in b.values) and not b.condition.atoms(Eq)]
+    Tn = fk(arm, [float(x) for x in q])
+    found = []
+    for b in generic:
+        v = _evaluate(arm, b, pose, stage_order(arm, free=[6]), {})
+        if v is not None:
+            v[6] = float(q[6])
+            found.append(v)
+    assert found and all(reproduces(arm, v, Tn) for v in found)
+    qf = np.array([float(x) for x in q])
+    assert (np.abs(wrapped(np.array(found) - qf, list(range(7)))).max(axis=1) < 1e-9).any()
