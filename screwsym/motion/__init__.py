@@ -9,6 +9,13 @@ from .chain import Chain, ur5
 from .conventions import CONVENTIONS, Convention, convert, convert_from
 from .displacement import exp6, log6, se3_matrix
 from .dynamics import coriolis_matrix, gravity_torques, inverse_dynamics, mass_matrix, regressor
+from .inverse_kinematics import (
+    Decomposition,
+    decomposition,
+    inverse_kinematics,
+    stage_order,
+    subproblem4,
+)
 from .newton_euler import (
     Operations,
     Program,
@@ -62,4 +69,9 @@ __all__ = [
     "subproblem1",
     "subproblem2",
     "subproblem3",
+    "subproblem4",
+    "inverse_kinematics",
+    "decomposition",
+    "Decomposition",
+    "stage_order",
 ]

@@ -405,6 +405,12 @@ class Chain(ScrewsymBasic):
             columns.reverse()
         return ImmutableMatrix.hstack(*columns)
 
+    def inverse_kinematics(self, T: Any, free: Any = (), *, budget: int = BUDGET) -> tuple:
+        """Every closed-form branch (condition, q) reaching ``T``: :func:`screwsym.motion.inverse_kinematics.inverse_kinematics`."""
+        from .inverse_kinematics import inverse_kinematics
+
+        return inverse_kinematics(self, T, free, budget=budget)
+
     def _eval_evalf_parts(self, n: int = 15, **options: Any) -> Chain:
         """The chain with every number a float: ``chain.evalf()`` (numeric work is faster on it)."""
         parts = [Tuple(*(t.evalf(n, **options) for t in self.args[0])),

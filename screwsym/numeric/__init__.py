@@ -7,7 +7,9 @@ r"""Floats: the chapter's operations generated as vectorised functions, and nume
 - :mod:`~screwsym.numeric.transmission`: :func:`transmission_map` and
   :func:`jacobian_map`, transmission indices and Jacobians over a grid;
 - :mod:`~screwsym.numeric.dynamics`: a chain's dynamics as generated functions,
-  :func:`forward_dynamics`.
+  :func:`forward_dynamics`;
+- :mod:`~screwsym.numeric.ik`: :func:`inverse_kinematics_function`, every closed-form
+  inverse kinematics branch at many poses.
 
 Built on :mod:`screwsym.codegen`, :mod:`screwsym.core`, :mod:`screwsym.systems` and
 :mod:`screwsym.motion`.
@@ -18,6 +20,7 @@ from collections.abc import Callable
 from . import screws
 from ._direct import recycle_results
 from .dynamics import DynamicsFunctions, dynamics_functions, forward_dynamics
+from .ik import inverse_kinematics_function
 from .mobility import MobilityMap, mobility_map
 from .screws import NAMES, functions_for
 from .transmission import TransmissionMap, jacobian_map, transmission_map
@@ -25,7 +28,7 @@ from .transmission import TransmissionMap, jacobian_map, transmission_map
 __all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map",
            "DynamicsFunctions", "dynamics_functions", "forward_dynamics",
            "TransmissionMap", "transmission_map", "jacobian_map",
-           "recycle_results"]
+           "recycle_results", "inverse_kinematics_function"]
 
 
 def __getattr__(name: str) -> Callable:
