@@ -202,8 +202,8 @@ def _copy_mathjax(app, exc) -> None:
 # (screwsym.plot.view) only, where the browser caches it from one page to the next.  The
 # notebooks' kernels inherit SCREWSYM_VIEW_PLOTLYJS=site: a view's output then leaves plotly.js
 # out (each would otherwise carry its 4.8 MB) and draws with the page's global Plotly.
-# View.to_html stays one self-contained file whatever the variable says.
-os.environ["SCREWSYM_VIEW_PLOTLYJS"] = "site"
+# View.to_html stays one self-contained file whatever the variable says.  Set in setup(), when
+# Sphinx builds, not on import (a test that reads this file must not change its own process).
 #: what a view's output (plotly's to_html) calls on the page
 _PLOTLY_CALL = "Plotly.newPlot("
 
@@ -244,6 +244,7 @@ def _plotlyjs_on_pages_with_views(app, pagename, templatename, context, doctree)
 
 
 def setup(app):
+    os.environ["SCREWSYM_VIEW_PLOTLYJS"] = "site"
     app.connect("builder-inited", _copy_plotlyjs)
     app.connect("html-page-context", _plotlyjs_on_pages_with_views)
     app.connect("build-finished", _copy_mathjax)
