@@ -33,6 +33,7 @@ __all__ = [
     "charge",
     "budget_name",
     "case_budget",
+    "bounded",
     "CaseList",
     "MAX_CASES",
     "BUDGET",
@@ -134,6 +135,34 @@ def case_budget(budget: int, name: str) -> Iterator[None]:
         _LEFT.reset(token)
         _NAME.reset(name_token)
         _DEADLINE.reset(deadline_token)
+
+
+@contextmanager
+def bounded(budget: int, name: str, message: str) -> Iterator[None]:
+    """The exact arithmetic of the method ``name`` within ``budget`` units, with its own error.
+
+    As :func:`case_budget` (the outermost budget holds, and its error names its method), but
+    past the budget the ``ValueError`` says ``message``, formatted with ``name`` and
+    ``budget``: what the method computes and what a user can do instead.  ``budget`` is a
+    positive ``int`` (the caller checks it).
+
+    >>> msg = "{name}: more than budget={budget} units; pass a larger budget"
+    >>> with bounded(10, "forward", msg):
+    ...     charge(11)
+    Traceback (most recent call last):
+    ...
+    ValueError: forward: more than budget=10 units; pass a larger budget
+    >>> with case_budget(100, "singularities"), bounded(10, "forward", msg):
+    ...     charge(11)                       # the outer budget holds
+    """
+    if _LEFT.get() is not None:  # an outer call's budget holds (its error names it)
+        yield
+        return
+    with case_budget(budget, name):
+        try:
+            yield
+        except OverBudget:
+            raise ValueError(message.format(name=name, budget=budget)) from None
 
 
 class CaseList(list):

@@ -84,7 +84,8 @@ from sympy.polys.domains import QQ, ZZ
 from sympy.polys.polyerrors import CoercionFailed, GeneratorsError, PolynomialError
 from sympy.polys.rings import ring
 
-from ..algebra.budget import OverBudget, budget_name, case_budget, charge
+from ..algebra.budget import bounded as _budget_bounded
+from ..algebra.budget import charge
 from ..algebra.circle import reduce_powers
 from ..algebra.numberfield import reduce_surds, surd_split
 from ..core.checks import check_count
@@ -101,6 +102,13 @@ STEP_UNITS = 100
 REDUCE_UNITS = 4
 
 
+#: the error past a kinematics' or dynamics' budget (:func:`bounded`)
+_MESSAGE = ("{name}: the exact arithmetic needs more than budget={budget} units (a long chain, or "
+            "symbolic joint values with angles that are no multiple of pi/12); pass a larger "
+            "budget, or use Chain.kinematics_program (Chain.dynamics_program for the dynamics) "
+            "for a straight-line program that grows linearly")
+
+
 @contextmanager
 def bounded(budget: Any, name: str) -> Iterator[None]:
     """The kinematics' and dynamics' exact arithmetic within ``budget`` units (about a microsecond
@@ -114,20 +122,8 @@ def bounded(budget: Any, name: str) -> Iterator[None]:
     ...
     ValueError: forward: the exact arithmetic needs more than budget=10 units (a long chain, or symbolic joint values with angles that are no multiple of pi/12); pass a larger budget, or use Chain.kinematics_program (Chain.dynamics_program for the dynamics) for a straight-line program that grows linearly
     """
-    budget = check_count(budget, "budget")
-    if budget_name(""):  # an outer call's budget holds (its error names it)
+    with _budget_bounded(check_count(budget, "budget"), name, _MESSAGE):
         yield
-        return
-    with case_budget(budget, name):
-        try:
-            yield
-        except OverBudget:
-            raise ValueError(
-                f"{name}: the exact arithmetic needs more than budget={budget} units (a long "
-                "chain, or symbolic joint values with angles that are no multiple of pi/12); pass a "
-                "larger budget, or use Chain.kinematics_program (Chain.dynamics_program for the "
-                "dynamics) for a straight-line program that grows linearly"
-            ) from None
 
 
 class _NotPolynomial(Exception):

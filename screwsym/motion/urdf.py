@@ -76,7 +76,7 @@ from typing import Any, NamedTuple
 
 from sympy import Add, Expr, ImmutableMatrix, Rational, S, cos, pi, sin, sqrt, zeros
 
-from ..algebra.budget import BUDGET, OverBudget, case_budget, charge
+from ..algebra.budget import BUDGET, bounded, charge
 from ..core.checks import check_count, check_scalar
 from ..core.inertia import check_inertia_tensor
 from ..core.screw import ScalarLike
@@ -205,18 +205,17 @@ class _AnglePolicy:
         warn_recognised(self.report(), self.n or 12, stacklevel=4)
 
 
+#: the error past the budget of reading a file's frames (:func:`_bounded`)
+_MESSAGE = ("{name}: the exact arithmetic of the file's frames needs more than budget={budget} "
+            "units (sines of many angles that are no multiple of pi/12: they are kept exact); "
+            "pass a larger budget")
+
+
 @contextmanager
 def _bounded(budget: int, name: str) -> Iterator[None]:
     """The frames' exact arithmetic within ``budget`` (:mod:`screwsym.algebra.budget`)."""
-    with case_budget(budget, name):
-        try:
-            yield
-        except OverBudget:
-            raise ValueError(
-                f"{name}: the exact arithmetic of the file's frames needs more than budget={budget} "
-                "units (sines of many angles that are no multiple of pi/12: they are kept exact); "
-                "pass a larger budget"
-            ) from None
+    with bounded(budget, name, _MESSAGE):
+        yield
 
 
 def _exact(M: ImmutableMatrix) -> ImmutableMatrix:

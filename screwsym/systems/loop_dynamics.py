@@ -97,7 +97,7 @@ from sympy import (
 )
 from sympy.polys.matrices import DomainMatrix
 
-from ..algebra.budget import BUDGET, OverBudget, budget_name, case_budget, charge
+from ..algebra.budget import BUDGET, bounded, charge
 from ..algebra.linalg import field_matrix, field_rank
 from ..algebra.rings import vanishes
 from ..core.checks import check_choice, check_count, check_scalar, check_sequence, check_vector
@@ -124,22 +124,18 @@ GRAVITY = (S.Zero, S.Zero, -Symbol("g", positive=True))
 STEP_UNITS = 1000
 
 
+#: the error past a closed loop's budget (:func:`_bounded`)
+_MESSAGE = ("{name}: the exact arithmetic needs more than budget={budget} units (or its CPU "
+            "time); give some symbols values (subs) or pass a larger budget")
+
+
 @contextmanager
 def _bounded(budget: Any, name: str) -> Iterator[None]:
     """The exact arithmetic of ``name`` within ``budget`` units (about a microsecond each,
     and the CPU time ``SLACK`` times that: :mod:`screwsym.algebra.budget`); past it a
     ``ValueError`` naming ``name``.  Inside another budget the outer one holds."""
-    budget = check_count(budget, "budget")
-    if budget_name(""):
+    with bounded(check_count(budget, "budget"), name, _MESSAGE):
         yield
-        return
-    with case_budget(budget, name):
-        try:
-            yield
-        except OverBudget:
-            raise ValueError(
-                f"{name}: the exact arithmetic needs more than budget={budget} units (or its "
-                "CPU time); give some symbols values (subs) or pass a larger budget") from None
 
 
 def _charge_matrix(M: Matrix, power: int) -> None:
