@@ -6,7 +6,7 @@ every real pose of the platform (every *assembly mode*); :func:`leg_lengths` is 
 kinematics, the leg lengths of a given pose.
 
 The planar 3-RPR (three legs of variable length between base and platform points, 2-D
-points; Hunt 1983; Gosselin, Sefrioui & Richard 1994).  With the platform at ``(x, y)``
+points; Hunt 1983; Gosselin, Sefrioui & Richard 1992).  With the platform at ``(x, y)``
 turned by ``phi`` the legs close when ``|p + R(phi) b_i - a_i|**2 = rho_i**2``.  The
 differences of the three closures are linear in ``p``: Cramer's rule gives ``p`` as a
 rational function of ``cos phi``, ``sin phi``, and the first closure a polynomial in
