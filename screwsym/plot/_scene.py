@@ -89,6 +89,10 @@ class Scene:
     sliders: list[np.ndarray] = field(default_factory=list)    # (2, 3) prismatic strokes
     screws: list[tuple[int, np.ndarray, np.ndarray | None, str]] = field(default_factory=list)
     frame: np.ndarray | None = None                            # 4 x 4 tool pose
+    # where a couple (or a translation) of a placed group is drawn: the group's anchor, else
+    # the body's (a chain's flange, a parallel mechanism's platform centre, ...)
+    anchor: np.ndarray | None = None
+    anchors: dict[int, np.ndarray] = field(default_factory=dict)
     # the cylindroid of two screws: the feet, unit directions and pitches of its rulings
     cylindroid: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
 
@@ -98,6 +102,9 @@ class Scene:
         pts += [p for p in self.links] + [p for p in self.solids] + list(self.sliders)
         pts += [j[1][None, :] for j in self.joints]
         pts += [h[None, :] for _, _, h, _ in self.screws if h is not None]
+        pts += [a[None, :] for a in self.anchors.values()]
+        if self.anchor is not None:
+            pts.append(self.anchor[None, :])
         if self.frame is not None:
             pts.append(self.frame[None, :3, 3])
         if self.cylindroid is not None:
@@ -320,6 +327,7 @@ def _chain_maker(chain: Chain, subs: dict, twists: bool, packer: _Packer):
             scene.links.append(np.stack([carry(T, anchors[i]), carry(T, anchors[i + 1])]))
             scene.link_names.append(f"link {i + 1}")
         scene.frame = T @ M
+        scene.anchor = scene.frame[:3, 3]                   # a couple on the tool: at the flange
 
     return make, n
 
@@ -385,6 +393,7 @@ def _parallel_maker(mech: ParallelMechanism, packer: _Packer):
             scene.link_names.append(f"limb {i + 1}")
             firsts.append(pts[0])
             lasts.append(pts[-1])
+        scene.anchor = np.mean(lasts, axis=0) if lasts else None     # the platform's centre
         for name, ring in (("base", firsts), ("platform", lasts)):
             if len(ring) >= 3:
                 scene.solids.append(np.stack(ring))
@@ -411,6 +420,9 @@ def _mechanism_maker(mech: Mechanism, packer: _Packer):
                 pts[k] = np.mean(near, axis=0) if near else np.zeros(3)
         full = [p for p in pts if p is not None]
         _glyphs(parts, full, flat, scene)
+        # a couple: at the centre of the platform's joints (a link named "platform"), else of all
+        on = [full[k] for k, (a, b, _) in enumerate(triples) if "platform" in (a, b)] or full
+        scene.anchor = np.mean(on, axis=0) if on else None
         for link in links:
             ring = [full[k] for k, (a, b, _) in enumerate(triples) if link in (a, b)]
             if len(ring) < 2:
@@ -424,10 +436,42 @@ def _mechanism_maker(mech: Mechanism, packer: _Packer):
     return make
 
 
+def _anchor_points(anchor: Any, names: list[str], packer: _Packer) -> tuple[Any, dict[int, slice]]:
+    """``anchor=`` as (a slice for every group, or None; {group index: slice})."""
+    if anchor is None:
+        return None, {}
+    if isinstance(anchor, Mapping):
+        out = {}
+        for k, p in anchor.items():
+            if k not in names:
+                raise ValueError(f"anchor: {k!r} is not a group of screws= (groups: "
+                                 f"{', '.join(map(repr, names)) or 'none'})")
+            out[names.index(k)] = _anchor_point(p, f"anchor[{k!r}]", packer)
+        return None, out
+    return _anchor_point(anchor, "anchor", packer), {}
+
+
+def _anchor_point(p: Any, name: str, packer: _Packer) -> slice:
+    check_no_strings(p, name)
+    try:
+        m = Matrix(p)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"{name}: expected a point (three coordinates), got {p!r}") from exc
+    if m.shape not in ((3, 1), (1, 3)):
+        raise ValueError(f"{name}: expected a point (three coordinates), got shape {m.shape}")
+    return packer.add(m, name)
+
+
 def scene_maker(obj: Any, *, subs: dict, variables: tuple[Symbol, ...], screws: Any,
-                twists: bool, cylindroid: Any = None
+                twists: bool, cylindroid: Any = None, anchor: Any = None
                 ) -> tuple[Callable[[np.ndarray], Scene], list[ScrewGroup], int]:
-    """``(make, groups, n)``: ``make(values)`` gives the :class:`Scene` at ``n`` values."""
+    """``(make, groups, n)``: ``make(values)`` gives the :class:`Scene` at ``n`` values.
+
+    ``anchor``: where the couples (and translations) of the placed screws are drawn, a point
+    (numbers, or expressions in ``variables``) or a dict of group name -> point; by default
+    the body's own point (a chain's flange, a parallel mechanism's platform centre, a graph
+    mechanism's link ``"platform"``), else the scene's centre.
+    """
     groups_in = check_screw_groups(screws)
     packer = _Packer(variables, subs)
     groups: list[ScrewGroup] = []
@@ -464,6 +508,7 @@ def scene_maker(obj: Any, *, subs: dict, variables: tuple[Symbol, ...], screws: 
         groups.append(ScrewGroup(name, _family(ss)))
         for k, s in enumerate(ss):
             placed.append((g, packer.add(s.matrix, f"screws[{name!r}][{k}]"), f"{name}[{k}]"))
+    every, per_group = _anchor_points(anchor, [g.name for g in groups], packer)
     pair = None
     if cylindroid is not None:
         members = _screws(cylindroid, "cylindroid")
@@ -477,6 +522,9 @@ def scene_maker(obj: Any, *, subs: dict, variables: tuple[Symbol, ...], screws: 
         flat = packer(q)
         scene = Scene()
         body(q, flat, scene)
+        if every is not None:
+            scene.anchor = flat[every]
+        scene.anchors = {g: flat[sl] for g, sl in per_group.items()}
         for g, sl, label in placed:
             scene.screws.append((g, flat[sl], None, label))
         if pair is not None:

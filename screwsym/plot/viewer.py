@@ -44,11 +44,15 @@ What is drawn (the glyphs):
 * **screws** (one legend entry per group, one colour per group; twists in greens
   and blues, wrenches in reds and oranges): the axis as a dotted line, an arrow
   along it whose length is the magnitude (``|S|``, or ``|S0|`` for a couple or a
-  translation; within a group, over all frames, the longest is a third of the scene), a single head for
-  a force or a rotation, a **double head** for a couple or a translation (drawn
-  at the scene's centre, a free vector), and for a finite non-zero pitch ``h`` a
-  helix about the axis, right-handed for ``h > 0``, its advance per radian
+  translation; within a group, over all frames, the longest is a third of the
+  scene), a single head for a force or a rotation, and for a finite non-zero pitch
+  ``h`` a helix about the axis, right-handed for ``h > 0``, its advance per radian
   :func:`~screwsym.plot.figures.helix_advance` (as in the matplotlib figures);
+* **couples and translations** (free vectors, pitch infinite): a **dashed** arrow
+  with a **double head**, no axis, drawn on the body they act on (``anchor=``; by
+  default a chain's flange or the joint whose twist it is, a parallel mechanism's
+  platform centre); a group that has both kinds has two legend entries
+  (``forces`` / ``couples``, ``rotations`` / ``translations``);
 * a **cylindroid** (``cylindroid=(s1, s2)``): the surface of the axes of the
   two-system's screws, coloured by their pitch.
 
@@ -177,19 +181,21 @@ def _magnitude(s6: np.ndarray) -> tuple[bool, float]:
     return False, nS
 
 
-def _screw_glyph(s6: np.ndarray, hint: np.ndarray, size: float, length: float, label: str,
-                 axes: _Lines, shafts: _Lines, heads: _Heads) -> None:
+def _screw_glyph(s6: np.ndarray, hint: np.ndarray, anchor: np.ndarray, size: float,
+                 length: float, label: str, axes: _Lines, shafts: _Lines, heads: _Heads,
+                 free_shafts: _Lines, free_heads: _Heads) -> None:
     free, mag = _magnitude(s6)
     S, S0 = s6[:3], s6[3:]
     head = 0.06 * size
     if mag == 0.0:
         return
     if free:
+        # a free vector (a couple, a translation): drawn at its anchor, with a double head
         u = S0 / np.linalg.norm(S0)
-        tip = hint + u * length
-        shafts.add(np.stack([hint, tip]), f"{label}: pitch inf, |S0| = {mag:.4g}")
-        heads.add(tip, u, head)
-        heads.add(tip - 0.9 * head * u, u, head)       # the double head of a free vector
+        tip = anchor + u * max(length, 1.5 * head)
+        free_shafts.add(np.stack([anchor, tip]), f"{label}: pitch inf, |S0| = {mag:.4g}")
+        free_heads.add(tip, u, head)
+        free_heads.add(tip - 0.9 * head * u, u, head)
         return
     u = S / mag
     h = float(np.dot(S, S0) / mag**2)
@@ -264,18 +270,24 @@ def _trace_data(scene: Scene, groups: list[ScrewGroup], size: float, centre: np.
         out["cylindroid"] = {c: _nulls(grid[:, :, k]) for k, c in enumerate("xyz")}
         out["cylindroid"]["surfacecolor"] = _nulls(np.repeat(pitch[:, None], 2, axis=1))
         counts["cylindroid"] = int(np.sum(np.isfinite(pitch)))
-    parts = [(_Lines(), _Lines(), _Heads()) for _ in groups]
+    parts = [(_Lines(), _Lines(), _Heads(), _Lines(), _Heads()) for _ in groups]
     for g, s6, hint, label in scene.screws:
         free, mag = _magnitude(s6)
-        top = scales[(g, free)]
+        top = scales.get((g, free), 0.0)
         length = 0.33 * size * mag / top if top > 0 else 0.0
-        _screw_glyph(s6, centre if hint is None else hint, size, length, html.escape(label),
-                     *parts[g])
+        near = centre if hint is None else hint
+        anchor = hint if hint is not None else scene.anchors.get(
+            g, centre if scene.anchor is None else scene.anchor)
+        _screw_glyph(s6, near, anchor, size, length, html.escape(label), *parts[g])
     counts["screws"] = len(scene.screws)
-    for g, (axes, shafts, heads) in enumerate(parts):
+    for g, (axes, shafts, heads, free_shafts, free_heads) in enumerate(parts):
         out[f"screw-axes:{g}"], out[f"screw-shafts:{g}"] = axes.data(), shafts.data()
         out[f"screw-heads:{g}"] = heads.data()
+        out[f"screw-couples:{g}"] = free_shafts.data()
+        out[f"screw-couple-heads:{g}"] = free_heads.data()
         counts[f"screws:{g}"] = sum(1 for s in scene.screws if s[0] == g)
+        counts[f"couples:{g}"] = free_shafts.count
+    counts["couples"] = sum(counts[f"couples:{g}"] for g in range(len(groups)))
     return [out[name] for name in layout], counts
 
 
@@ -284,8 +296,14 @@ def _nulls(a: np.ndarray) -> list:
     return [[None if not math.isfinite(x) else float(x) for x in row] for row in a]
 
 
-def _layout_names(first: Scene, groups: list[ScrewGroup]) -> list[str]:
-    """The traces a view has, fixed for all its frames."""
+def _free_groups(scenes: list[Scene]) -> set[int]:
+    """The groups with a couple or a translation in some scene (they get their own traces)."""
+    return {g for sc in scenes for g, s6, _, _ in sc.screws if _magnitude(s6)[0]
+            and _magnitude(s6)[1] > 0}
+
+
+def _layout_names(first: Scene, groups: list[ScrewGroup], free: set[int]) -> list[str]:
+    """The traces a view has, fixed for all its frames (``free``: the groups with couples)."""
     names = ["links"] if first.links else []       # none for screws alone
     if first.sliders:
         names.append("sliders")
@@ -300,6 +318,8 @@ def _layout_names(first: Scene, groups: list[ScrewGroup]) -> list[str]:
         names.append("cylindroid")
     for g in range(len(groups)):
         names += [f"screw-axes:{g}", f"screw-shafts:{g}", f"screw-heads:{g}"]
+        if g in free:
+            names += [f"screw-couples:{g}", f"screw-couple-heads:{g}"]
     return names
 
 
@@ -314,7 +334,12 @@ def _colours(groups: list[ScrewGroup]) -> list[str]:
     return out
 
 
-def _style(name: str, groups: list[ScrewGroup], colours: list[str]) -> dict:
+#: the legend's words for a group's two kinds of glyph, when it has both: (line, free vector)
+_KIND_WORDS = {"twist": ("rotations", "translations"), "wrench": ("forces", "couples"),
+               "screw": ("finite pitch", "infinite pitch")}
+
+
+def _style(name: str, groups: list[ScrewGroup], colours: list[str], free: set[int]) -> dict:
     """The fixed attributes of the trace ``name`` (type, colour, legend)."""
     meta = {"screwsym": name}
     if name == "links":
@@ -351,6 +376,16 @@ def _style(name: str, groups: list[ScrewGroup], colours: list[str]) -> dict:
     part, g = name.split(":")
     group, colour = groups[int(g)], colours[int(g)]
     legend = {"legendgroup": f"g{g}", "name": html.escape(group.name)}
+    if int(g) in free:
+        line_word, free_word = _KIND_WORDS[group.family]
+        legend["name"] = html.escape(f"{group.name}: {line_word}")
+        if part.startswith("screw-couple"):
+            legend = {"legendgroup": f"c{g}", "name": html.escape(
+                f"{group.name}: {free_word} (dashed, double head)")}
+    if part == "screw-couples":
+        return dict(type="scatter3d", mode="lines", meta=meta, showlegend=True,
+                    line={"color": colour, "width": 5, "dash": "dash"}, hoverinfo="text",
+                    **legend)
     if part == "screw-axes":
         return dict(type="scatter3d", mode="lines", meta=meta, showlegend=False,
                     line={"color": colour, "width": 2, "dash": "dot"}, hoverinfo="text", **legend)
@@ -568,9 +603,57 @@ class View:
                 "text/plain": repr(self)}
 
 
+class _Drawer:
+    """The fixed frame of a view (extent, scales, traces) and the data of any configuration.
+
+    Built from sample scenes (a view's frames, a live view's first pose); then :meth:`data`
+    turns any scene into the traces' data with NumPy only.
+    """
+
+    def __init__(self, make: Any, groups: list[ScrewGroup], scenes: list[Scene]) -> None:
+        self.make, self.groups = make, groups
+        feet = [np.cross(s6[:3], s6[3:]) / float(np.dot(s6[:3], s6[:3]))
+                for sc in scenes for _, s6, _, _ in sc.screws if not _magnitude(s6)[0]]
+        pts = np.concatenate([s.points() for s in scenes] + [np.reshape(feet, (-1, 3))])
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        self.centre = (lo + hi) / 2
+        self.size = max(float(np.max(hi - lo)),
+                        1.0 if len(pts) <= len(scenes) + len(feet) else 1e-9)
+        self.scales: dict = {}
+        for sc in scenes:
+            for g, s6, _, _ in sc.screws:
+                free, mag = _magnitude(s6)
+                key = (g, free)
+                self.scales[key] = max(self.scales.get(key, 0.0), mag)
+        self.free = _free_groups(scenes)
+        self.names = _layout_names(scenes[0], groups, self.free)
+        self.colours = _colours(groups)
+
+    def data(self, scene: Scene) -> tuple[list[dict], dict[str, int]]:
+        return _trace_data(scene, self.groups, self.size, self.centre, self.scales, self.names)
+
+    def traces(self, data: list[dict]) -> list[dict]:
+        return [{**_style(name, self.groups, self.colours, self.free), **d}
+                for name, d in zip(self.names, data, strict=True)]
+
+    def layout(self, height: int, title: str | None) -> dict:
+        half = 0.62 * self.size
+        axis = {c: {"range": [float(self.centre[i] - half), float(self.centre[i] + half)],
+                    "title": c} for i, c in enumerate("xyz")}
+        layout: dict = {
+            "height": height, "margin": {"l": 0, "r": 0, "t": 40 if title else 10, "b": 0},
+            "scene": {"xaxis": axis["x"], "yaxis": axis["y"], "zaxis": axis["z"],
+                      "aspectmode": "cube"},
+            "legend": {"itemsizing": "constant"},
+        }
+        if title:
+            layout["title"] = {"text": html.escape(title)}
+        return layout
+
+
 def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, subs: Any = None,
          screws: Any = None, twists: bool = False, cylindroid: Any = None,
-         title: str | None = None, height: int = 560) -> View:
+         anchor: Any = None, title: str | None = None, height: int = 560) -> View:
     r"""A 3-D view of a chain, a parallel mechanism, a graph mechanism or screws.
 
     Parameters
@@ -597,6 +680,15 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     cylindroid : two screws (or a screw system of two), optional
         Their cylindroid as a surface: the axes of ``cos t $_1 + sin t $_2``
         (Ball 1900, ch. 4; Hunt 1978, §12.2), coloured by pitch.
+    anchor : point, or dict of group name -> point, optional
+        Where the couples (and translations) of ``screws`` are drawn: a free
+        vector has no axis, so it is placed on the body it acts on.  Three
+        numbers or expressions in ``variables`` (recomputed at each frame).
+        By default a chain's flange, a parallel mechanism's platform centre
+        (the mean of its limbs' last joints), a graph mechanism's link
+        ``"platform"`` (the mean of its joints; all the joints if it has none),
+        the scene's centre for screws alone.  A chain's joint twists are drawn
+        at their joints.
     title : str, optional
     height : int
         The figure's height in pixels (default 560).
@@ -633,7 +725,7 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     if isinstance(height, bool) or not isinstance(height, int) or height < 100:
         raise ValueError(f"height: expected a whole number of pixels >= 100, got {height!r}")
     make, groups, n = scene_maker(obj, subs=subs, variables=variables, screws=screws,
-                                  twists=twists, cylindroid=cylindroid)
+                                  twists=twists, cylindroid=cylindroid, anchor=anchor)
     if path is not None and q is not None:
         raise ValueError("q, path: give one configuration (q) or a path, not both")
     if path is not None:
@@ -641,39 +733,15 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     else:
         rows = _check_values(np.zeros(n) if q is None else q, "q", n, rows=False)[None, :]
     scenes = [make(r) for r in rows]
-    feet = [np.cross(s6[:3], s6[3:]) / float(np.dot(s6[:3], s6[:3]))
-            for sc in scenes for _, s6, _, _ in sc.screws if not _magnitude(s6)[0]]
-    pts = np.concatenate([s.points() for s in scenes] + [np.reshape(feet, (-1, 3))])
-    lo, hi = pts.min(axis=0), pts.max(axis=0)
-    centre = (lo + hi) / 2
-    size = max(float(np.max(hi - lo)), 1.0 if len(pts) <= len(scenes) + len(feet) else 1e-9)
-    scales: dict = {}
-    for sc in scenes:
-        for g, s6, _, _ in sc.screws:
-            free, mag = _magnitude(s6)
-            key = (g, free)
-            scales[key] = max(scales.get(key, 0.0), mag)
-    layout_names = _layout_names(scenes[0], groups)
-    colours = _colours(groups)
+    drawer = _Drawer(make, groups, scenes)
     datas, counts = [], {}
     for k, sc in enumerate(scenes):
-        data, c = _trace_data(sc, groups, size, centre, scales, layout_names)
+        data, c = drawer.data(sc)
         datas.append(data)
         if k == 0:
             counts = c
-    traces = [{**_style(name, groups, colours), **d}
-              for name, d in zip(layout_names, datas[0], strict=True)]
-    half = 0.62 * size
-    axis = {c: {"range": [float(centre[i] - half), float(centre[i] + half)], "title": c}
-            for i, c in enumerate("xyz")}
-    layout: dict = {
-        "height": height, "margin": {"l": 0, "r": 0, "t": 40 if title else 10, "b": 0},
-        "scene": {"xaxis": axis["x"], "yaxis": axis["y"], "zaxis": axis["z"],
-                  "aspectmode": "cube"},
-        "legend": {"itemsizing": "constant"},
-    }
-    if title:
-        layout["title"] = {"text": html.escape(title)}
+    traces = drawer.traces(datas[0])
+    layout = drawer.layout(height, title)
     spec = {"data": traces, "layout": layout}
     if path is not None:
         names = [str(k) for k in range(len(rows))]

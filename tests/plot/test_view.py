@@ -133,9 +133,18 @@ def test_joint_kinds_and_a_couple_and_a_force():
     assert (k["joint:revolute"], k["joint:prismatic"], k["joint:helical"]) == (1, 1, 1)
     assert k["sliders"] == 1 and k["screws"] == 2
     fig = v.figure
-    # the force has one head, the couple two (a free vector); only the force has an axis
-    assert len(trace(fig, "screw-heads:0").x) == 3
+    # the force has one head, the couple two (a free vector), in traces of their own and
+    # legend entries of their own; only the force has an axis
+    assert len(trace(fig, "screw-heads:0").x) == 1
+    assert len(trace(fig, "screw-couple-heads:0").x) == 2
     assert len(segments(trace(fig, "screw-axes:0"))) == 1
+    assert trace(fig, "screw-shafts:0").name == "load: forces"
+    couples = trace(fig, "screw-couples:0")
+    assert couples.name.startswith("load: couples") and couples.line.dash == "dash"
+    assert k["couples"] == 1
+    # the couple is drawn on the body it acts on: by default the chain's flange
+    T = chain.forward([Rational(1, 5), Rational(1, 2), Rational(3, 10)]).matrix
+    assert np.allclose(segments(couples)[0][0], [float(x) for x in T[:3, 3]], atol=1e-12)
     # the prismatic stroke is q2 = 0.5 long, along the x-axis turned by q1
     stroke = segments(trace(fig, "sliders"))[0]
     assert np.allclose(stroke[1] - stroke[0], 0.5 * np.array([math.cos(0.2), math.sin(0.2), 0]))
@@ -352,3 +361,48 @@ def test_the_cylindroid_of_two_screws():
         assert np.allclose(z, (hv - 1) * np.sin(t) * np.cos(t), atol=1e-12)
     with pytest.raises(ValueError, match="cylindroid: expected two screws"):
         view(s1, cylindroid=[s1, s2, s1])
+
+
+def _planar_rpr():
+    z = [0, 0, 1]
+    base, platform = [(3, -1), (-1, 3), (-2, -3)], [(1, 0), (0, 1), (-1, -1)]
+    return ParallelMechanism(*(Limb(R([a[0], a[1], 0], z), P([b[0] - a[0], b[1] - a[1], 0]),
+                                    R([b[0], b[1], 0], z), actuated=1)
+                               for a, b in zip(base, platform, strict=True)))
+
+
+def test_couples_are_drawn_at_the_platform_centre_or_the_given_anchor():
+    rpr = _planar_rpr()
+    wrenches = {"actuation": rpr.actuation_wrenches(), "constraint": rpr.constraints.basis()}
+    v = view(rpr, screws=wrenches)
+    fig = v.figure
+    # the planar mechanism's constraints: a force along z and two couples (Hunt 1978, §12.4)
+    assert v.kinds["couples"] == 2 and v.kinds["couples:1"] == 2
+    starts = [s[0] for s in segments(trace(fig, "screw-couples:1"))]
+    centre = np.mean([[1, 0, 0], [0, 1, 0], [-1, -1, 0]], axis=0)      # the platform's joints
+    assert all(np.allclose(p, centre, atol=1e-12) for p in starts)
+    # the check fails for a view whose couples are elsewhere
+    moved = view(rpr, screws=wrenches, anchor={"constraint": [5, 5, 1]})
+    starts = [s[0] for s in segments(trace(moved.figure, "screw-couples:1"))]
+    assert all(np.allclose(p, [5, 5, 1]) for p in starts)
+    assert not np.allclose(starts[0], centre)
+    # the actuation forces keep one legend entry (no couples in that group)
+    assert trace(fig, "screw-shafts:0").name == "actuation"
+    assert not [t for t in fig.data if (t.meta or {}).get("screwsym") == "screw-couples:0"]
+
+
+def test_a_symbolic_anchor_follows_the_path():
+    t = symbols("t", real=True)
+    v = view([Wrench([0, 0, 0], [0, 0, 1])], path=[[0], [1]], variables=[t], anchor=[t, 0, 0])
+    first = segments(trace(v.figure, "screw-couples:0"))[0][0]
+    last = v.figure.frames[1].data[[t_.meta["screwsym"] for t_ in v.figure.data]
+                                   .index("screw-couples:0")]
+    assert np.allclose(first, 0) and np.isclose(last.x[0], 1.0)
+
+
+@pytest.mark.parametrize("anchor, error", [
+    ([1, 2], ValueError), ("origin", TypeError), ({"nope": [0, 0, 0]}, ValueError),
+    ([symbols("a"), 0, 0], ValueError)])
+def test_bad_anchors_are_refused(anchor, error):
+    with pytest.raises(error, match="anchor"):
+        view([Wrench([0, 0, 0], [0, 0, 1])], anchor=anchor)
