@@ -20,7 +20,7 @@ from .figures import (
     plot_twist,
     plot_wrench,
 )
-from .viewer import View, view
+from .viewer import Live, View, live, view
 
 __all__ = [
     "plot",
@@ -35,4 +35,6 @@ __all__ = [
     "helix_advance",
     "view",
     "View",
+    "live",
+    "Live",
 ]

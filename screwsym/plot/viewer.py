@@ -76,6 +76,7 @@ For example, the UR5 with its joint twists:
 from __future__ import annotations
 
 import hashlib
+import importlib
 import html
 import json
 import math
@@ -89,10 +90,11 @@ from typing import Any
 
 import numpy as np
 
+from ..motion.chain import Chain
 from ._scene import JOINT_KINDS, Scene, ScrewGroup, check_subs, check_variables, finite, scene_maker
 from .figures import helix_advance
 
-__all__ = ["View", "view"]
+__all__ = ["Live", "View", "live", "view"]
 
 _TWIST_COLOURS = ("#2ca02c", "#1f77b4", "#17becf", "#9467bd")
 _WRENCH_COLOURS = ("#d62728", "#ff7f0e", "#8c564b", "#e377c2")
@@ -778,3 +780,139 @@ def _labels(rows: np.ndarray, variables: tuple, obj: Any) -> list[str]:
         names = [f"q{i + 1}" for i in range(rows.shape[1])]
     # + 0.0: no "-0" in a label
     return [", ".join(f"{nm}={x + 0.0:.3g}" for nm, x in zip(names, r, strict=True)) for r in rows]
+
+
+class Live:
+    """A view to move in a live kernel: :meth:`redraw` recomputes every trace from numbers.
+
+    Made by :func:`live`.  ``redraw(values)`` returns the data of the view's traces
+    (``x``, ``y``, ``z``, ... lists) at ``values`` (the controls' values), through the
+    lambdified functions :func:`view` uses for its frames: no SymPy in the loop.
+    :meth:`figure` is the view at the first values; :meth:`widget` puts it in a plotly
+    ``FigureWidget`` with one ipywidgets slider per control (needs ipywidgets: an
+    ``ImportError`` saying so without it).
+    """
+
+    def __init__(self, drawer: _Drawer, controls: list[tuple[str, float, float, float]],
+                 solve: Any, n: int, height: int, title: str | None) -> None:
+        self._drawer, self.controls, self._solve, self._n = drawer, tuple(controls), solve, n
+        self._height, self._title = height, title
+
+    def __repr__(self) -> str:
+        names = ", ".join(c[0] for c in self.controls)
+        return f"<Live view: {len(self._drawer.names)} traces, controls {names}>"
+
+    def configuration(self, values: Any) -> np.ndarray:
+        """The mechanism's values (``q`` of :func:`view`) at the controls' ``values``."""
+        v = _check_values(values, "values", len(self.controls), rows=False)
+        if self._solve is None:
+            return v
+        return _check_values(self._solve(v), "solve(values)", self._n, rows=False)
+
+    def redraw(self, values: Any) -> list[dict]:
+        """The data of every trace at the controls' ``values`` (floats; no SymPy)."""
+        return self._drawer.data(self._drawer.make(self.configuration(values)))[0]
+
+    def figure(self) -> Any:
+        """A plotly ``Figure`` at the controls' first values."""
+        data = self.redraw([c[3] for c in self.controls])
+        return _plotly().Figure({"data": self._drawer.traces(data),
+                                 "layout": self._drawer.layout(self._height, self._title)})
+
+    def widget(self) -> Any:
+        """A plotly ``FigureWidget`` and one slider per control, redrawn as they move."""
+        try:
+            ipywidgets = importlib.import_module("ipywidgets")
+        except ImportError as exc:
+            raise ImportError("Live.widget needs ipywidgets (pip install ipywidgets); without "
+                              "it, view(..., path=...) draws precomputed frames with a slider"
+                              ) from exc
+        go = _plotly()
+        fig = go.FigureWidget(self.figure())
+        sliders = [ipywidgets.FloatSlider(value=start, min=lo, max=hi, step=(hi - lo) / 200,
+                                          description=name, continuous_update=True)
+                   for name, lo, hi, start in self.controls]
+
+        def update(_: Any = None) -> None:
+            try:
+                data = self.redraw([s.value for s in sliders])
+            except ValueError:
+                return                              # out of reach: keep the last picture
+            with fig.batch_update():
+                for trace, d in zip(fig.data, data, strict=True):
+                    trace.update(d)
+
+        for s in sliders:
+            s.observe(update, names="value")
+        return ipywidgets.VBox([fig, *sliders])
+
+
+def live(obj: Any, q: Any = None, *, variables: Any = None, subs: Any = None,
+         screws: Any = None, twists: bool = False, anchor: Any = None,
+         controls: Any = None, solve: Any = None, extent: Any = None,
+         title: str | None = None, height: int = 560) -> Live:
+    r"""A view to move with sliders in a live kernel, redrawn by generated numeric functions.
+
+    The arguments are :func:`view`'s; the SymPy work is done here, once.  ``controls``:
+    one ``(name, low, high)`` per slider (default: one per joint of a chain, in
+    ``[-pi, pi]``, or one per symbol of ``variables``, ``q +- 1``); ``solve``: a function
+    from the controls' values to the mechanism's values (e.g. a Delta's inverse
+    kinematics, :meth:`screwsym.plot.models.Delta.configurations`), by default the
+    identity; ``extent``: configurations (rows) that fix the scene's extent and the
+    screws' scale (default: ``q`` alone).  A group of screws draws its couples only if
+    one appears at ``q`` or in ``extent``.
+
+    >>> from screwsym.motion.chain import ur5
+    >>> lv = live(ur5(), [0, -0.5, 1, 0, 0.5, 0], twists=True)
+    >>> lv
+    <Live view: 7 traces, controls q1, q2, q3, q4, q5, q6>
+    >>> data = lv.redraw([0.1, -0.5, 1, 0, 0.5, 0])       # NumPy only
+    >>> len(data), len(data[-1]["x"])                      # the joint twists' six heads
+    (7, 6)
+    """
+    subs = check_subs(subs)
+    variables = check_variables(variables)
+    if not isinstance(twists, bool):
+        raise TypeError(f"twists: expected True or False, got {twists!r}")
+    if title is not None and not isinstance(title, str):
+        raise TypeError(f"title: expected a string, got {type(title).__name__}")
+    if isinstance(height, bool) or not isinstance(height, int) or height < 100:
+        raise ValueError(f"height: expected a whole number of pixels >= 100, got {height!r}")
+    if solve is not None and not callable(solve):
+        raise TypeError(f"solve: expected a function of the controls' values, got {solve!r}")
+    make, groups, n = scene_maker(obj, subs=subs, variables=variables, screws=screws,
+                                  twists=twists, cylindroid=None, anchor=anchor)
+    if controls is None:
+        if solve is not None:
+            raise ValueError("controls: give the controls that solve= takes")
+        q0 = _check_values(np.zeros(n) if q is None else q, "q", n, rows=False)
+        names = ([str(v) for v in variables] if variables
+                 else [f"q{i + 1}" for i in range(n)])
+        if isinstance(obj, Chain):
+            controls = [(nm, -math.pi, math.pi) for nm in names]
+        else:
+            controls = [(nm, float(x) - 1.0, float(x) + 1.0) for nm, x in zip(names, q0,
+                                                                              strict=True)]
+        start = q0
+    else:
+        if isinstance(controls, (str, bytes)) or not isinstance(controls, (list, tuple)):
+            raise TypeError("controls: expected a list of (name, low, high)")
+        for k, c in enumerate(controls):
+            if (not isinstance(c, (list, tuple)) or len(c) != 3 or not isinstance(c[0], str)
+                    or not float(c[1]) < float(c[2])):
+                raise ValueError(f"controls[{k}]: expected (name, low, high) with low < high, "
+                                 f"got {c!r}")
+        start = (np.array([(float(c[1]) + float(c[2])) / 2 for c in controls]) if q is None
+                 else _check_values(q, "q", len(controls), rows=False))
+        if not all(c[1] <= x <= c[2] for c, x in zip(controls, start, strict=True)):
+            raise ValueError(f"q: expected values within the controls' ranges, got {start}")
+    ctl = [(str(c[0]), float(c[1]), float(c[2]), float(x))
+           for c, x in zip(controls, start, strict=True)]
+    first = start if solve is None else _check_values(solve(start), "solve(values)", n, rows=False)
+    if solve is None and len(first) != n:
+        raise ValueError(f"controls: expected {n} controls (one per value), got {len(first)}")
+    rows = [first]
+    if extent is not None:
+        rows += list(_check_values(extent, "extent", n, rows=True))
+    drawer = _Drawer(make, groups, [make(r) for r in rows])
+    return Live(drawer, ctl, solve, n, height, title)
