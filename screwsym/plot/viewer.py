@@ -76,8 +76,8 @@ For example, the UR5 with its joint twists:
 from __future__ import annotations
 
 import hashlib
-import importlib
 import html
+import importlib
 import json
 import math
 import os
