@@ -27,6 +27,8 @@ image = pytest.importorskip("matplotlib.image")
 from screwsym.motion.chain import ur5  # noqa: E402
 from screwsym.plot import view  # noqa: E402
 from screwsym.plot.viewer import _ERROR_HOOK  # noqa: E402
+from screwsym.systems.joints import P, R  # noqa: E402
+from screwsym.systems.parallel import Limb, ParallelMechanism  # noqa: E402
 
 
 def chromium() -> str | None:
@@ -138,6 +140,32 @@ def test_the_exported_view_draws_in_headless_chromium(tmp_path):
     assert attribute(dom, "data-screwsym-errors") == "0"
     assert console_errors(log) == []
     assert drew(rgb), "the screenshot shows no drawn twist"
+
+
+@pytest.mark.slow
+def test_the_moving_delta_and_the_couples_draw_in_headless_chromium(tmp_path):
+    from screwsym.plot.models import delta
+
+    d = delta()
+    s = np.linspace(0, 2 * np.pi, 12)
+    circle = np.column_stack([0.5 * np.cos(s), 0.5 * np.sin(s), np.full(12, -2.8)])
+    z = [0, 0, 1]
+    base, platform = [(3, -1), (-1, 3), (-2, -3)], [(1, 0), (0, 1), (-1, -1)]
+    rpr = ParallelMechanism(*(Limb(R([a[0], a[1], 0], z), P([b[0] - a[0], b[1] - a[1], 0]),
+                                   R([b[0], b[1], 0], z), actuated=1)
+                              for a, b in zip(base, platform, strict=True)))
+    views = {"delta": view(d.mechanism, path=d.configurations(circle), variables=d.variables),
+             "rpr": view(rpr, screws={"constraint": rpr.constraints.basis()})}
+    assert views["rpr"].kinds["couples"] == 2
+    for name, v in views.items():
+        page = v.to_html(tmp_path / f"{name}.html")
+        dom, rgb, log = open_in_chromium(page, tmp_path)
+        n = len(v.figure.data)
+        assert attribute(dom, "data-screwsym-traces") == str(n), name
+        assert int(attribute(dom, "data-screwsym-objects") or -1) >= n, name
+        assert attribute(dom, "data-screwsym-errors") == "0", name
+        assert console_errors(log) == [], name
+        assert float(rgb.std()) > 0.02, name
 
 
 @pytest.mark.slow
