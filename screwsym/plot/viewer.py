@@ -60,6 +60,15 @@ Numbers: every SymPy step (substitution, exponentials, checks) is done once by
 :func:`view`; each configuration is then lambdified expressions and NumPy (see
 :mod:`screwsym.plot._scene`).  plotly is optional: ``pip install -e ".[view]"``.
 
+**In a live kernel**, :func:`live` takes the same arguments and returns a :class:`Live`:
+``Live.redraw(values)`` recomputes every trace from numbers (about 1.5 ms for the UR5 with its
+joint twists, 3 ms for the Delta by its platform: ``benchmarks/bench_view.py``), and
+``Live.widget()`` shows a plotly ``FigureWidget`` with one slider per joint (or per control,
+e.g. a Delta's platform position with ``solve=`` its inverse kinematics,
+:mod:`screwsym.plot.models`).  The widget needs ipywidgets, which the ``view`` extra does not
+install (``pip install ipywidgets``); without it ``widget()`` says so, and a path of
+precomputed frames (``view(..., path=...)``) is the offline equivalent.
+
 For example, the UR5 with its joint twists:
 
 >>> from screwsym.motion.chain import ur5
