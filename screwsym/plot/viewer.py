@@ -65,8 +65,9 @@ Numbers: every SymPy step (substitution, exponentials, checks) is done once by
 joint twists, 3 ms for the Delta by its platform: ``benchmarks/bench_view.py``), and
 ``Live.widget()`` shows a plotly ``FigureWidget`` with one slider per joint (or per control,
 e.g. a Delta's platform position with ``solve=`` its inverse kinematics,
-:mod:`screwsym.plot.models`).  The widget needs ipywidgets, which the ``view`` extra does not
-install (``pip install ipywidgets``); without it ``widget()`` says so, and a path of
+:mod:`screwsym.plot.models`).  The widget needs ipywidgets and anywidget (plotly's
+``FigureWidget``), which the ``view`` extra does not install (``pip install ipywidgets
+anywidget``); without them ``widget()`` says so, and a path of
 precomputed frames (``view(..., path=...)``) is the offline equivalent.
 
 For example, the UR5 with its joint twists:
@@ -798,8 +799,8 @@ class Live:
     (``x``, ``y``, ``z``, ... lists) at ``values`` (the controls' values), through the
     lambdified functions :func:`view` uses for its frames: no SymPy in the loop.
     :meth:`figure` is the view at the first values; :meth:`widget` puts it in a plotly
-    ``FigureWidget`` with one ipywidgets slider per control (needs ipywidgets: an
-    ``ImportError`` saying so without it).
+    ``FigureWidget`` with one ipywidgets slider per control (needs ipywidgets and anywidget:
+    an ``ImportError`` saying so without them).
     """
 
     def __init__(self, drawer: _Drawer, controls: list[tuple[str, float, float, float]],
@@ -832,10 +833,11 @@ class Live:
         """A plotly ``FigureWidget`` and one slider per control, redrawn as they move."""
         try:
             ipywidgets = importlib.import_module("ipywidgets")
+            importlib.import_module("anywidget")        # plotly's FigureWidget (plotly >= 6)
         except ImportError as exc:
-            raise ImportError("Live.widget needs ipywidgets (pip install ipywidgets); without "
-                              "it, view(..., path=...) draws precomputed frames with a slider"
-                              ) from exc
+            raise ImportError("Live.widget needs ipywidgets and anywidget (pip install "
+                              "ipywidgets anywidget); without them, view(..., path=...) draws "
+                              "precomputed frames with a slider") from exc
         go = _plotly()
         fig = go.FigureWidget(self.figure())
         sliders = [ipywidgets.FloatSlider(value=start, min=lo, max=hi, step=(hi - lo) / 200,

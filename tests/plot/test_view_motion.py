@@ -139,6 +139,7 @@ def test_live_refuses_bad_arguments(kwargs, error):
 def test_live_widget_needs_ipywidgets():
     lv = live(ur5(), twists=True)
     try:
+        import anywidget  # noqa: F401
         import ipywidgets  # noqa: F401
     except ImportError:
         with pytest.raises(ImportError, match="ipywidgets"):
