@@ -72,6 +72,7 @@ from __future__ import annotations
 
 import random
 from fractions import Fraction
+from math import gcd
 from typing import Any, NamedTuple
 
 from sympy import ImmutableMatrix, Integer, Rational
@@ -153,18 +154,31 @@ def motion(name: str) -> Motion:
 
 # ------------------------------------------------------------------ exact integer linear algebra
 def _rank(rows: list) -> int:
-    """The rank of a list of integer (or Fraction) vectors, by elimination over Q (exact)."""
-    m = [list(map(Fraction, r)) for r in rows]
+    """The rank of a list of rational vectors, by fraction-free elimination over Z (exact)."""
+    m = []
+    for r in rows:
+        if all(type(x) is int for x in r):
+            m.append(list(r))
+            continue
+        den = 1
+        for x in r:
+            den = den * Fraction(x).denominator // gcd(den, Fraction(x).denominator)
+        m.append([int(Fraction(x) * den) for x in r])
     rank, cols = 0, len(m[0]) if m else 0
     for c in range(cols):
         piv = next((i for i in range(rank, len(m)) if m[i][c]), None)
         if piv is None:
             continue
         m[rank], m[piv] = m[piv], m[rank]
+        p = m[rank]
         for i in range(rank + 1, len(m)):
-            if m[i][c]:
-                f = m[i][c] / m[rank][c]
-                m[i] = [a - f * b for a, b in zip(m[i], m[rank], strict=True)]
+            a = m[i][c]
+            if a:
+                row = [p[c] * x - a * y for x, y in zip(m[i], p, strict=True)]
+                g = 0
+                for x in row:
+                    g = gcd(g, x)
+                m[i] = [x // g for x in row] if g > 1 else row
         rank += 1
     return rank
 
@@ -351,8 +365,8 @@ def _geometry(seq: tuple, mo: Motion, seed: int) -> list:
             if any(v):
                 return v
 
-    out = []
-    last = None
+    out: list[tuple[str, tuple, Any]] = []
+    last: Any = None
     for kind, d, p in seq:
         if d not in dirs:
             dirs[d] = vec()
@@ -441,7 +455,7 @@ class LimbType(NamedTuple):
         revolute and a prismatic joint along one direction.
 
         >>> [t.letters for t in limbs(motion("3T"), max_joints=4)][:3]
-        ['CRR', 'PRRR', 'RCR']
+        ['PPP', 'CPR', 'CRR']
         """
         out, k, j = [], 0, self.joints
         while k < len(j):
@@ -504,7 +518,7 @@ class LimbType(NamedTuple):
         """A generic instance as a :class:`~screwsym.systems.parallel.Limb`: integer directions
         and points drawn from ``random.Random(seed)``, the relations kept.
 
-        >>> t = limbs(motion("3T"), max_joints=4)[1]
+        >>> t = [t for t in limbs(motion("3T"), max_joints=4) if t.letters == "PRRR"][0]
         >>> leg = t.instance(seed=3)
         >>> t.name, leg.freedom, leg.constraints.rank
         ('PRRR (2∥3∥4)', 4, 2)
@@ -520,7 +534,9 @@ class LimbType(NamedTuple):
                   for k, u, p in geom]
         return Limb(*joints, actuated=actuated)
 
-    build = instance
+    def build(self, seed: int = 0, actuated: Any = None) -> Limb:
+        """The same as :meth:`instance`."""
+        return self.instance(seed, actuated)
 
 
 def _limb_rows(limb: Limb) -> list:
@@ -674,7 +690,7 @@ def _placement(mo: Motion, rnd: random.Random) -> tuple[ImmutableMatrix, Immutab
 
 
 def _placed(leg: Limb, Rm: ImmutableMatrix, shift: ImmutableMatrix, actuated: Any) -> Limb:
-    joints = []
+    joints: list[Prismatic | Revolute] = []
     for j in leg.joints:
         if isinstance(j, Prismatic):
             joints.append(Prismatic(Rm * j.args[0]))
