@@ -12,7 +12,9 @@ motion iff the limbs' constraints together span ``W_M``.
 What is enumerated (:func:`limbs`) is a finite grammar of *limb types*: a
 sequence of ``kinds`` (R and P joints, at most ``max_joints``) with, for each
 joint, an axis direction label (joints with one label are parallel; a label may
-be one of the motion's own directions, the ``z`` of 3T1R) and, for each
+be one of the motion's own directions, the ``z`` of 3T1R; a prismatic joint's may
+be normal to it, "⊥z", kept only where the type with a generic direction there is
+not valid: the in-plane slides of planar chains) and, for each
 revolute, where its axis passes: anywhere, through the motion's centre (3R), or
 through the previous revolute's point (two such axes make a U joint).  Two types
 are the same when a relabelling, the reversal of the limb (the same twists read
@@ -47,7 +49,8 @@ same in every limb, the one nearest the base that works) for which the
 Jacobian of :func:`~screwsym.systems.actuation.jacobian` is invertible at the
 instance (no actuation singularity there).
 
-What is not in the grammar: perpendicular and other angle relations, helical
+What is not in the grammar: perpendicular relations between revolute axes and other
+angles, lines through two joints' points (a P along the line of two U centres), helical
 joints, parallelograms and other closed sub-chains (the Delta's), virtual
 chains for motions that are not subgroups (2R1T, 1T2R, 3T2R); see the notes of
 the functions.
@@ -239,8 +242,13 @@ def _relabel(seq: tuple, special: int) -> tuple:
     """The direction labels renumbered in order of first appearance (labels below ``special``,
     the motion's own directions, kept)."""
     names: dict = {}
+    perp: dict = {}
     out = []
     for kind, d, p in seq:
+        if d < 0:  # normal to the motion's first direction: numbered -1, -2, ...
+            perp.setdefault(d, -1 - len(perp))
+            out.append((kind, perp[d], p))
+            continue
         if d >= special and d not in names:
             names[d] = special + len(names)
         out.append((kind, d if d < special else names[d], p))
@@ -325,20 +333,23 @@ def _spherical_ok(seq: tuple, special: int) -> bool:
 
 def _candidates(kinds: tuple, n: int, special: int, center: bool):
     """Every joint sequence of length ``n`` of the grammar, canonical labels only."""
-    def seqs(prefix: tuple, used: int):
+    def seqs(prefix: tuple, used: int, normal: int):
         k = len(prefix)
         if k == n:
             if _spherical_ok(prefix, special):
                 yield prefix
             return
         for kind in kinds:
-            for d in range(special + used + 1):
+            # a prismatic joint may also be normal to the motion's direction (in the plane
+            # of a planar motion): labels -1, -2, ...
+            extra = range(-1, -normal - 2, -1) if kind == "P" and special else ()
+            for d in [*range(special + used + 1), *extra]:
                 new = used + (d == special + used)
                 if kind == "P":
                     # two prismatic joints along one direction: one passive freedom
                     if any(j[0] == "P" and j[1] == d for j in prefix):
                         continue
-                    yield from seqs(prefix + (("P", d, "-"),), new)
+                    yield from seqs(prefix + (("P", d, "-"),), new, normal + (d == -normal - 1))
                     continue
                 points = ["g"] + (["c"] if center else [])
                 last_r = prefix[-1] if prefix and prefix[-1][0] == "R" else None
@@ -349,8 +360,8 @@ def _candidates(kinds: tuple, n: int, special: int, center: bool):
                         continue  # the same axis twice
                     if p == "c" and any(j[0] == "R" and j[1] == d and j[2] == "c" for j in prefix):
                         continue  # the same axis twice
-                    yield from seqs(prefix + (("R", d, p),), new)
-    yield from seqs((), 0)
+                    yield from seqs(prefix + (("R", d, p),), new, normal)
+    yield from seqs((), 0, 0)
 
 
 # ------------------------------------------------------------------ a generic instance
@@ -369,7 +380,9 @@ def _geometry(seq: tuple, mo: Motion, seed: int) -> list:
     last: Any = None
     for kind, d, p in seq:
         if d not in dirs:
-            dirs[d] = vec()
+            dirs[d] = _cross(mo.directions[0], vec()) if d < 0 else vec()
+            while not any(dirs[d]):  # pragma: no cover - a draw along the direction itself
+                dirs[d] = _cross(mo.directions[0], vec())
         u = dirs[d]
         if kind == "P":
             out.append(("P", u, None))
@@ -493,8 +506,12 @@ class LimbType(NamedTuple):
         for i, (_, d, _) in enumerate(self.joints, 1):
             groups.setdefault(d, []).append(str(i))
         parts = []
-        for d, idx in sorted(groups.items()):
-            if d < special:
+        for d, idx in sorted(groups.items(), key=lambda g: (g[0] >= special, int(g[1][0]))):
+            if d < 0:
+                axis = self.motion.directions[0]
+                label = names[axis.index(1)] if sorted(axis) == [0, 0, 1] else str(axis)
+                parts.append("∥".join(idx) + f"⊥{label}")
+            elif d < special:
                 axis = self.motion.directions[d]
                 label = names[axis.index(1)] if sorted(axis) == [0, 0, 1] else str(axis)
                 parts.append("∥".join(idx) + f"∥{label}")
@@ -633,13 +650,24 @@ def limbs(mo: Motion, kinds: tuple = ("R", "P"), max_joints: int = 5, min_joints
                          for s in (1, 2, 3)) >= 2
                 if ok:
                     found[key] = LimbType(mo, key)
+        # a prismatic joint normal to the motion's direction is kept only where it is needed:
+        # the type with that relation dropped (a generic direction) is not found
+        valid = set(found)
+        for key in [k for k in found if any(j[1] < 0 for j in k)]:
+            free = 1 + max([special - 1, *(j[1] for j in key)])
+            for d in {j[1] for j in key if j[1] < 0}:
+                loose = tuple((k, free if e == d else e, q) for k, e, q in key)
+                if _canonical(loose, special) in valid:
+                    del found[key]
+                    break
         out = []
         for t in found.values():
             charge(20_000)
             leg = t.instance(seed)
             T = leg.twists
             # the library's exact screw systems agree: independent twists containing T_M
-            assert T.rank == t.freedom and all(T.contains(x) for x in mo.twists)
+            if T.rank != t.freedom or not all(T.contains(x) for x in mo.twists):
+                raise AssertionError(f"limbs: {t.name}: the exact screw systems disagree")  # pragma: no cover
             out.append(t)
     return tuple(sorted(out, key=lambda t: (t.freedom, t.name)))
 

@@ -222,6 +222,24 @@ def test_3t1r_uru_and_rrrrr_families():
     assert all(reaches(leg, T, mo) == (True, True) for leg in d.mechanism.limbs)
 
 
+# ------------------------------------------------------------ 2T1R
+def test_2t1r_the_planar_chains():
+    # the seven planar chains of three joints of the planar 3-dof parallel manipulators
+    # (Merlet, Parallel Robots, 2nd ed. 2006, §2.2.1, Fig. 2.6: RRR, RPR, RRP, PRR, PPR, PRP,
+    # RPP): five up to reversal (RRP~PRR, RPP~PPR), each prismatic joint in the plane (⊥z)
+    mo = motion("2T1R")
+    found = limbs(mo, max_joints=3)
+    assert names(found) == {"RRR (1∥2∥3∥z)", "PRR (1⊥z, 2∥3∥z)", "RPR (1∥3∥z, 2⊥z)",
+                            "PPR (1⊥z, 2⊥z, 3∥z)", "PRP (1⊥z, 2∥z, 3⊥z)"}
+    designs = mechanisms(mo, types=found)
+    assert len(designs) == 5
+    assert all((d.mobility.mobility, d.mobility.motion) == (3, "2T1R") for d in designs)
+    assert all(d.actuated is not None for d in designs)
+    # a prismatic joint out of the plane is refused
+    tilted = Limb(R([0, 0, 0], [0, 0, 1]), P([1, 2, 1]), R([3, 1, 0], [0, 0, 1]))
+    assert refusals(tilted, mo) == ("limb: its twists do not contain the wanted motion",)
+
+
 def test_budget_stops_the_enumeration():
     with pytest.raises(ValueError, match="limbs: the enumeration passed its budget of 10"):
         limbs(motion("3T"), max_joints=4, budget=10)
