@@ -85,8 +85,10 @@ from ..algebra.budget import BUDGET, bounded, charge
 from ..core.twist import Twist
 from .actuation import jacobian
 from .joints import Prismatic, Revolute
+from .linkage import Mechanism
 from .parallel import Limb, Mobility, ParallelMechanism
 from .screw_system import ScrewSystem
+from .second_order import SecondOrder
 
 __all__ = ["Motion", "motion", "LimbType", "limbs", "Design", "mechanisms", "refusals"]
 
@@ -571,7 +573,8 @@ def refusals(obj: Limb | ParallelMechanism, mo: Motion) -> tuple[str, ...]:
 
     A limb: the checks 1-3 of the module docstring.  A mechanism: each limb's, then the
     exact analysis of :meth:`ParallelMechanism.mobility` (the mobility, the motion type, the
-    platform's twists equal to ``T_M``, no passive freedom).
+    platform's twists equal to ``T_M``, no passive freedom), then, if all of those pass,
+    its second order (every motion extends, one branch).
 
     >>> from screwsym.systems.joints import P, R
     >>> z = [0, 0, 1]
@@ -593,11 +596,21 @@ def refusals(obj: Limb | ParallelMechanism, mo: Motion) -> tuple[str, ...]:
            for w in refusals(leg, mo)]
     mob = obj.mobility()
     out += _mechanism_refusals(mob, mo)
+    if not out:
+        out += _second_order_refusals(Mechanism.from_parallel(obj).second_order(), mo)
     return tuple(out)
 
 
+def _second_order_refusals(so: SecondOrder, mo: Motion) -> list[str]:
+    """The mechanism's motions to second order (Müller 2016): all of them, one branch."""
+    if so.mobility != mo.dimension or so.several_branches is not False:
+        return [f"to second order: mobility {so.mobility}, {so.branches} branches "
+                f"(wanted {mo.dimension}, one)"]
+    return []
+
+
 def _mechanism_refusals(mob: Mobility, mo: Motion) -> list[str]:
-    out = []
+    out: list[str] = []
     if mob.mobility != mo.dimension:
         out.append(f"mobility {mob.mobility}, wanted {mo.dimension}")
     if mob.motion != mo.name:
@@ -684,6 +697,9 @@ class Design(NamedTuple):
     mechanism: ParallelMechanism  #: the generic instance (actuated joints named, if found)
     mobility: Mobility  #: its exact analysis
     actuated: int | None  #: the actuated joint of every limb, or None if none was found
+    #: its motions to second order (:meth:`Mechanism.second_order`): all of
+    #: ``mobility.mobility``, one branch
+    second_order: SecondOrder
 
     @property
     def name(self) -> str:
@@ -752,7 +768,9 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     ``types`` are the limb types to try (default: :func:`limbs` of ``mo``, ``kinds`` and
     ``max_joints``).  Each design's generic instance is analysed exactly
     (:meth:`ParallelMechanism.mobility`) and kept iff its mobility is ``mo.dimension``, its
-    motion type ``mo.name`` and its twists ``T_M``, with no passive freedom.  With
+    motion type ``mo.name`` and its twists ``T_M``, with no passive freedom, and all of its
+    motions extend to second order in one branch
+    (:meth:`~screwsym.systems.linkage.Mechanism.second_order`, Müller 2016).  With
     ``actuate``, the first joint index (from the base) that, actuated in every limb,
     makes the Jacobian invertible at the instance is named (``None`` if none does).
     At most ``budget`` units (a ``ValueError`` naming ``mechanisms`` beyond).
@@ -779,6 +797,9 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
             mob = mech.mobility()
             if _mechanism_refusals(mob, mo):
                 continue
+            so = Mechanism.from_parallel(mech).second_order()
+            if _second_order_refusals(so, mo):
+                continue
             act = None
             if actuate and limbs * 1 + (6 - mo.dimension) == 6:
                 for k in range(t.freedom):
@@ -787,7 +808,7 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
                         act = k
                         break
             final = _mechanism(t, limbs, seed, act) if act is not None else mech
-            out.append(Design(t, final, mob, act))
+            out.append(Design(t, final, mob, act, so))
     return tuple(out)
 
 

@@ -145,6 +145,31 @@ def test_3t_refuses_a_tilted_axis_and_a_first_order_arrangement():
     assert reaches(prrr, target("3T", rng), mo) == (True, True)
 
 
+def test_3t_mechanism_of_first_order_limbs_moves_but_leaves_3t():
+    # three R_a R_b R_a R_b legs: 3T at first order and 3 freedoms to second order (Müller's
+    # test of the mechanism, which asks whether it moves, not how), but each leg's 3T motion
+    # does not extend within 3T: the platform starts to turn.  The limb check refuses it.
+    from screwsym.systems.linkage import Mechanism
+
+    def perm(v, k):
+        return v[k:] + v[:k]
+
+    def leg(k):  # the legs carried by the rotations that permute x, y, z
+        a, b = perm([1, 2, 3], k), perm([3, -1, 2], k)
+        return Limb(P(perm([2, 1, 5], k)), R(perm([0, 0, 0], k), a), R(perm([4, 1, 0], k), b),
+                    R(perm([0, 3, 7], k), a), R(perm([5, -2, 1], k), b))
+
+    m = ParallelMechanism(*(leg(k) for k in range(3)))
+    assert (m.mobility().mobility, m.mobility().motion) == (3, "3T")
+    assert Mechanism.from_parallel(m).second_order()[:4] == (3, 3, 1, False)
+    assert refusals(m, motion("3T")) == tuple(
+        f"limbs[{i}]: its motion does not extend to second order within the wanted motion"
+        for i in range(3))
+    with pytest.raises(ValueError, match="seed: no generic instance of PRRRR"):
+        LimbType(motion("3T"), (("P", 0, "-"), ("R", 1, "g"), ("R", 2, "g"), ("R", 1, "g"),
+                                ("R", 2, "g"))).instance()
+
+
 def test_3t_refuses_tsai_3upu_with_a_wrongly_turned_joint():
     # Tsai's 3-UPU needs the platform U's axes parallel to the base U's crossed; with one
     # platform U turned, the platform also rotates
@@ -173,6 +198,7 @@ def test_3r_limbs_and_the_spherical_3rrr():
     assert names(found) == {"RRR (1,2,3 through O)"}
     d, = mechanisms(motion("3R"), max_joints=3)
     assert (d.mobility.mobility, d.mobility.motion, d.mobility.common) == (3, "3R", 3)
+    assert d.second_order[:4] == (3, 3, 1, False)
     assert d.actuated == 0
     rng = np.random.default_rng([38, 3])
     T = target("3R", rng)
