@@ -420,7 +420,7 @@ def _check_rows(J: list, G: list) -> str | None:
         return "its twists do not contain the wanted motion"
     for k in range(n):
         if _rank(J[:k] + J[k + 1:] + G) < n:
-            return f"joint {k} is locked in the wanted motion"
+            return f"joint {k + 1} (from the base) is locked in the wanted motion"
     if n == 6:
         return None
     # rates qdot with J qdot in T_M: the x parts of the null vectors of [J | G]
@@ -453,7 +453,7 @@ class LimbType(NamedTuple):
 
     ``joints`` holds, per joint, ``(kind, direction label, point label)``: joints with one
     direction label are parallel (labels below ``len(motion.directions)`` are the motion's
-    own directions); a revolute's point label is ``"g"`` (anywhere), ``"c"`` (through the
+    own directions, negative labels directions normal to its first one); a revolute's point label is ``"g"`` (anywhere), ``"c"`` (through the
     motion's centre) or ``"u"`` (through the previous revolute's point).
     """
 
@@ -462,6 +462,7 @@ class LimbType(NamedTuple):
 
     @property
     def freedom(self) -> int:
+        """The number of joints, each of one freedom."""
         return len(self.joints)
 
     @property

@@ -24,6 +24,8 @@ from screwsym.systems.synthesis import (
 
 mr = pytest.importorskip("modern_robotics")
 
+O3 = [0, 0, 0]
+
 
 def names(found):
     return {t.name for t in found}
@@ -206,6 +208,10 @@ def test_3r_limbs_and_the_spherical_3rrr():
     # an axis off the centre is refused
     off = Limb(R([0, 0, 0], [1, 0, 0]), R([0, 0, 0], [0, 1, 1]), R([0, 1, 0], [1, 1, 0]))
     assert refusals(off, motion("3R")) == ("limb: its twists do not contain the wanted motion",)
+    # a slide after a spherical wrist: the twists contain 3R, but the slide never moves in it
+    slide = Limb(R(O3, [1, 0, 0]), R(O3, [0, 1, 0]), R(O3, [0, 0, 1]), P([1, 2, 3]))
+    assert refusals(slide, motion("3R")) == (
+        "limb: joint 4 (from the base) is locked in the wanted motion",)
 
 
 @pytest.mark.slow
