@@ -774,7 +774,9 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     (:meth:`~screwsym.systems.linkage.Mechanism.second_order`, Müller 2016).  With
     ``actuate``, the first joint index (from the base) that, actuated in every limb,
     makes the Jacobian invertible at the instance is named (``None`` if none does).
-    At most ``budget`` units (a ``ValueError`` naming ``mechanisms`` beyond).
+    At most ``budget`` units (a ``ValueError`` naming ``mechanisms`` beyond); each design is
+    charged 200,000 units (its analysis takes about 0.1 s), so the default covers about a
+    hundred limb types: the 152 of 3T1R with five joints need ``budget=10**8``.
 
     >>> [d.name for d in mechanisms(motion("3R"), max_joints=3)]
     ['3-RRR (1,2,3 through O)']
