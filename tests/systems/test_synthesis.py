@@ -78,8 +78,8 @@ def test_motion_patterns_and_their_wrenches():
 # ------------------------------------------------------------ 3T
 def test_3t_limbs_of_four_joints_at_most():
     # Kong & Gosselin, "Type synthesis of 3-DOF translational parallel manipulators based on
-    # screw theory", ASME J. Mech. Des. 126 (2004) 83-92 (Table 2, legs of 3 and 4 joints with
-    # two or three constraint couples): PPP and the PRRR with parallel revolutes are in it;
+    # screw theory", ASME J. Mech. Des. 126 (2004) 83-92 (the legs of 3 and 4 joints, with
+    # three or two constraint couples): PPP and the PRRR with parallel revolutes are in it;
     # Kong & Gosselin, IJRR 21(9) (2002) 791-798: the 3-CRR (the C and both R parallel)
     found = limbs(motion("3T"), max_joints=4)
     assert {"PPP", "PRRR (2∥3∥4)", "CRR (1∥2∥3∥4)"} <= names(found)
@@ -92,7 +92,8 @@ def test_3t_limbs_of_four_joints_at_most():
 def test_3t_limbs_of_five_joints_include_tsai_and_kong_gosselin():
     # Tsai's 3-UPU (Tsai 1996, "Kinematics of a three-DOF platform with three extensible
     # limbs"): base and platform U with crossed parallel axes (1∥5, 2∥4); Kong & Gosselin
-    # (2004, Table 3): the 5R legs R∥R∥R-R∥R in both orders, the PRRRR, RPRRR, RRPRR families
+    # (2004; the legs of five joints, one constraint couple): the 5R legs R∥R∥R-R∥R in both
+    # orders, the PRRRR, RPRRR, RRPRR families
     found = limbs(motion("3T"), max_joints=5)
     assert {"UPU (1∥5, 2∥4)", "RRRRR (1∥2∥3, 4∥5)", "RRRRR (1∥5, 2∥3∥4)",
             "PRRRR (2∥3, 4∥5)", "RPRRR (1∥3, 4∥5)", "RRPRR (1∥2, 4∥5)"} <= names(found)
@@ -226,8 +227,8 @@ def test_3r_limbs_of_five_joints():
 
 # ------------------------------------------------------------ 3T1R
 def test_3t1r_limbs_of_four_joints_and_their_mechanisms():
-    # Kong & Gosselin, Type Synthesis of Parallel Mechanisms (Springer 2007), Ch. 8
-    # (3T1R): legs of four joints with two constraint couples normal to z; the revolute
+    # Kong & Gosselin, Type Synthesis of Parallel Mechanisms (Springer 2007), the 3T1R
+    # chapter: legs of four joints with two constraint couples normal to z; the revolute
     # axes all parallel to z
     mo = motion("3T1R")
     found = limbs(mo, max_joints=4)
@@ -241,8 +242,8 @@ def test_3t1r_limbs_of_four_joints_and_their_mechanisms():
 
 @pytest.mark.slow
 def test_3t1r_uru_and_rrrrr_families():
-    # Kong & Gosselin (2007), Ch. 8 and Fang & Tsai, IJRR 21(9) (2002) 799-810, Table 4:
-    # the 4-URU (the U's outer axes along z, the inner ones and the R parallel) and the
+    # Kong & Gosselin (2007), the 3T1R chapter, and Fang & Tsai, IJRR 21(9) (2002) 799-810
+    # (4-dof manipulators with identical limbs): the 4-URU (the U's outer axes along z, the inner ones and the R parallel) and the
     # R∥R∥R(z)-R∥R legs
     mo = motion("3T1R")
     found = limbs(mo, max_joints=5)
@@ -258,8 +259,8 @@ def test_3t1r_uru_and_rrrrr_families():
 # ------------------------------------------------------------ 2T1R
 def test_2t1r_the_planar_chains():
     # the seven planar chains of three joints of the planar 3-dof parallel manipulators
-    # (Merlet, Parallel Robots, 2nd ed. 2006, §2.2.1, Fig. 2.6: RRR, RPR, RRP, PRR, PPR, PRP,
-    # RPP): five up to reversal (RRP~PRR, RPP~PPR), each prismatic joint in the plane (⊥z)
+    # (Merlet, Parallel Robots, 2nd ed. 2006, Ch. 2, the planar 3-dof robots: RRR, RPR, RRP,
+    # PRR, PPR, PRP, RPP): five up to reversal (RRP~PRR, RPP~PPR), each prismatic joint in the plane (⊥z)
     mo = motion("2T1R")
     found = limbs(mo, max_joints=3)
     assert names(found) == {"RRR (1∥2∥3∥z)", "PRR (1⊥z, 2∥3∥z)", "RPR (1∥3∥z, 2⊥z)",
