@@ -562,10 +562,10 @@ class LimbType(NamedTuple):
 def _limb_rows(limb: Limb) -> list:
     rows = []
     for t in limb.twists:
-        vals = [Rational(x) for x in t.matrix]
-        if not all(v.is_Rational for v in vals):
-            raise ValueError("limb: expected a limb with rational geometry (no symbols)")
-        rows.append(tuple(Fraction(int(v.p), int(v.q)) for v in vals))
+        if not all(isinstance(x, Rational) for x in t.matrix):
+            raise ValueError("obj: expected rational geometry (no symbols, no roots): the "
+                             "checks are made at numbers; substitute values first")
+        rows.append(tuple(Fraction(int(x.p), int(x.q)) for x in t.matrix))
     return rows
 
 

@@ -73,6 +73,10 @@ def test_motion_patterns_and_their_wrenches():
         limbs("3T")
     with pytest.raises(ValueError, match="kinds: expected"):
         limbs(motion("3T"), kinds=("H",))
+    from sympy import Symbol, sqrt
+    for v in (Symbol("a", real=True), sqrt(2)):
+        with pytest.raises(ValueError, match="obj: expected rational geometry"):
+            refusals(Limb(R(O3, [1, 0, v])), motion("3T"))
 
 
 # ------------------------------------------------------------ 3T
