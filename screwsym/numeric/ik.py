@@ -27,11 +27,14 @@ from sympy import (
     Float,
     ImmutableMatrix,
     Lt,
-    Mod,
+    Mul,
     Piecewise,
+    cos,
     cse,
+    floor,
     numbered_symbols,
     pi,
+    sin,
 )
 
 from ..codegen import default_backend, lambdify
@@ -121,6 +124,8 @@ class _Program:
         self.T = ImmutableMatrix(4, 4, [Dummy(f"T{i}{j}", real=True) for i in range(4) for j in range(4)])
         self.F = ImmutableMatrix([Dummy(f"f{k}", real=True) for k in free]) if free else None
         self.assignments: list[tuple[Dummy, Any]] = []
+        self._trig: dict[Any, Any] = {}
+        self._squares: dict[Any, Any] = {}
         H = chain.home.inverse()
         g: Motion = _compose((self.T[:3, :3], self.T[:3, 3]), (H.R, H.p))
         fv = dict(zip(free, self.F if self.F is not None else (), strict=True))
@@ -160,14 +165,23 @@ class _Program:
             row.update(fv)
             (total,) = self._let([Add(*[row[i] for i in range(n) if i not in fv])], "s")
             exists = Lt(Abs(total), Float(1e300))  # NaN (or inf) in a joint: no branch
-            rows.append([Piecewise((Mod(row[i] + pi, 2 * pi) - pi if revolute[i] else row[i], exists))
+            rows.append([Piecewise((row[i] - 2 * pi * floor((row[i] + pi) / (2 * pi)) if revolute[i]
+                                    else row[i], exists))
                          for i in range(n)])
         self.outputs = ImmutableMatrix(rows)
         self.arguments = [self.T] if self.F is None else [self.T, self.F]
 
     def _let(self, exprs: list, stem: str) -> list:
-        """``exprs`` as symbols assigned after their common subexpressions (numbers stay)."""
+        """``exprs`` as symbols assigned after their common subexpressions (numbers stay).
+
+        Before the stage's ``cse``, a sine or cosine of a symbol assigned before becomes
+        the symbol assigned to it once for the whole program (the stages' ``cse`` are
+        separate, and C does not merge two calls of ``sin``), and each integer power
+        above 2 a product of squares (C's ``pow(x, 4.0)`` is a library call)."""
+        exprs = [self._shared(e) for e in exprs]
         replacements, reduced = cse(exprs, symbols=numbered_symbols(f"_{stem}c", cls=Dummy, real=True))
+        replacements = [(t, self._powers(e)) for t, e in replacements]
+        reduced = [self._powers(e) for e in reduced]
         self.assignments += replacements
         out = []
         for m, e in enumerate(reduced):
@@ -178,6 +192,31 @@ class _Program:
                 self.assignments.append((t, e))
                 out.append(t)
         return out
+
+    def _shared(self, e: Any) -> Any:
+        found = {x for x in e.atoms(sin, cos) if x.args[0].is_Symbol}
+        for x in sorted(found, key=str):
+            if x not in self._trig:
+                t = Dummy(f"trig{len(self._trig)}", real=True)
+                self.assignments.append((t, x))
+                self._trig[x] = t
+        return e.xreplace({x: self._trig[x] for x in found}) if found else e
+
+    def _powers(self, e: Any) -> Any:
+        def square(b: Any) -> Any:
+            t = self._squares.get(b)
+            if t is None:
+                t = self._squares[b] = Dummy(f"sq{len(self._squares)}", real=True)
+                self.assignments.append((t, b**2))
+            return t
+
+        def power(x: Any) -> Any:
+            if not (x.is_Pow and x.exp.is_Integer and x.exp > 2):
+                return x
+            n, b = int(x.exp), x.base
+            return Mul(*([square(b)] * (n // 2) + [b] * (n % 2)))
+
+        return e.replace(lambda x: x.is_Pow and x.exp.is_Integer and x.exp > 2, power)
 
     def _lambdify_program(self) -> tuple[tuple[tuple[Any, Any], ...], ImmutableMatrix]:
         return tuple(self.assignments), self.outputs
