@@ -1,16 +1,20 @@
 r"""Inverse kinematics as a fast numeric function: every closed-form branch at many poses at once.
 
 :func:`inverse_kinematics_function` compiles the closed forms of
-:func:`screwsym.motion.inverse_kinematics.stage_forms` through :func:`screwsym.lambdify`:
-per stage, the points its subproblem looks at (from the pose and the joints found before)
-and the subproblem's generic branches (two solutions of Subproblems 2, 3 and 4, the
-angle of Subproblem 1).  The stages are evaluated in turn on arrays, each branch of a
-stage multiplying the columns, so the result holds every generic branch: ``(..., B, n)``,
-``B = 8`` for the UR5 and the PUMA 560.  A branch that does not exist at a pose (a
-negative discriminant: the pose out of reach for that branch) is NaN there, since the
-square root of a negative number is NaN in every back end.  The degenerate branches
-(a wrist or shoulder singularity, a tangent) hold on sets of measure zero and are left
-to the exact :func:`~screwsym.motion.inverse_kinematics.inverse_kinematics`.
+:func:`screwsym.motion.inverse_kinematics.stage_forms` into one straight-line program
+(:class:`_Program`) through :func:`screwsym.lambdify`: the target pose from ``T`` (and the
+free joints), then stage by stage, for every branch of the stages before, the points the
+stage's subproblem looks at and its generic branches (two solutions of Subproblems 2, 3
+and 4, the angle of Subproblem 1), each stage's expressions of all branches through one
+common-subexpression elimination and every sine and cosine of a joint computed once.
+Compiled in C (where a compiler is found; numba or NumPy otherwise) this is one loop over
+the poses: the UR5's eight branches in about 1.5 us a pose (``benchmarks/bench_ik.py``).
+The result holds every generic branch: ``(..., B, n)``, ``B = 8`` for the UR5 and the
+PUMA 560.  A branch that does not exist at a pose (a negative discriminant: the pose out of
+reach for that branch) is NaN in all its joints, since the square root of a negative
+number is NaN in every back end.  The degenerate branches (a wrist or shoulder
+singularity, a tangent) hold on sets of measure zero and are left to the exact
+:func:`~screwsym.motion.inverse_kinematics.inverse_kinematics`.
 """
 
 from __future__ import annotations
