@@ -310,11 +310,26 @@ def _staged(chain: Chain, free: tuple[int, ...], backend: str | None) -> _Staged
     return _Staged(chain, free, backend)
 
 
+class _GivenFree:
+    """The compiled program of a chain with free joints: ``f(T, free_values)``, a scalar for one."""
+
+    def __init__(self, fn: Any, k: int):
+        self.fn, self.k = fn, k
+
+    def __call__(self, T: Any, free_values: Any = None) -> np.ndarray:
+        if free_values is None:
+            raise TypeError(f"free_values: expected the values of the {self.k} free joints, (..., {self.k})")
+        if self.k == 1 and np.ndim(free_values) == 0:
+            free_values = np.reshape(np.asarray(free_values, dtype=float), (1,))
+        return self.fn(T, free_values)
+
+
 @lru_cache(maxsize=16)
 def _fused(chain: Chain, free: tuple[int, ...], backend: str) -> Any:
     program = _Program(chain, free)
-    names = ["T"] if program.F is None else ["T", "free_values"]
-    return lambdify(program.arguments, program, backend, names=names)
+    if program.F is None:
+        return lambdify(program.arguments, program, backend, names=["T"])
+    return _GivenFree(lambdify(program.arguments, program, backend, names=["T", "free_values"]), len(free))
 
 
 def fastest_backend() -> str:

@@ -122,8 +122,11 @@ def test_the_panda_with_its_seventh_joint_given(backend):
         assert (np.abs(wrapped(np.array(live) - q[k])).max(axis=1) < 1e-8).any()
     staged = _staged(arm, (6,), "numpy")(T, q[:, 6:])
     assert np.nanmax(np.abs(wrapped(branches - staged))) < 1e-10
-    with pytest.raises(TypeError):
-        f(T)  # the free joint's value is needed
+    with pytest.raises(TypeError, match="free_values: expected the values of the 1 free joints"):
+        f(T)
+    with pytest.raises(ValueError, match="free_values: expected an array of shape"):
+        f(T, np.zeros(2))
+    assert np.array_equal(f(T[0], q[0, 6]), branches[0], equal_nan=True)  # one joint: a scalar
 
 
 def test_the_program_holds_only_its_own_symbols_and_the_default_is_the_fastest():
