@@ -125,8 +125,8 @@ class _Program:
         n = chain.n_joints
         solved = _solved(chain, free)
         before, after = solved[0], solved[-1] + 1
-        self.T = ImmutableMatrix(4, 4, [Dummy(f"T{i}{j}", real=True) for i in range(4) for j in range(4)])
-        self.F = ImmutableMatrix([Dummy(f"f{k}", real=True) for k in free]) if free else None
+        self.T = ImmutableMatrix(4, 4, [Dummy(f"ik_T{i}{j}", real=True) for i in range(4) for j in range(4)])
+        self.F = ImmutableMatrix([Dummy(f"ik_f{k}", real=True) for k in free]) if free else None
         self.assignments: list[tuple[Dummy, Any]] = []
         self._trig: dict[Any, Any] = {}
         self._squares: dict[Any, Any] = {}
@@ -183,7 +183,7 @@ class _Program:
         separate, and C does not merge two calls of ``sin``), and each integer power
         above 2 a product of squares (C's ``pow(x, 4.0)`` is a library call)."""
         exprs = [self._shared(e) for e in exprs]
-        replacements, reduced = cse(exprs, symbols=numbered_symbols(f"_{stem}c", cls=Dummy, real=True))
+        replacements, reduced = cse(exprs, symbols=numbered_symbols(f"ik_{stem}c", cls=Dummy, real=True))
         replacements = [(t, self._powers(e)) for t, e in replacements]
         reduced = [self._powers(e) for e in reduced]
         self.assignments += replacements
@@ -192,7 +192,7 @@ class _Program:
             if e.is_Atom:
                 out.append(e)
             else:
-                t = Dummy(f"{stem}{m}", real=True)
+                t = Dummy(f"ik_{stem}{m}", real=True)
                 self.assignments.append((t, e))
                 out.append(t)
         return out
@@ -201,7 +201,7 @@ class _Program:
         found = {x for x in e.atoms(sin, cos) if x.args[0].is_Symbol}
         for x in sorted(found, key=str):
             if x not in self._trig:
-                t = Dummy(f"trig{len(self._trig)}", real=True)
+                t = Dummy(f"ik_trig{len(self._trig)}", real=True)
                 self.assignments.append((t, x))
                 self._trig[x] = t
         return e.xreplace({x: self._trig[x] for x in found}) if found else e
@@ -210,7 +210,7 @@ class _Program:
         def square(b: Any) -> Any:
             t = self._squares.get(b)
             if t is None:
-                t = self._squares[b] = Dummy(f"sq{len(self._squares)}", real=True)
+                t = self._squares[b] = Dummy(f"ik_sq{len(self._squares)}", real=True)
                 self.assignments.append((t, b**2))
             return t
 

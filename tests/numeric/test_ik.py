@@ -17,7 +17,7 @@ import pytest
 from _backends import HAS_CC, HAS_NUMBA
 from _robots import panda, puma560
 
-from screwsym.codegen import default_backend
+from screwsym.codegen import c_source, default_backend
 from screwsym.motion.chain import ur5
 from screwsym.numeric import inverse_kinematics_function
 from screwsym.numeric.ik import _Program, _staged, fastest_backend
@@ -137,6 +137,12 @@ def test_the_program_holds_only_its_own_symbols_and_the_default_is_the_fastest()
         known.add(t)
     assert program.outputs.free_symbols <= known
     assert program.outputs.shape == (8, 6)
+    # generated source names only screwsym's own locals (_x, _c, _t ...), never the program's
+    # (each named _ik_...)
+    source = c_source(program.arguments, program)
+    names = {str(t) for t, _ in program.assignments} | {str(x) for x in program.T}
+    assert all(n.startswith("_ik_") for n in names)
+    assert "_ik_" not in source and "_ik_" in str(program.assignments)
     assert fastest_backend() == ("c" if HAS_CC else default_backend())
 
 
