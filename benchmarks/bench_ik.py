@@ -5,20 +5,26 @@ Run from the repository root::
     python benchmarks/bench_ik.py
     python benchmarks/bench_ik.py --poses 10000 --rounds 3
 
-Three figures, all CPU time (``time.process_time``):
+Three figures, all CPU time (``time.process_time``), for the solver
+``numeric.inverse_kinematics_function`` (every branch one generated program, one loop
+over the poses: "fused") in each back end, and side by side, in the same run, the solver
+it replaced (each stage compiled on its own and evaluated in turn on arrays: "staged",
+``screwsym.numeric.ik._staged``, the "before"):
 
 1. generation: the decomposition found from the twists, each stage's closed form
-   (``stage_forms``) and its compilation by ``screwsym.lambdify``
-   (``numeric.inverse_kinematics_function``), in a fresh process for each back end
-   (target: under 60 s; IKFast "usually within 10 minutes");
+   (``stage_forms``) and its compilation by ``screwsym.lambdify``, in a fresh process for
+   each back end (target: under 60 s; IKFast "usually within 10 minutes");
 2. the solver per pose, batched: ``f(T)`` on ``--poses`` poses ``(N, 4, 4)`` giving
    ``(N, 8, 6)``, best of ``--rounds``, per pose (target: under 5 us; IKFast's published ~4 us
-   per solve), side by side with the peer modern_robotics ``IKinSpace`` (Newton's method from
-   a guess 0.1 rad off, one branch per call) on a subset, in the same run;
+   per solve), and one pose ``(4, 4)`` per call; side by side with the peer modern_robotics
+   ``IKinSpace`` (Newton's method from a guess 0.1 rad off, one branch per call) on a subset;
 3. round trips on ``--poses`` random poses away from singularities (the smallest singular
    value of the space Jacobian over 0.05, modern_robotics): the joints that made the pose
    are among the branches (to 1e-8 rad) and every branch that exists reproduces the pose
-   under modern_robotics' ``FKinSpace`` (to 1e-9) (target: 100 %).
+   under modern_robotics' ``FKinSpace`` (to 1e-9) (target: 100 %), for the default back end;
+   every other back end and the staged solver agree with it (NaN in the same places).
+
+``--quick`` skips the fresh-process generation (figure 1).
 """
 
 from __future__ import annotations
@@ -38,18 +44,27 @@ GENERATE = """
 import time
 t = time.process_time()
 from screwsym.motion.chain import ur5
-from screwsym.numeric import inverse_kinematics_function
-f = inverse_kinematics_function(ur5(), backend={backend!r})
+from screwsym.numeric.ik import _fused, _staged
+f = {solver}(ur5(), (), {backend!r})
 import numpy as np
 f(np.eye(4)[None])
 print(time.process_time() - t)
 """
 
 
-def generation(backend: str) -> float:
-    out = subprocess.run([sys.executable, "-c", GENERATE.format(backend=backend)],
+def generation(solver: str, backend: str) -> float:
+    """CPU seconds in a fresh process (the on-disk caches of lambdify off: a cold build)."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="bench-ik-") as cache:
+        return _generation(solver, backend, cache)
+
+
+def _generation(solver: str, backend: str, cache: str) -> float:
+    out = subprocess.run([sys.executable, "-c", GENERATE.format(solver=solver, backend=backend)],
                          capture_output=True, text=True, check=True, cwd=ROOT,
-                         env={"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin"})
+                         env={"PYTHONPATH": str(ROOT), "PATH": "/usr/bin:/bin",
+                              "SCREWSYM_CACHE_DIR": cache, "NUMBA_CACHE_DIR": cache})
     return float(out.stdout.strip().splitlines()[-1])
 
 
@@ -58,12 +73,13 @@ def main() -> None:
     parser.add_argument("--poses", type=int, default=10_000)
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--peer", type=int, default=200, help="poses for modern_robotics IKinSpace")
+    parser.add_argument("--quick", action="store_true", help="skip the fresh-process generation")
     args = parser.parse_args()
 
     import modern_robotics as mr
 
     from screwsym.motion.chain import ur5
-    from screwsym.numeric import inverse_kinematics_function
+    from screwsym.numeric.ik import _fused, _staged, fastest_backend
 
     arm = ur5()
     S = np.array([[float(x) for x in t.matrix] for t in arm.twists]).T
@@ -74,10 +90,17 @@ def main() -> None:
         backends.append("numba")
     except ImportError:
         pass
+    from screwsym.codegen._build import compiler
+    if compiler() is not None:
+        backends.append("c")
+    default = fastest_backend()
+    solvers = [("fused", _fused, b) for b in backends] + [("staged", _staged, b) for b in backends
+                                                          if b != "c"]
 
-    print("1. generation (fresh process, CPU s):")
-    for b in backends:
-        print(f"   {b:6s} {generation(b):7.2f} s   (target < 60 s)")
+    if not args.quick:
+        print("1. generation (fresh process, empty caches, CPU s; target < 60 s, IKFast ~10 min):")
+        for label, solver, b in solvers:
+            print(f"   {label:6s} {b:6s} {generation(solver.__name__, b):7.2f} s")
 
     rng = np.random.default_rng(2026)
     qs, Ts = [], []
@@ -89,12 +112,18 @@ def main() -> None:
     q = np.array(qs)
     T = np.array(Ts)
 
-    print(f"2. solver, {args.poses} poses batched (best of {args.rounds}, CPU us per pose):")
-    for b in backends:
-        f = inverse_kinematics_function(arm, backend=b)
+    print(f"2. solver, {args.poses} poses (CPU us per pose, best of {args.rounds}; "
+          "target < 5 us batched, IKFast ~4 us per solve):")
+    print("   solver back end   batched   one pose a call")
+    for label, solver, b in solvers:
+        f = solver(arm, (), b)
         f(T[:10])
+        f(T[0])
         best = min(_timed(f, T) for _ in range(args.rounds))
-        print(f"   screwsym {b:6s} {best / args.poses * 1e6:8.2f} us   (target < 5 us)")
+        calls = min(1000, args.poses)
+        one = min(_timed_each(f, T[:calls]) for _ in range(args.rounds))
+        mark = " (default)" if label == "fused" and b == default else ""
+        print(f"   {label:6s} {b:6s} {best / args.poses * 1e6:9.2f} {one / calls * 1e6:12.2f}{mark}")
     guesses = q[: args.peer] + 0.1
     t0 = time.process_time()
     converged = sum(mr.IKinSpace(S, M, T[k], guesses[k], 1e-9, 1e-9)[1] for k in range(args.peer))
@@ -102,23 +131,36 @@ def main() -> None:
     print(f"   modern_robotics IKinSpace (one branch, Newton from 0.1 rad off) {peer * 1e6:8.1f} us "
           f"({converged}/{args.peer} converged)")
 
-    print(f"3. round trips on {args.poses} poses away from singularities:")
-    for b in backends:
-        branches = inverse_kinematics_function(arm, backend=b)(T)
-        d = np.mod(branches - q[:, None, :] + np.pi, 2 * np.pi) - np.pi
-        among = (np.abs(d).max(axis=2) < 1e-8).any(axis=1)
-        live = ~np.isnan(branches).any(axis=2)
-        worst = 0.0
-        for k in range(args.poses):
-            for br in branches[k][live[k]]:
-                worst = max(worst, float(np.abs(mr.FKinSpace(M, S, br) - T[k]).max()))
-        print(f"   {b:6s} q among the branches: {among.mean() * 100:.2f} %; branches existing: "
-              f"{live.sum()} ({live.sum(axis=1).mean():.2f} a pose); worst FK error of a branch {worst:.1e}")
+    print(f"3. round trips on {args.poses} poses away from singularities (target 100 %):")
+    branches = _fused(arm, (), default)(T)
+    d = np.mod(branches - q[:, None, :] + np.pi, 2 * np.pi) - np.pi
+    among = (np.abs(d).max(axis=2) < 1e-8).any(axis=1)
+    live = ~np.isnan(branches).any(axis=2)
+    worst = 0.0
+    for k in range(args.poses):
+        for br in branches[k][live[k]]:
+            worst = max(worst, float(np.abs(mr.FKinSpace(M, S, br) - T[k]).max()))
+    print(f"   fused  {default:6s} q among the branches: {among.mean() * 100:.2f} %; branches existing: "
+          f"{live.sum()} ({live.sum(axis=1).mean():.2f} a pose); worst FK error of a branch {worst:.1e}")
+    for label, solver, b in solvers:
+        if label == "fused" and b == default:
+            continue
+        other = solver(arm, (), b)(T)
+        same_nan = bool((np.isnan(other) == np.isnan(branches)).all())
+        gap = np.nanmax(np.abs(np.mod(other - branches + np.pi, 2 * np.pi) - np.pi))
+        print(f"   {label:6s} {b:6s} NaN in the same places: {same_nan}; largest difference {gap:.1e} rad")
 
 
 def _timed(f, T) -> float:
     t0 = time.process_time()
     f(T)
+    return time.process_time() - t0
+
+
+def _timed_each(f, T) -> float:
+    t0 = time.process_time()
+    for x in T:
+        f(x)
     return time.process_time() - t0
 
 

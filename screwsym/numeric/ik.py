@@ -1,16 +1,20 @@
 r"""Inverse kinematics as a fast numeric function: every closed-form branch at many poses at once.
 
 :func:`inverse_kinematics_function` compiles the closed forms of
-:func:`screwsym.motion.inverse_kinematics.stage_forms` through :func:`screwsym.lambdify`:
-per stage, the points its subproblem looks at (from the pose and the joints found before)
-and the subproblem's generic branches (two solutions of Subproblems 2, 3 and 4, the
-angle of Subproblem 1).  The stages are evaluated in turn on arrays, each branch of a
-stage multiplying the columns, so the result holds every generic branch: ``(..., B, n)``,
-``B = 8`` for the UR5 and the PUMA 560.  A branch that does not exist at a pose (a
-negative discriminant: the pose out of reach for that branch) is NaN there, since the
-square root of a negative number is NaN in every back end.  The degenerate branches
-(a wrist or shoulder singularity, a tangent) hold on sets of measure zero and are left
-to the exact :func:`~screwsym.motion.inverse_kinematics.inverse_kinematics`.
+:func:`screwsym.motion.inverse_kinematics.stage_forms` into one straight-line program
+(:class:`_Program`) through :func:`screwsym.lambdify`: the target pose from ``T`` (and the
+free joints), then stage by stage, for every branch of the stages before, the points the
+stage's subproblem looks at and its generic branches (two solutions of Subproblems 2, 3
+and 4, the angle of Subproblem 1), each stage's expressions of all branches through one
+common-subexpression elimination and every sine and cosine of a joint computed once.
+Compiled in C (where a compiler is found; numba or NumPy otherwise) this is one loop over
+the poses: the UR5's eight branches in about 1.5 us a pose (``benchmarks/bench_ik.py``).
+The result holds every generic branch: ``(..., B, n)``, ``B = 8`` for the UR5 and the
+PUMA 560.  A branch that does not exist at a pose (a negative discriminant: the pose out of
+reach for that branch) is NaN in all its joints, since the square root of a negative
+number is NaN in every back end.  The degenerate branches (a wrist or shoulder
+singularity, a tangent) hold on sets of measure zero and are left to the exact
+:func:`~screwsym.motion.inverse_kinematics.inverse_kinematics`.
 """
 
 from __future__ import annotations
@@ -19,13 +23,39 @@ from functools import lru_cache
 from typing import Any
 
 import numpy as np
-from sympy import Eq, ImmutableMatrix
+from sympy import (
+    Abs,
+    Add,
+    Dummy,
+    Eq,
+    Float,
+    ImmutableMatrix,
+    Lt,
+    Mul,
+    Piecewise,
+    cos,
+    cse,
+    floor,
+    numbered_symbols,
+    pi,
+    sin,
+)
 
-from ..codegen import lambdify
+from ..codegen import default_backend, lambdify
+from ..codegen._build import compiler
 from ..motion.chain import Chain
-from ..motion.inverse_kinematics import G, Q, free_values, stage_forms
+from ..motion.inverse_kinematics import (
+    G,
+    Motion,
+    Q,
+    _compose,
+    _exp,
+    _inverse,
+    free_values,
+    stage_forms,
+)
 
-__all__ = ["inverse_kinematics_function"]
+__all__ = ["fastest_backend", "inverse_kinematics_function"]
 
 
 def _generic(branches: Any) -> list:
@@ -56,7 +86,7 @@ def _exp_numeric(twist: Any, q: np.ndarray) -> np.ndarray:
     return out
 
 
-def _inverse(T: np.ndarray) -> np.ndarray:
+def _inverse_numeric(T: np.ndarray) -> np.ndarray:
     out = np.zeros_like(T)
     Rt = np.swapaxes(T[..., :3, :3], -1, -2)
     out[..., :3, :3] = Rt
@@ -65,17 +95,147 @@ def _inverse(T: np.ndarray) -> np.ndarray:
     return out
 
 
-class _Compiled:
-    """The compiled stages of one chain (see :func:`inverse_kinematics_function`)."""
+def _solved(chain: Chain, free: tuple[int, ...]) -> list[int]:
+    """The joints the solver finds (``free`` given at call time): a run of consecutive ones."""
+    n = chain.n_joints
+    solved = [i for i in range(n) if i not in free]
+    if solved != list(range(solved[0], solved[0] + len(solved))):
+        raise ValueError(f"free: the compiled solver takes free joints at the ends of the chain "
+                         f"(its first or last joints), got {sorted(free)}; "
+                         "screwsym.motion.inverse_kinematics takes any")
+    return solved
+
+
+class _Program:
+    """Every generic branch as one straight-line program of the pose (and the free joints).
+
+    The assignments, in order: the target ``g`` (the pose times the home pose's inverse,
+    the free joints' motions taken off, inverted for a reversed decomposition); then per
+    stage, per branch of the stages before (a prefix), the points its subproblem looks at
+    and the joint values of its branches, each stage's expressions of all prefixes through
+    one ``sympy.cse``, so that what the prefixes share (the pose's products, a sine of a
+    joint found before) is computed once.  The outputs ``(B, n)``: revolute joints wrapped
+    into ``[-pi, pi)`` and a branch NaN in every joint where one of its joints is NaN (the
+    sum of its joints is not finite).  Every symbol is a ``Dummy`` of this module; the
+    numbers come from the chain's twists and home pose; :func:`screwsym.lambdify` renames
+    everything before it prints (no user text reaches generated source).
+    """
+
+    def __init__(self, chain: Chain, free: tuple[int, ...]):
+        n = chain.n_joints
+        solved = _solved(chain, free)
+        before, after = solved[0], solved[-1] + 1
+        self.T = ImmutableMatrix(4, 4, [Dummy(f"ik_T{i}{j}", real=True) for i in range(4) for j in range(4)])
+        self.F = ImmutableMatrix([Dummy(f"ik_f{k}", real=True) for k in free]) if free else None
+        self.assignments: list[tuple[Dummy, Any]] = []
+        self._trig: dict[Any, Any] = {}
+        self._squares: dict[Any, Any] = {}
+        H = chain.home.inverse()
+        g: Motion = _compose((self.T[:3, :3], self.T[:3, 3]), (H.R, H.p))
+        fv = dict(zip(free, self.F if self.F is not None else (), strict=True))
+        for i in sorted((i for i in free if i >= after), reverse=True):
+            g = _compose(g, _inverse(_exp(chain.twists[i], fv[i])))
+        for i in sorted(i for i in free if i < before):
+            g = _compose(_inverse(_exp(chain.twists[i], fv[i])), g)
+        plan, forms = stage_forms(tuple(chain.twists[i] for i in solved))
+        if plan.reversed:
+            g = _inverse(g)
+        order = list(reversed(solved)) if plan.reversed else solved
+        gs = self._let([*g[0], *g[1]], "g")
+        pose = dict(zip(G, gs, strict=True))
+        prefixes: list[dict[int, Any]] = [{}]
+        for k, form in enumerate(forms):
+            generic = _generic(form.branches)
+            points = [form.points.xreplace({**pose, **{Q[j]: v for j, v in p.items()}})
+                      for p in prefixes]
+            xs = self._let([x for m in points for x in m], f"x{k}_")
+            size = len(form.symbols)
+            values = []
+            for m, _p in enumerate(prefixes):
+                at = dict(zip(form.symbols, xs[m * size:(m + 1) * size], strict=True))
+                values += [v.xreplace(at) for b in generic for v in b.values]
+            qs = self._let(values, f"q{k}_")
+            width = len(form.stage.joints)
+            grown = []
+            for m, p in enumerate(prefixes):
+                for b in range(len(generic)):
+                    got = qs[(m * len(generic) + b) * width:(m * len(generic) + b + 1) * width]
+                    grown.append({**p, **dict(zip(form.stage.joints, got, strict=True))})
+            prefixes = grown
+        revolute = [bool(any(t.omega)) for t in chain.twists]
+        rows = []
+        for p in prefixes:
+            row = {order[j]: v for j, v in p.items()}
+            row.update(fv)
+            (total,) = self._let([Add(*[row[i] for i in range(n) if i not in fv])], "s")
+            exists = Lt(Abs(total), Float(1e300))  # NaN (or inf) in a joint: no branch
+            rows.append([Piecewise((row[i] - 2 * pi * floor((row[i] + pi) / (2 * pi)) if revolute[i]
+                                    else row[i], exists))
+                         for i in range(n)])
+        self.outputs = ImmutableMatrix(rows)
+        self.arguments = [self.T] if self.F is None else [self.T, self.F]
+
+    def _let(self, exprs: list, stem: str) -> list:
+        """``exprs`` as symbols assigned after their common subexpressions (numbers stay).
+
+        Before the stage's ``cse``, a sine or cosine of a symbol assigned before becomes
+        the symbol assigned to it once for the whole program (the stages' ``cse`` are
+        separate, and C does not merge two calls of ``sin``), and each integer power
+        above 2 a product of squares (C's ``pow(x, 4.0)`` is a library call)."""
+        exprs = [self._shared(e) for e in exprs]
+        replacements, reduced = cse(exprs, symbols=numbered_symbols(f"ik_{stem}c", cls=Dummy, real=True))
+        replacements = [(t, self._powers(e)) for t, e in replacements]
+        reduced = [self._powers(e) for e in reduced]
+        self.assignments += replacements
+        out = []
+        for m, e in enumerate(reduced):
+            if e.is_Atom:
+                out.append(e)
+            else:
+                t = Dummy(f"ik_{stem}{m}", real=True)
+                self.assignments.append((t, e))
+                out.append(t)
+        return out
+
+    def _shared(self, e: Any) -> Any:
+        found = {x for x in e.atoms(sin, cos) if x.args[0].is_Symbol}
+        for x in sorted(found, key=str):
+            if x not in self._trig:
+                t = Dummy(f"ik_trig{len(self._trig)}", real=True)
+                self.assignments.append((t, x))
+                self._trig[x] = t
+        return e.xreplace({x: self._trig[x] for x in found}) if found else e
+
+    def _powers(self, e: Any) -> Any:
+        def square(b: Any) -> Any:
+            t = self._squares.get(b)
+            if t is None:
+                t = self._squares[b] = Dummy(f"ik_sq{len(self._squares)}", real=True)
+                self.assignments.append((t, b**2))
+            return t
+
+        def power(x: Any) -> Any:
+            if not (x.is_Pow and x.exp.is_Integer and x.exp > 2):
+                return x
+            n, b = int(x.exp), x.base
+            return Mul(*([square(b)] * (n // 2) + [b] * (n % 2)))
+
+        return e.replace(lambda x: x.is_Pow and x.exp.is_Integer and x.exp > 2, power)
+
+    def _lambdify_program(self) -> tuple[tuple[tuple[Any, Any], ...], ImmutableMatrix]:
+        return tuple(self.assignments), self.outputs
+
+
+class _Staged:
+    """The stages of one chain compiled one by one and evaluated in turn on arrays.
+
+    The solver before the fused program (:class:`_Fused`): kept to compare against
+    (``benchmarks/bench_ik.py``, the tests).
+    """
 
     def __init__(self, chain: Chain, free: tuple[int, ...], backend: str | None):
         n = chain.n_joints
-        given = free_values(list(free), n)
-        solved = [i for i in range(n) if i not in given]
-        if solved != list(range(solved[0], solved[0] + len(solved))):
-            raise ValueError(f"free: the compiled solver takes free joints at the ends of the chain "
-                             f"(its first or last joints), got {sorted(given)}; "
-                             "screwsym.motion.inverse_kinematics takes any")
+        solved = _solved(chain, free)
         self.n, self.before, self.after = n, solved[0], solved[-1] + 1
         twists = tuple(chain.twists[i] for i in solved)
         self.twists = chain.twists
@@ -111,12 +271,12 @@ class _Compiled:
         g = T @ self.home_inv
         for j, i in reversed(list(enumerate(given))):
             if i >= self.after:
-                g = g @ _inverse(_exp_numeric(self.twists[i], f[:, j]))
+                g = g @ _inverse_numeric(_exp_numeric(self.twists[i], f[:, j]))
         for j, i in enumerate(given):
             if i < self.before:
-                g = _inverse(_exp_numeric(self.twists[i], f[:, j])) @ g
+                g = _inverse_numeric(_exp_numeric(self.twists[i], f[:, j])) @ g
         if self.reversed:
-            g = _inverse(g)
+            g = _inverse_numeric(g)
         N = g.shape[0]
         gv = np.concatenate([g[:, :3, :3].reshape(N, 9), g[:, :3, 3]], axis=1)
         q = np.zeros((N, 1, 6))
@@ -146,8 +306,39 @@ class _Compiled:
 
 
 @lru_cache(maxsize=16)
-def _compiled(chain: Chain, free: tuple[int, ...], backend: str | None) -> _Compiled:
-    return _Compiled(chain, free, backend)
+def _staged(chain: Chain, free: tuple[int, ...], backend: str | None) -> _Staged:
+    return _Staged(chain, free, backend)
+
+
+class _GivenFree:
+    """The compiled program of a chain with free joints: ``f(T, free_values)``, a scalar for one."""
+
+    def __init__(self, fn: Any, k: int):
+        self.fn, self.k = fn, k
+
+    def __call__(self, T: Any, free_values: Any = None) -> np.ndarray:
+        if free_values is None:
+            raise TypeError(f"free_values: expected the values of the {self.k} free joints, (..., {self.k})")
+        if self.k == 1 and np.ndim(free_values) == 0:
+            free_values = np.reshape(np.asarray(free_values, dtype=float), (1,))
+        return self.fn(T, free_values)
+
+
+@lru_cache(maxsize=16)
+def _fused(chain: Chain, free: tuple[int, ...], backend: str) -> Any:
+    program = _Program(chain, free)
+    if program.F is None:
+        return lambdify(program.arguments, program, backend, names=["T"])
+    return _GivenFree(lambdify(program.arguments, program, backend, names=["T", "free_values"]), len(free))
+
+
+def fastest_backend() -> str:
+    """``"c"`` where a C compiler is found, else ``"numba"`` where installed, else ``"numpy"``.
+
+    >>> fastest_backend() in ("c", "numba", "numpy")
+    True
+    """
+    return "c" if compiler() is not None else default_backend()
 
 
 def inverse_kinematics_function(chain: Chain, free: Any = (), backend: str | None = None) -> Any:
@@ -155,10 +346,14 @@ def inverse_kinematics_function(chain: Chain, free: Any = (), backend: str | Non
 
     ``T`` is an array of poses ``(..., 4, 4)``; the result holds, per pose, the ``B``
     generic branches of the closed form (see the module docstring), revolute joints in
-    ``(-pi, pi]``, NaN where a branch does not exist.  ``free`` are joint indices given
-    at call time as ``free_values`` ``(..., k)``; the compiled solver takes those at the
-    ends of the chain (the Panda's seventh joint).  ``backend`` as for
-    :func:`screwsym.lambdify`.  Cached per chain, ``free`` and back end.
+    ``[-pi, pi)``, NaN in every joint of a branch that does not exist.  ``free`` are joint
+    indices given at call time as ``free_values`` ``(..., k)`` (broadcast against the
+    poses); the compiled solver takes those at the ends of the chain (the Panda's seventh
+    joint).  All branches are one generated program (:class:`_Program`), one loop over
+    the poses; ``backend`` as for :func:`screwsym.lambdify`, by default the fastest
+    there is (:func:`fastest_backend`: C where a compiler is found).  One pose
+    ``(4, 4)`` takes the back end's one-point path.  Cached per chain, ``free`` and back
+    end.
 
     >>> import numpy as np
     >>> from screwsym.motion.chain import ur5
@@ -174,8 +369,11 @@ def inverse_kinematics_function(chain: Chain, free: Any = (), backend: str | Non
     >>> far = T.copy(); far[:3, 3] = [5, 0, 0]          # 5 m away: out of reach
     >>> bool(np.isnan(f(far)).all())
     True
+    >>> f(np.stack([T, far])).shape                     # a batch of poses
+    (2, 8, 6)
     """
     if not isinstance(chain, Chain):
         raise TypeError(f"chain: expected a Chain, got {type(chain).__name__}")
     given = tuple(sorted(free_values(free if not isinstance(free, dict) else list(free), chain.n_joints)))
-    return _compiled(chain, given, backend)
+    _solved(chain, given)
+    return _fused(chain, given, fastest_backend() if backend is None else backend)
