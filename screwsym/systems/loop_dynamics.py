@@ -483,6 +483,73 @@ def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: 
     return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
 
 
+def _reaction_system(mech: Mechanism, act: _Actuation, tau: Matrix, qd: Matrix, qdd: Matrix,
+                     g: Any) -> tuple[Matrix, Matrix]:
+    """The linear system ``K w = r`` of the joints' wrenches ``w`` (6 per joint, ray order,
+    joint by joint): each moving link's Newton–Euler balance, then each freedom's
+    reciprocity (zero power on a passive freedom, ``tau`` on an actuated one)."""
+    net = act.net
+    graph = net.graph
+    J, L = len(graph.edges), len(graph.links)
+    F = net.A.cols
+    K = zeros(6 * (L - 1) + F, 6 * J)
+    r = zeros(6 * (L - 1) + F, 1)
+    for e, (a, b, _) in enumerate(graph.edges):
+        for link, sign in ((b, 1), (a, -1)):
+            if link:
+                for i in range(6):
+                    K[6 * (link - 1) + i, 6 * e + i] += sign
+        for k, t in enumerate(net.twists[e]):
+            row = 6 * (L - 1) + graph.offsets[e] + k
+            for i in range(3):  # t^T Delta w = omega . m + v . f
+                K[row, 6 * e + i] = t[3 + i]
+                K[row, 6 * e + 3 + i] = t[i]
+    for c, f in enumerate(act.actuated):
+        r[6 * (L - 1) + f, 0] = tau[c]
+    for n, I in _bodies(mech):
+        charge(STEP_UNITS)
+        V = path_matrix(net, n) * qd
+        Vdot = _link_rate(act, n, qd, qdd)
+        momentum = Matrix(I.matrix) * V
+        D = Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - I.gravity_wrench(g).matrix
+        r[6 * (n - 1):6 * n, 0] = D
+    return K, r
+
+
+def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                    gravity: Any = None) -> tuple:
+    from ..core.wrench import Wrench
+
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+    tau = inverse_dynamics(mech, list(_joint_numbers(mech, act)), list(qa), list(qa2), g)
+    qd = Matrix(act.G * qa)
+    qdd = _accelerations(mech, act, qd, qa2)
+    K, r = _reaction_system(mech, act, tau, qd, qdd, g)
+    aug = Matrix.hstack(K, r)
+    _charge_matrix(aug, 3)
+    dm = DomainMatrix.from_Matrix(aug).to_field()
+    reduced, pivots = dm.rref()
+    if K.cols in pivots:  # pragma: no cover - tau is the virtual-power balance
+        raise ValueError("the Newton-Euler balance of the links has no solution with these "
+                         "actuator forces (inconsistent input)")
+    R = reduced.to_Matrix()
+    w = zeros(K.cols, 1)
+    for i, p in enumerate(pivots):
+        w[p, 0] = R[i, K.cols]  # the free unknowns (a self-stress) are zero
+    w = w.applyfunc(_tidy)
+    return tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
+                 for e in range(len(act.net.graph.edges)))
+
+
+def _joint_numbers(mech: Mechanism, act: _Actuation) -> tuple:
+    """The joint numbers of the actuated freedoms (each actuated joint has one)."""
+    offsets = spanning_tree(mech).offsets
+    return tuple(offsets.index(f) for f in act.actuated)
+
+
 class LoopDynamicsMixin:
     """The closed-loop dynamics methods of :class:`~screwsym.systems.linkage.Mechanism`
     (a module of their own: see the module docstring)."""
@@ -678,3 +745,61 @@ class LoopDynamicsMixin:
         """
         with _bounded(budget, "inverse_dynamics"):
             return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)
+
+    def joint_reactions(self, actuated: Any, rates: Any, accelerations: Any,
+                        gravity: Any = None, *, budget: int = BUDGET) -> tuple:
+        r"""The wrench each joint transmits, for the actuated joints' ``rates`` and
+        ``accelerations`` driven by the forces of :meth:`inverse_dynamics`.
+
+        Explanation
+        ===========
+
+        One :class:`~screwsym.core.wrench.Wrench` per joint, in the order of
+        :attr:`joints`: the wrench the joint ``(a, b, joint)`` exerts on ``b`` (``a``
+        bears its opposite), in the space frame, ray order ``(f; C_O)``.  The links'
+        Newton–Euler balances, ``sum of the joint wrenches on l = M_l dV_l/dt +
+        [V_l, M_l V_l] - W_l``, with each joint's wrench reciprocal to its twists
+        (``$^T Delta w = 0``: no power on a passive freedom), except an actuated
+        joint's, whose power on its unit twist is the actuator force: the reaction
+        includes the actuator.  Exact for exact input; generic with symbols.
+
+        Where the loops are overconstrained (a planar linkage of revolutes: its forces
+        along the axes and its moments about lines in the plane) the balances
+        determine the reactions only up to a *self-stress*, a set of joint wrenches
+        in equilibrium on every link by themselves; the solution returned sets the
+        undetermined unknowns (the free columns of the reduced echelon form, the last
+        joints' last components first) to zero.  For a planar linkage loaded in its
+        plane that is the planar solution: the in-plane forces are the unique ones.
+
+        Examples
+        ========
+
+        The four-bar of :meth:`mass_matrix` at rest under gravity ``-10`` along y.
+        The crank, a point mass of 1 at its pin ``(1, 2, 0)`` held by the torque
+        ``10/7``: the ground pin's wrench on it has moment ``10/7`` about z at ``O``,
+        and its power on the crank's unit twist is that torque; the coupler's pin
+        does no work on its joint.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.core.twist import Twist
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> w = fourbar.joint_reactions([0], [0], [0], [0, -10, 0])
+        >>> w[0]
+        Wrench([40/7, 90/7, 0], [0, 0, 10/7])
+        >>> w[1]                    # along the massless coupler, (2, 1)
+        Wrench([40/7, 20/7, 0], [0, 0, -60/7])
+        >>> from screwsym.core.wrench import power
+        >>> [power(j.twists.screws[0], r) for (_, _, j), r in zip(fourbar.joints, w)]
+        [10/7, 0, 0, 0]
+        """
+        with _bounded(budget, "joint_reactions"):
+            return joint_reactions(cast("Mechanism", self), actuated, rates, accelerations,
+                                   gravity)
