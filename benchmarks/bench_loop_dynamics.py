@@ -129,7 +129,7 @@ def symbolic_part(skip_z):
 
 def pinocchio_fourbar():
     import pinocchio as pin
-    from test_loop_dynamics import A0, B0, D, FOURBAR_BODIES, O
+    from test_loop_dynamics import A0, B0, FOURBAR_BODIES, D, O
 
     model = pin.Model()
     pts = [np.array([float(p[0]), float(p[1]), 0.0]) for p in (O, A0, B0, D)]

@@ -269,7 +269,15 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     else:
         rows = ()
     if len(rows) < len(passive):
-        _check_count(A, k)
+        _check_count(A, k, mech)
+        idle = mech.mobility().passive
+        if idle:
+            raise ValueError(
+                f"actuated: the mechanism has {idle} idle freedoms (a link such as a rod "
+                "between two spherical joints spins about its own axis, moving nothing "
+                "else), which the actuated joints do not determine: the closed-loop dynamics "
+                "of mechanisms with idle freedoms are not supported; replace one spherical "
+                "joint of each such rod by a universal joint")
         with_symbols = " at every value of the symbols" if A.free_symbols else ""
         raise ValueError(
             "actuated: an actuation singularity: the passive joints' columns of the network "
@@ -297,18 +305,25 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     # the other rows hold too unless the actuated rates are constrained (k > the mobility)
     others = [r for r in range(A.rows) if r not in rows]
     if others and not all(e == 0 or vanishes(e) for e in A.extract(others, list(range(F))) * G):
-        _check_count(A, k)
+        _check_count(A, k, mech)
         raise ValueError("actuated: the actuated joints' rates are not independent here")  # pragma: no cover
     return _Actuation(actuated, passive, rows, ImmutableMatrix(G), det,
                       condition, loop_terms(net), ImmutableMatrix(inverse), net)
 
 
-def _check_count(A: Matrix, k: int) -> None:
-    """A ``ValueError`` unless ``k`` is the mobility (the generic one with symbols)."""
+def _check_count(A: Matrix, k: int, mech: Mechanism | None = None) -> None:
+    """A ``ValueError`` unless ``k`` is the mobility (the generic one with symbols); where
+    fewer are given and the mechanism has idle freedoms, the message says so."""
     M = A.cols - field_rank(A)
     if k != M:
+        idle = mech.mobility().passive if mech is not None and k < M else 0
+        extra = "" if not idle else (
+            f"; {idle} of its freedoms are idle (a link such as a rod between two spherical "
+            "joints spins about its own axis, moving nothing else): no actuator drives them, "
+            "and the closed-loop dynamics of mechanisms with idle freedoms are not supported; "
+            "replace one spherical joint of each such rod by a universal joint")
         raise ValueError(f"actuated: expected as many actuated joints as the mobility, {M}, "
-                         f"got {k}")
+                         f"got {k}{extra}")
 
 
 def _tidy(e: Any) -> Any:
@@ -597,6 +612,18 @@ class LoopDynamicsMixin:
         ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
         >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
         Matrix([[5, -60/7, 40/7, -15/7]])
+
+        Signs: a joint ``(a, b, joint)``'s rate is the coefficient of its twist as given,
+        the motion of ``b`` relative to ``a`` about the axis as directed.  The last joint
+        above is written ``("rocker", "ground", ...)``: its rate ``-15/7`` is the ground's
+        turn relative to the rocker, so the rocker turns at ``+15/7`` relative to the
+        ground.  Reversing a joint's pair or its axis reverses its rate, and an actuated
+        joint's force with it (:meth:`inverse_dynamics`).
+
+        >>> flipped = Mechanism(fourbar.joints[:3] + (("ground", "rocker", R([4, 0, 0], z)),),
+        ...                     base="ground")
+        >>> flipped.joint_rates([0], [5]).T
+        Matrix([[5, -60/7, 40/7, 15/7]])
         """
         with _bounded(budget, "joint_rates"):
             return joint_rates(cast("Mechanism", self), actuated, rates)
@@ -721,6 +748,13 @@ class LoopDynamicsMixin:
         link ``l``'s twist, ``dV_l/dt`` its twist rate (:meth:`link_acceleration`),
         ``W_l`` its weight under ``gravity`` (default ``(0, 0, -g)``, ``g`` a
         positive symbol).  Exact; generic with symbols as :meth:`mass_matrix`.
+
+        Signs: each force is the one that does positive work on its joint's rate as
+        :meth:`joint_rates` counts it, the motion of the joint's second link relative
+        to its first about the axis as given.  Reversing an actuated joint's pair
+        ``(a, b)`` or its axis reverses its rate and its force: ask for the rates in the
+        orientation the joints were written in.  The wrench each joint transmits, the
+        actuator's included, is :meth:`joint_reactions`.
 
         Examples
         ========

@@ -923,3 +923,22 @@ def test_joint_reactions_with_symbols_and_bad_input():
         mech.joint_reactions([0, 1], [1, 1], [0, 0])
     with pytest.raises(TypeError, match="rates"):
         mech.joint_reactions([0], 1, [0])
+
+
+def test_a_rod_between_two_spherical_joints_is_refused_clearly():
+    """An R-S-S-R linkage: the rod spins idly about its own axis (mobility 2, one idle
+    freedom); whether one or two joints are actuated, the error names the idle freedom.
+    With a universal joint in place of one S the same linkage has mobility 1 and works."""
+    from screwsym.systems.joints import S, U
+
+    rod = [("g", "crank", R([0, 0, 0], Z)), ("crank", "rod", S([1, 0, 0])),
+           ("rod", "rocker", S([1, 3, 1])), ("rocker", "g", R([3, 3, 0], [1, 0, 0]))]
+    inertias = {"rod": SpatialInertia.point_mass(1, [1, Rational(3, 2), Rational(1, 2)])}
+    mech = Mechanism(rod, base="g", inertias=inertias)
+    with pytest.raises(ValueError, match="mobility, 2, got 1; 1 of its freedoms are idle"):
+        mech.mass_matrix([0])
+    with pytest.raises(ValueError, match="1 idle freedoms .* universal joint"):
+        mech.inverse_dynamics([0, 3], [1, 1], [0, 0])
+    fixed = Mechanism(rod[:1] + [("crank", "rod", U([1, 0, 0], [0, 0, 1], [1, 0, 0]))] + rod[2:],
+                      base="g", inertias=inertias)
+    assert fixed.mass_matrix([0]).shape == (1, 1)
