@@ -236,6 +236,13 @@ def test_fourbar_against_pinocchios_constrained_dynamics():
                                       prox)
 
     assert np.max(np.abs(pinocchio(tau) - ours)) < 1e-12
+    # the constraint's force on the rocker at D (the constraint frame is the world's here):
+    # our last joint ("rocker", "ground") exerts the opposite on the ground
+    pinocchio(tau)
+    force = np.array(cds[0].contact_force.linear)
+    reaction = mech.joint_reactions([0], [qd], [qdd], [0, Rational(-981, 100), 0])[3]
+    assert np.max(np.abs(force + np.array([float(x) for x in reaction.matrix[:3]]))) < 1e-9
+    assert np.max(np.abs(force - np.array([float(x) for x in reaction.matrix[:3]]))) > 1
     assert np.max(np.abs(pinocchio(tau + 1e-6) - ours)) > 1e-12
 
 
