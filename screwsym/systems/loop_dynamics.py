@@ -356,7 +356,7 @@ def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) ->
     c = _quadratic(act.terms, qd)
     qdd = Matrix(act.G * qa2)
     if act.passive:
-        b = act.inverse * -c.extract(list(act.rows), [0])
+        b = _matmul(act.inverse, -c.extract(list(act.rows), [0]))
         for r, p in enumerate(act.passive):
             qdd[p] += b[r]
     qdd = qdd.applyfunc(_tidy)
@@ -373,10 +373,10 @@ def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
     c = _quadratic(act.terms, qx)
     b = zeros(A.cols, 1)
     if act.passive:
-        x = act.inverse * -c.extract(list(act.rows), [0])
+        x = _matmul(act.inverse, -c.extract(list(act.rows), [0]))
         for r, p in enumerate(act.passive):
             b[p] = x[r]
-    residual = A * b + c
+    residual = _matmul(A, b) + c
     rates = sorted(qx.free_symbols, key=str)
     for e in residual:
         e = expand(e)
@@ -388,6 +388,21 @@ def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
                 "rates: the loop closure does not extend to second order along these rates "
                 "(no joint accelerations close the loops: a shaky configuration), or that it "
                 "does could not be proved")
+
+
+def _matmul(X: Matrix, Y: Matrix) -> Matrix:
+    """``X Y`` exactly: for a numeric ``X`` (a configuration in numbers) in the polynomial
+    ring of the entries over the rationals or a number field (the rates as symbols: several
+    times faster than SymPy's generic product), else SymPy's product."""
+    if X.free_symbols:  # a geometry in symbols: SymPy's own product keeps its forms smaller
+        return X * Y
+    dx, dy = DomainMatrix.from_Matrix(X), DomainMatrix.from_Matrix(Y)
+    dx, dy = dx.unify(dy)
+    K = dx.domain
+    ground = K.domain if K.is_PolynomialRing else K
+    if not (ground.is_QQ or ground.is_ZZ or ground.is_AlgebraicField):
+        return X * Y
+    return (dx * dy).to_Matrix()
 
 
 def _quadratic(terms: list, qd: Matrix) -> Matrix:
