@@ -949,3 +949,49 @@ def test_a_rod_between_two_spherical_joints_is_refused_clearly():
     fixed = Mechanism(rod[:1] + [("crank", "rod", U([1, 0, 0], [0, 0, 1], [1, 0, 0]))] + rod[2:],
                       base="g", inertias=inertias)
     assert fixed.mass_matrix([0]).shape == (1, 1)
+
+
+def test_delta_joint_reactions_balance_the_platform_and_do_no_work():
+    """The Delta link by link (21 revolutes, overconstrained by its parallelograms): each
+    reaction is reciprocal to its joint's twist but the actuators', whose power is the
+    arm's torque; the three wrenches on the platform (it translates) sum to its mass times
+    its acceleration minus its weight, ``m (a - g)``, with no moment about its centre, and the
+    reactions at the base sum to the rate of change of the whole mechanism's momentum minus
+    its weight (Newton's second law for the system)."""
+    from _linkages import DELTA_RADIAL, delta_joints
+
+    from screwsym.core.wrench import power
+
+    inertias = {f"arm{i + 1}": SpatialInertia(2, [Rational(5, 2) * e[0], Rational(5, 2) * e[1],
+                                                  Rational(-1, 2)], diag(1, 1, 1))
+                for i, e in enumerate(DELTA_RADIAL)}
+    inertias["platform"] = SpatialInertia(3, [0, 0, -3], diag(1, 1, 2))
+    mech = Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
+                     base="base", inertias=inertias)
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], [0, 0, -10]
+    w = mech.joint_reactions([0, 7, 14], qd, qdd, g)
+    tau = mech.inverse_dynamics([0, 7, 14], qd, qdd, g)
+    powers = [power(j.twists.screws[0], r) for (_, _, j), r in zip(mech.joints, w, strict=True)]
+    assert powers == [tau[0]] + [0] * 6 + [tau[1]] + [0] * 6 + [tau[2]] + [0] * 6
+    a = mech.link_acceleration("platform", [0, 7, 14], qd, qdd)
+    assert a.matrix[:3, 0] == Matrix([0, 0, 0])  # a translation: its twist rate is (0; a)
+    on_platform = w[6] + w[13] + w[20]
+    assert on_platform.matrix[:3, 0] == 3 * (a.matrix[3:, 0] - Matrix(g))
+    assert on_platform.moment_about([0, 0, -3]) == Matrix([0, 0, 0])
+    # the force part of Newton's law for the whole mechanism: only the arms and the
+    # platform have mass, each accelerating its centre of mass as m (a_c - g)
+    arms_c = sum((I.mass * (Matrix(_com_acceleration(mech, link, qd, qdd)) - Matrix(g))
+                  for link, I in inertias.items() if link.startswith("arm")), Matrix([0, 0, 0]))
+    base = w[0] + w[7] + w[14]
+    assert base.matrix[:3, 0] == arms_c + on_platform.matrix[:3, 0]
+    assert base.matrix[:3, 0] != arms_c  # the checker sees the platform's share
+
+
+def _com_acceleration(mech, link, qd, qdd):
+    """A point's acceleration from its link's twist ``(w; v_O)`` and twist rate
+    ``(w'; v_O')``: ``a = v_O' + w' x c + w x (v_O + w x c)``."""
+    V = mech.link_twist(link, [0, 7, 14], qd).matrix
+    A = mech.link_acceleration(link, [0, 7, 14], qd, qdd).matrix
+    c = mech.inertias[link].com
+    w, v, wd, vd = V[:3, 0], V[3:, 0], A[:3, 0], A[3:, 0]
+    return vd + wd.cross(c) + w.cross(v + w.cross(c))
