@@ -47,6 +47,13 @@ swap, so that ``x^T Delta w`` is the power of the wrench ``w`` on the twist ``x`
 ``T = 1/2 sum_l V_l^T Delta M_l V_l``, is ``H = sum_l A_l^T Delta M_l A_l``
 (``Delta M_l`` is symmetric), and ``tau = H qa'' + h(qa')``.
 
+Reactions.  The wrench ``w_j`` joint ``j = (a, b)`` exerts on ``b`` (``-w_j`` on ``a``)
+solves, with the actuator forces ``tau`` above, each moving link's balance
+``sum_j ±w_j = M_l dV_l/dt + [V_l, M_l V_l] - W_l`` and each freedom's reciprocity
+``$^T Delta w_j = 0`` (``tau`` on an actuated freedom) (:meth:`Mechanism.joint_reactions
+<screwsym.systems.linkage.Mechanism.joint_reactions>`); an overconstrained loop leaves a
+self-stress free, set to zero there.
+
 Exact for exact input.  With symbols in the geometry the results are the generic
 ones: they hold where ``det A_p[R] != 0`` (:func:`actuation_condition`;
 ``conds="piecewise"`` returns them with that condition, ``nan`` elsewhere).  With
@@ -810,7 +817,8 @@ class LoopDynamicsMixin:
         [V_l, M_l V_l] - W_l``, with each joint's wrench reciprocal to its twists
         (``$^T Delta w = 0``: no power on a passive freedom), except an actuated
         joint's, whose power on its unit twist is the actuator force: the reaction
-        includes the actuator.  Exact for exact input; generic with symbols.
+        includes the actuator.  Exact for exact input; generic with symbols, holding
+        where :meth:`actuation_condition` does.
 
         Where the loops are overconstrained (a planar linkage of revolutes: its forces
         along the axes and its moments about lines in the plane) the balances
