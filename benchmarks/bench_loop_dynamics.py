@@ -81,6 +81,27 @@ def delta_symbolic(top):
     return Mechanism(delta_at(top), base="base", inertias=delta_inertias(top))
 
 
+def delta_compound(top):
+    """The same Delta with each forearm one compound ``Parallelogram`` joint (12 joints, 4
+    per leg; equal to the link-by-link Delta where the rods have no mass: a test shows it)."""
+    from _linkages import HALF, add, scale, sub
+
+    from screwsym.systems.joints import Parallelogram
+
+    def leg(i, e):
+        u = [-e[1], e[0], 0]
+        b = scale(2, e)
+        elbow = add(add(b, e), [0, 0, -1])
+        attach = add(top, e)
+        pair = Parallelogram(add(elbow, scale(HALF, u)), sub(elbow, scale(HALF, u)),
+                             add(attach, scale(HALF, u)))
+        return [("base", f"arm{i}", R(b, u)), (f"arm{i}", f"upper{i}", R(elbow, u)),
+                (f"upper{i}", f"lower{i}", pair), (f"lower{i}", "platform", R(attach, u))]
+
+    return Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)],
+                     base="base", inertias=delta_inertias(top))
+
+
 def parallelogram(t):
     A, B = [cos(t), sin(t), 0], [cos(t) + 2, sin(t), 0]
     inertias = {"crank": SpatialInertia(1, [cos(t) / 2, sin(t) / 2, 0], diag(1, 1, Rational(1, 5))),
@@ -116,6 +137,20 @@ def symbolic_part(skip_z):
         print(f"   Delta at a symbolic height z: mass matrix {th:.2f} s, inverse dynamics "
               f"(symbolic rates) {ti_s}")
     x, y, z = symbols("x y z", real=True)
+    if not skip_z:
+        mech = delta_compound([0, 0, z])
+        _, th = timed(mech.mass_matrix, [0, 4, 8])
+        print(f"   Delta with compound parallelograms at a symbolic height z: mass matrix "
+              f"{th:.2f} s")
+        mech = delta_compound([x, y, z])
+        try:
+            mech.mass_matrix([0, 4, 8])
+        except ValueError:
+            print("   Delta with compound parallelograms at (x, y, z): refused by the default "
+                  "budget")
+        H, th = timed(mech.mass_matrix, [0, 4, 8], budget=10**12)
+        print(f"   ... with budget=10**12: mass matrix {th:.2f} s "
+              f"({sum(len(str(e)) for e in H)} characters)")
     mech = delta_symbolic([x, y, z])
     t0 = time.perf_counter()
     try:
