@@ -8,6 +8,8 @@ r"""Floats: the chapter's operations generated as vectorised functions, and nume
   :func:`jacobian_map`, transmission indices and Jacobians over a grid;
 - :mod:`~screwsym.numeric.dynamics`: a chain's dynamics as generated functions,
   :func:`forward_dynamics`;
+- :mod:`~screwsym.numeric.loop_dynamics`: a closed loop's inverse dynamics and mass
+  matrix as generated functions of its configuration's symbols;
 - :mod:`~screwsym.numeric.ik`: :func:`inverse_kinematics_function`, every closed-form
   inverse kinematics branch at many poses.
 
@@ -21,6 +23,7 @@ from . import screws
 from ._direct import recycle_results
 from .dynamics import DynamicsFunctions, dynamics_functions, forward_dynamics
 from .ik import inverse_kinematics_function
+from .loop_dynamics import LoopDynamicsFunctions, loop_dynamics_functions
 from .mobility import MobilityMap, mobility_map
 from .screws import NAMES, functions_for
 from .transmission import TransmissionMap, jacobian_map, transmission_map
@@ -28,7 +31,8 @@ from .transmission import TransmissionMap, jacobian_map, transmission_map
 __all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map",
            "DynamicsFunctions", "dynamics_functions", "forward_dynamics",
            "TransmissionMap", "transmission_map", "jacobian_map",
-           "recycle_results", "inverse_kinematics_function"]
+           "recycle_results", "inverse_kinematics_function",
+           "LoopDynamicsFunctions", "loop_dynamics_functions"]
 
 
 def __getattr__(name: str) -> Callable:

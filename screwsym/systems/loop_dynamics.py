@@ -47,6 +47,13 @@ swap, so that ``x^T Delta w`` is the power of the wrench ``w`` on the twist ``x`
 ``T = 1/2 sum_l V_l^T Delta M_l V_l``, is ``H = sum_l A_l^T Delta M_l A_l``
 (``Delta M_l`` is symmetric), and ``tau = H qa'' + h(qa')``.
 
+Reactions.  The wrench ``w_j`` joint ``j = (a, b)`` exerts on ``b`` (``-w_j`` on ``a``)
+solves, with the actuator forces ``tau`` above, each moving link's balance
+``sum_j ±w_j = M_l dV_l/dt + [V_l, M_l V_l] - W_l`` and each freedom's reciprocity
+``$^T Delta w_j = 0`` (``tau`` on an actuated freedom) (:meth:`Mechanism.joint_reactions
+<screwsym.systems.linkage.Mechanism.joint_reactions>`); an overconstrained loop leaves a
+self-stress free, set to zero there.
+
 Exact for exact input.  With symbols in the geometry the results are the generic
 ones: they hold where ``det A_p[R] != 0`` (:func:`actuation_condition`;
 ``conds="piecewise"`` returns them with that condition, ``nan`` elsewhere).  With
@@ -269,7 +276,15 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     else:
         rows = ()
     if len(rows) < len(passive):
-        _check_count(A, k)
+        _check_count(A, k, mech)
+        idle = mech.mobility().passive
+        if idle:
+            raise ValueError(
+                f"actuated: the mechanism has {idle} idle freedoms (a link such as a rod "
+                "between two spherical joints spins about its own axis, moving nothing "
+                "else), which the actuated joints do not determine: the closed-loop dynamics "
+                "of mechanisms with idle freedoms are not supported; replace one spherical "
+                "joint of each such rod by a universal joint")
         with_symbols = " at every value of the symbols" if A.free_symbols else ""
         raise ValueError(
             "actuated: an actuation singularity: the passive joints' columns of the network "
@@ -297,18 +312,25 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
     # the other rows hold too unless the actuated rates are constrained (k > the mobility)
     others = [r for r in range(A.rows) if r not in rows]
     if others and not all(e == 0 or vanishes(e) for e in A.extract(others, list(range(F))) * G):
-        _check_count(A, k)
+        _check_count(A, k, mech)
         raise ValueError("actuated: the actuated joints' rates are not independent here")  # pragma: no cover
     return _Actuation(actuated, passive, rows, ImmutableMatrix(G), det,
                       condition, loop_terms(net), ImmutableMatrix(inverse), net)
 
 
-def _check_count(A: Matrix, k: int) -> None:
-    """A ``ValueError`` unless ``k`` is the mobility (the generic one with symbols)."""
+def _check_count(A: Matrix, k: int, mech: Mechanism | None = None) -> None:
+    """A ``ValueError`` unless ``k`` is the mobility (the generic one with symbols); where
+    fewer are given and the mechanism has idle freedoms, the message says so."""
     M = A.cols - field_rank(A)
     if k != M:
+        idle = mech.mobility().passive if mech is not None and k < M else 0
+        extra = "" if not idle else (
+            f"; {idle} of its freedoms are idle (a link such as a rod between two spherical "
+            "joints spins about its own axis, moving nothing else): no actuator drives them, "
+            "and the closed-loop dynamics of mechanisms with idle freedoms are not supported; "
+            "replace one spherical joint of each such rod by a universal joint")
         raise ValueError(f"actuated: expected as many actuated joints as the mobility, {M}, "
-                         f"got {k}")
+                         f"got {k}{extra}")
 
 
 def _tidy(e: Any) -> Any:
@@ -341,7 +363,7 @@ def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) ->
     c = _quadratic(act.terms, qd)
     qdd = Matrix(act.G * qa2)
     if act.passive:
-        b = act.inverse * -c.extract(list(act.rows), [0])
+        b = _matmul(act.inverse, -c.extract(list(act.rows), [0]))
         for r, p in enumerate(act.passive):
             qdd[p] += b[r]
     qdd = qdd.applyfunc(_tidy)
@@ -358,10 +380,10 @@ def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
     c = _quadratic(act.terms, qx)
     b = zeros(A.cols, 1)
     if act.passive:
-        x = act.inverse * -c.extract(list(act.rows), [0])
+        x = _matmul(act.inverse, -c.extract(list(act.rows), [0]))
         for r, p in enumerate(act.passive):
             b[p] = x[r]
-    residual = A * b + c
+    residual = _matmul(A, b) + c
     rates = sorted(qx.free_symbols, key=str)
     for e in residual:
         e = expand(e)
@@ -373,6 +395,21 @@ def _check_second_order(act: _Actuation, A: Matrix, qd: Matrix) -> None:
                 "rates: the loop closure does not extend to second order along these rates "
                 "(no joint accelerations close the loops: a shaky configuration), or that it "
                 "does could not be proved")
+
+
+def _matmul(X: Matrix, Y: Matrix) -> Matrix:
+    """``X Y`` exactly: for a numeric ``X`` (a configuration in numbers) in the polynomial
+    ring of the entries over the rationals or a number field (the rates as symbols: several
+    times faster than SymPy's generic product), else SymPy's product."""
+    if X.free_symbols:  # a geometry in symbols: SymPy's own product keeps its forms smaller
+        return X * Y
+    dx, dy = DomainMatrix.from_Matrix(X), DomainMatrix.from_Matrix(Y)
+    dx, dy = dx.unify(dy)
+    K = dx.domain
+    ground = K.domain if K.is_PolynomialRing else K
+    if not (ground.is_QQ or ground.is_ZZ or ground.is_AlgebraicField):
+        return X * Y
+    return (dx * dy).to_Matrix()
 
 
 def _quadratic(terms: list, qd: Matrix) -> Matrix:
@@ -483,6 +520,73 @@ def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: 
     return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
 
 
+def _reaction_system(mech: Mechanism, act: _Actuation, tau: Matrix, qd: Matrix, qdd: Matrix,
+                     g: Any) -> tuple[Matrix, Matrix]:
+    """The linear system ``K w = r`` of the joints' wrenches ``w`` (6 per joint, ray order,
+    joint by joint): each moving link's Newton–Euler balance, then each freedom's
+    reciprocity (zero power on a passive freedom, ``tau`` on an actuated one)."""
+    net = act.net
+    graph = net.graph
+    J, L = len(graph.edges), len(graph.links)
+    F = net.A.cols
+    K = zeros(6 * (L - 1) + F, 6 * J)
+    r = zeros(6 * (L - 1) + F, 1)
+    for e, (a, b, _) in enumerate(graph.edges):
+        for link, sign in ((b, 1), (a, -1)):
+            if link:
+                for i in range(6):
+                    K[6 * (link - 1) + i, 6 * e + i] += sign
+        for k, t in enumerate(net.twists[e]):
+            row = 6 * (L - 1) + graph.offsets[e] + k
+            for i in range(3):  # t^T Delta w = omega . m + v . f
+                K[row, 6 * e + i] = t[3 + i]
+                K[row, 6 * e + 3 + i] = t[i]
+    for c, f in enumerate(act.actuated):
+        r[6 * (L - 1) + f, 0] = tau[c]
+    for n, I in _bodies(mech):
+        charge(STEP_UNITS)
+        V = path_matrix(net, n) * qd
+        Vdot = _link_rate(act, n, qd, qdd)
+        momentum = Matrix(I.matrix) * V
+        D = Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - I.gravity_wrench(g).matrix
+        r[6 * (n - 1):6 * n, 0] = D
+    return K, r
+
+
+def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                    gravity: Any = None) -> tuple:
+    from ..core.wrench import Wrench
+
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+    tau = inverse_dynamics(mech, list(_joint_numbers(mech, act)), list(qa), list(qa2), g)
+    qd = Matrix(act.G * qa)
+    qdd = _accelerations(mech, act, qd, qa2)
+    K, r = _reaction_system(mech, act, tau, qd, qdd, g)
+    aug = Matrix.hstack(K, r)
+    _charge_matrix(aug, 3)
+    dm = DomainMatrix.from_Matrix(aug).to_field()
+    reduced, pivots = dm.rref()
+    if K.cols in pivots:  # pragma: no cover - tau is the virtual-power balance
+        raise ValueError("the Newton-Euler balance of the links has no solution with these "
+                         "actuator forces (inconsistent input)")
+    R = reduced.to_Matrix()
+    w = zeros(K.cols, 1)
+    for i, p in enumerate(pivots):
+        w[p, 0] = R[i, K.cols]  # the free unknowns (a self-stress) are zero
+    w = w.applyfunc(_tidy)
+    return tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
+                 for e in range(len(act.net.graph.edges)))
+
+
+def _joint_numbers(mech: Mechanism, act: _Actuation) -> tuple:
+    """The joint numbers of the actuated freedoms (each actuated joint has one)."""
+    offsets = spanning_tree(mech).offsets
+    return tuple(offsets.index(f) for f in act.actuated)
+
+
 class LoopDynamicsMixin:
     """The closed-loop dynamics methods of :class:`~screwsym.systems.linkage.Mechanism`
     (a module of their own: see the module docstring)."""
@@ -530,6 +634,18 @@ class LoopDynamicsMixin:
         ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
         >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
         Matrix([[5, -60/7, 40/7, -15/7]])
+
+        Signs: a joint ``(a, b, joint)``'s rate is the coefficient of its twist as given,
+        the motion of ``b`` relative to ``a`` about the axis as directed.  The last joint
+        above is written ``("rocker", "ground", ...)``: its rate ``-15/7`` is the ground's
+        turn relative to the rocker, so the rocker turns at ``+15/7`` relative to the
+        ground.  Reversing a joint's pair or its axis reverses its rate, and an actuated
+        joint's force with it (:meth:`inverse_dynamics`).
+
+        >>> flipped = Mechanism(fourbar.joints[:3] + (("ground", "rocker", R([4, 0, 0], z)),),
+        ...                     base="ground")
+        >>> flipped.joint_rates([0], [5]).T
+        Matrix([[5, -60/7, 40/7, 15/7]])
         """
         with _bounded(budget, "joint_rates"):
             return joint_rates(cast("Mechanism", self), actuated, rates)
@@ -655,6 +771,13 @@ class LoopDynamicsMixin:
         ``W_l`` its weight under ``gravity`` (default ``(0, 0, -g)``, ``g`` a
         positive symbol).  Exact; generic with symbols as :meth:`mass_matrix`.
 
+        Signs: each force is the one that does positive work on its joint's rate as
+        :meth:`joint_rates` counts it, the motion of the joint's second link relative
+        to its first about the axis as given.  Reversing an actuated joint's pair
+        ``(a, b)`` or its axis reverses its rate and its force: ask for the rates in the
+        orientation the joints were written in.  The wrench each joint transmits, the
+        actuator's included, is :meth:`joint_reactions`.
+
         Examples
         ========
 
@@ -678,3 +801,62 @@ class LoopDynamicsMixin:
         """
         with _bounded(budget, "inverse_dynamics"):
             return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)
+
+    def joint_reactions(self, actuated: Any, rates: Any, accelerations: Any,
+                        gravity: Any = None, *, budget: int = BUDGET) -> tuple:
+        r"""The wrench each joint transmits, for the actuated joints' ``rates`` and
+        ``accelerations`` driven by the forces of :meth:`inverse_dynamics`.
+
+        Explanation
+        ===========
+
+        One :class:`~screwsym.core.wrench.Wrench` per joint, in the order of
+        :attr:`joints`: the wrench the joint ``(a, b, joint)`` exerts on ``b`` (``a``
+        bears its opposite), in the space frame, ray order ``(f; C_O)``.  The links'
+        Newton–Euler balances, ``sum of the joint wrenches on l = M_l dV_l/dt +
+        [V_l, M_l V_l] - W_l``, with each joint's wrench reciprocal to its twists
+        (``$^T Delta w = 0``: no power on a passive freedom), except an actuated
+        joint's, whose power on its unit twist is the actuator force: the reaction
+        includes the actuator.  Exact for exact input; generic with symbols, holding
+        where :meth:`actuation_condition` does.
+
+        Where the loops are overconstrained (a planar linkage of revolutes: its forces
+        along the axes and its moments about lines in the plane) the balances
+        determine the reactions only up to a *self-stress*, a set of joint wrenches
+        in equilibrium on every link by themselves; the solution returned sets the
+        undetermined unknowns (the free columns of the reduced echelon form, the last
+        joints' last components first) to zero.  For a planar linkage loaded in its
+        plane that is the planar solution: the in-plane forces are the unique ones.
+
+        Examples
+        ========
+
+        The four-bar of :meth:`mass_matrix` at rest under gravity ``-10`` along y.
+        The crank, a point mass of 1 at its pin ``(1, 2, 0)`` held by the torque
+        ``10/7``: the ground pin's wrench on it has moment ``10/7`` about z at ``O``,
+        and its power on the crank's unit twist is that torque; the coupler's pin
+        does no work on its joint.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.core.twist import Twist
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> w = fourbar.joint_reactions([0], [0], [0], [0, -10, 0])
+        >>> w[0]
+        Wrench([40/7, 90/7, 0], [0, 0, 10/7])
+        >>> w[1]                    # along the massless coupler, (2, 1)
+        Wrench([40/7, 20/7, 0], [0, 0, -60/7])
+        >>> from screwsym.core.wrench import power
+        >>> [power(j.twists.screws[0], r) for (_, _, j), r in zip(fourbar.joints, w)]
+        [10/7, 0, 0, 0]
+        """
+        with _bounded(budget, "joint_reactions"):
+            return joint_reactions(cast("Mechanism", self), actuated, rates, accelerations,
+                                   gravity)

@@ -236,6 +236,13 @@ def test_fourbar_against_pinocchios_constrained_dynamics():
                                       prox)
 
     assert np.max(np.abs(pinocchio(tau) - ours)) < 1e-12
+    # the constraint's force on the rocker at D (the constraint frame is the world's here):
+    # our last joint ("rocker", "ground") exerts the opposite on the ground
+    pinocchio(tau)
+    force = np.array(cds[0].contact_force.linear)
+    reaction = mech.joint_reactions([0], [qd], [qdd], [0, Rational(-981, 100), 0])[3]
+    assert np.max(np.abs(force + np.array([float(x) for x in reaction.matrix[:3]]))) < 1e-9
+    assert np.max(np.abs(force - np.array([float(x) for x in reaction.matrix[:3]]))) > 1
     assert np.max(np.abs(pinocchio(tau + 1e-6) - ours)) > 1e-12
 
 
@@ -835,3 +842,156 @@ def test_fourbar_released_under_gravity_conserves_energy_and_stays_closed():
         k4 = wrong(s + dt * k3)
         s = s + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
     assert abs(energy(s) - E0) > 1e-8 * kinetic
+
+
+# ------------------------------------------------------------------ joint reactions
+def fourbar_pin_forces(qd, qdd, gravity):
+    """The four-bar's pin forces and crank torque by hand: the planar Newton–Euler equations
+    of each link (Uicker, Pennock & Shigley, 5th ed., ch. 15, the four-bar's force analysis),
+    the links' accelerations from the two-circle closure differentiated by mpmath.
+
+    Unknowns: the force of each joint ``(a, b)`` on ``b`` (ground on crank at O, crank on
+    coupler at A, coupler on rocker at B, rocker on ground at D) and the crank torque."""
+    o, a0, b0, d = (vec(p) for p in (O, A0, B0, D))
+    a, b, c = dist(o, a0), dist(a0, b0), dist(d, b0)
+    sign = side(a0, d, b0)
+    q0 = mp.atan2(a0[1], a0[0])
+
+    def pose(q):
+        A = [a * mp.cos(q), a * mp.sin(q)]
+        B = circles(A, b, d, c, sign)
+        poses = {"crank": (o, a0, o, A), "coupler": (a0, b0, A, B), "rocker": (d, b0, d, B)}
+        out = {}
+        for name, _, com, _ in FOURBAR_BODIES:
+            p0, t0, p, t = poses[name]
+            cq, e = body(p0, t0, vec(com), p, t)
+            out[name] = (cq, mp.atan2(e[1], e[0]))
+        return out
+
+    def accel(f):  # d2/dt2 of f(q(t)) at q0: f' qdd + f'' qd^2
+        return mp.diff(f, q0, 1) * qdd + mp.diff(f, q0, 2) * qd**2
+
+    g = _mp(gravity)
+    M = mp.zeros(9, 9)
+    rhs = mp.zeros(9, 1)
+    pins = [o, a0, b0, d]
+    for k, (name, m, com, I) in enumerate(FOURBAR_BODIES):
+        m = _mp(m)[0]
+        cc = vec(com)
+        ax = accel(lambda q, name=name: pose(q)[name][0][0])
+        ay = accel(lambda q, name=name: pose(q)[name][0][1])
+        alpha = accel(lambda q, name=name: pose(q)[name][1])
+        # forces on link k: +F_k at pin k (joint k's b is link k), -F_{k+1} at pin k+1
+        for j, s in ((k, 1), (k + 1, -1)):
+            P = pins[j]
+            M[3 * k, 2 * j] += s
+            M[3 * k + 1, 2 * j + 1] += s
+            M[3 * k + 2, 2 * j] += -s * (P[1] - cc[1])  # (P - c) x F, z component
+            M[3 * k + 2, 2 * j + 1] += s * (P[0] - cc[0])
+        if k == 0:
+            M[2, 8] = 1  # the crank torque from the ground
+        rhs[3 * k] = m * ax - m * g[0]
+        rhs[3 * k + 1] = m * ay - m * g[1]
+        rhs[3 * k + 2] = _mp(I[2, 2])[0] * alpha
+    x = mp.lu_solve(M, rhs)
+    return [x[i] for i in range(9)]
+
+
+def test_fourbar_joint_reactions_match_the_hand_newton_euler_and_do_no_work():
+    """The reactions of a moving four-bar under gravity against each link's planar
+    Newton–Euler balance solved by hand (the in-plane pin forces and the crank torque are
+    determinate; the out-of-plane part, a self-stress of the overconstrained planar loop, is
+    not), and each reaction reciprocal to its joint's twist but the crank's, whose power on
+    it is the crank torque of ``inverse_dynamics``."""
+    from screwsym.core.wrench import power
+
+    mech = fourbar()
+    qd, qdd, g = Rational(3, 2), Rational(-2, 3), [0, Rational(-981, 100), 0]
+    w = mech.joint_reactions([0], [qd], [qdd], g)
+    assert len(w) == 4 and all(x.free_symbols == set() for x in w)
+    tau = mech.inverse_dynamics([0], [qd], [qdd], g)[0]
+    powers = [power(j.twists.screws[0], r) for (_, _, j), r in zip(mech.joints, w, strict=True)]
+    assert powers == [tau, 0, 0, 0]
+    truth = fourbar_pin_forces(_mp(qd)[0], _mp(qdd)[0], g)
+    ours = [c for r in w for c in (r.matrix[0], r.matrix[1])] + [tau]
+    assert agrees(ours, truth)
+    # the checker rejects a pin force off by 1e-12
+    assert not agrees(ours[:3] + [ours[3] + Rational(1, 10**12)] + ours[4:], truth)
+
+
+def test_joint_reactions_with_symbols_and_bad_input():
+    """Symbolic rates give the reactions as polynomials in them; bad input is refused."""
+    s = symbols("s", real=True)
+    mech = fourbar()
+    w = mech.joint_reactions([0], [s], [0], [0, -10, 0])
+    at = mech.joint_reactions([0], [2], [0], [0, -10, 0])
+    assert [x.subs(s, 2) for x in w] == list(at)
+    with pytest.raises(ValueError, match="actuated"):
+        mech.joint_reactions([0, 1], [1, 1], [0, 0])
+    with pytest.raises(TypeError, match="rates"):
+        mech.joint_reactions([0], 1, [0])
+
+
+def test_a_rod_between_two_spherical_joints_is_refused_clearly():
+    """An R-S-S-R linkage: the rod spins idly about its own axis (mobility 2, one idle
+    freedom); whether one or two joints are actuated, the error names the idle freedom.
+    With a universal joint in place of one S the same linkage has mobility 1 and works."""
+    from screwsym.systems.joints import S, U
+
+    rod = [("g", "crank", R([0, 0, 0], Z)), ("crank", "rod", S([1, 0, 0])),
+           ("rod", "rocker", S([1, 3, 1])), ("rocker", "g", R([3, 3, 0], [1, 0, 0]))]
+    inertias = {"rod": SpatialInertia.point_mass(1, [1, Rational(3, 2), Rational(1, 2)])}
+    mech = Mechanism(rod, base="g", inertias=inertias)
+    with pytest.raises(ValueError, match="mobility, 2, got 1; 1 of its freedoms are idle"):
+        mech.mass_matrix([0])
+    with pytest.raises(ValueError, match="1 idle freedoms .* universal joint"):
+        mech.inverse_dynamics([0, 3], [1, 1], [0, 0])
+    fixed = Mechanism(rod[:1] + [("crank", "rod", U([1, 0, 0], [0, 0, 1], [1, 0, 0]))] + rod[2:],
+                      base="g", inertias=inertias)
+    assert fixed.mass_matrix([0]).shape == (1, 1)
+
+
+def test_delta_joint_reactions_balance_the_platform_and_do_no_work():
+    """The Delta link by link (21 revolutes, overconstrained by its parallelograms): each
+    reaction is reciprocal to its joint's twist but the actuators', whose power is the
+    arm's torque; the three wrenches on the platform (it translates) sum to its mass times
+    its acceleration minus its weight, ``m (a - g)``, with no moment about its centre, and the
+    reactions at the base sum to the rate of change of the whole mechanism's momentum minus
+    its weight (Newton's second law for the system)."""
+    from _linkages import DELTA_RADIAL, delta_joints
+
+    from screwsym.core.wrench import power
+
+    inertias = {f"arm{i + 1}": SpatialInertia(2, [Rational(5, 2) * e[0], Rational(5, 2) * e[1],
+                                                  Rational(-1, 2)], diag(1, 1, 1))
+                for i, e in enumerate(DELTA_RADIAL)}
+    inertias["platform"] = SpatialInertia(3, [0, 0, -3], diag(1, 1, 2))
+    mech = Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
+                     base="base", inertias=inertias)
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], [0, 0, -10]
+    w = mech.joint_reactions([0, 7, 14], qd, qdd, g)
+    tau = mech.inverse_dynamics([0, 7, 14], qd, qdd, g)
+    powers = [power(j.twists.screws[0], r) for (_, _, j), r in zip(mech.joints, w, strict=True)]
+    assert powers == [tau[0]] + [0] * 6 + [tau[1]] + [0] * 6 + [tau[2]] + [0] * 6
+    a = mech.link_acceleration("platform", [0, 7, 14], qd, qdd)
+    assert a.matrix[:3, 0] == Matrix([0, 0, 0])  # a translation: its twist rate is (0; a)
+    on_platform = w[6] + w[13] + w[20]
+    assert on_platform.matrix[:3, 0] == 3 * (a.matrix[3:, 0] - Matrix(g))
+    assert on_platform.moment_about([0, 0, -3]) == Matrix([0, 0, 0])
+    # the force part of Newton's law for the whole mechanism: only the arms and the
+    # platform have mass, each accelerating its centre of mass as m (a_c - g)
+    arms_c = sum((I.mass * (Matrix(_com_acceleration(mech, link, qd, qdd)) - Matrix(g))
+                  for link, I in inertias.items() if link.startswith("arm")), Matrix([0, 0, 0]))
+    base = w[0] + w[7] + w[14]
+    assert base.matrix[:3, 0] == arms_c + on_platform.matrix[:3, 0]
+    assert base.matrix[:3, 0] != arms_c  # the checker sees the platform's share
+
+
+def _com_acceleration(mech, link, qd, qdd):
+    """A point's acceleration from its link's twist ``(w; v_O)`` and twist rate
+    ``(w'; v_O')``: ``a = v_O' + w' x c + w x (v_O + w x c)``."""
+    V = mech.link_twist(link, [0, 7, 14], qd).matrix
+    A = mech.link_acceleration(link, [0, 7, 14], qd, qdd).matrix
+    c = mech.inertias[link].com
+    w, v, wd, vd = V[:3, 0], V[3:, 0], A[:3, 0], A[3:, 0]
+    return vd + wd.cross(c) + w.cross(v + w.cross(c))

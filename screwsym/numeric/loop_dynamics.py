@@ -1,0 +1,135 @@
+r"""A closed loop's dynamics as generated numeric functions of its configuration's symbols.
+
+:func:`loop_dynamics_functions` takes a :class:`~screwsym.systems.linkage.Mechanism` with
+inertias whose configuration is given by symbols (a crank angle, a platform's height, the
+parameters of a family of closed configurations), forms the closed-form inverse dynamics
+and mass matrix of :meth:`Mechanism.inverse_dynamics
+<screwsym.systems.linkage.Mechanism.inverse_dynamics>` and :meth:`Mechanism.mass_matrix
+<screwsym.systems.linkage.Mechanism.mass_matrix>` once, exactly, with the actuated rates
+and accelerations as symbols, and compiles them through :func:`screwsym.lambdify`
+(common subexpressions eliminated: one straight-line program per function) on any back
+end.  The result is ``tau(p, qd, qdd)`` and ``H(p)`` over batches of states.
+
+The functions hold where the closed forms do: off the actuation singularities of
+:meth:`Mechanism.actuation_condition
+<screwsym.systems.linkage.Mechanism.actuation_condition>` (there they divide by zero) and
+on configurations that close the loops (the symbols' values must describe one).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from typing import Any, NamedTuple
+
+from sympy import Dummy, ImmutableMatrix, Matrix, Symbol
+
+from ..algebra.budget import BUDGET
+from ..codegen import lambdify
+from ..core.checks import check_count, check_sequence, check_vector
+from .dynamics import _shaped
+
+__all__ = ["LoopDynamicsFunctions", "loop_dynamics_functions"]
+
+
+class LoopDynamicsFunctions(NamedTuple):
+    """Batched numeric functions of a closed loop: arrays ``(..., m)`` and ``(..., k)`` in."""
+
+    #: ``inverse_dynamics(p, qd, qdd)``: the actuator forces, ``(..., k)``
+    inverse_dynamics: Any
+    #: ``mass_matrix(p)``: ``(..., k, k)``
+    mass_matrix: Any
+    #: the closed form of the actuator forces in ``symbols``, the rates ``qd`` and
+    #: accelerations ``qdd`` (a ``k x 1`` matrix)
+    tau: ImmutableMatrix
+    #: the closed-form mass matrix in ``symbols``
+    H: ImmutableMatrix
+    #: the rate and acceleration symbols of ``tau``
+    rates: tuple
+    accelerations: tuple
+
+
+@lru_cache(maxsize=16)
+def _functions(mech: Any, actuated: tuple, symbols: tuple, gravity: ImmutableMatrix,
+               backend: str | None, budget: int) -> LoopDynamicsFunctions:
+    k = len(actuated)
+    qd = tuple(Dummy(f"qd{i}", real=True) for i in range(k))
+    qdd = tuple(Dummy(f"qdd{i}", real=True) for i in range(k))
+    tau = mech.inverse_dynamics(list(actuated), list(qd), list(qdd), list(gravity),
+                                budget=budget)
+    H = mech.mass_matrix(list(actuated), budget=budget)
+    p = Matrix(symbols)
+    return LoopDynamicsFunctions(
+        _shaped(lambdify([p, Matrix(qd), Matrix(qdd)], tau, backend,
+                         names=["p", "qd", "qdd"]), (k,)),
+        _shaped(lambdify([p], H, backend, names=["p"]), (k, k)),
+        tau, H, qd, qdd)
+
+
+def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
+                            gravity: Any = (0, 0, -9.81), backend: str | None = None, *,
+                            budget: int = BUDGET) -> LoopDynamicsFunctions:
+    r"""The closed loop's inverse dynamics and mass matrix as batched numeric functions.
+
+    ``mech`` a :class:`~screwsym.systems.linkage.Mechanism` with inertias, ``actuated``
+    the actuated joints' numbers, ``symbols`` the symbols its configuration (joints and
+    inertias) is given in, in the order of the argument ``p`` (``(..., m)``); ``gravity``
+    numbers (default ``(0, 0, -9.81)``); ``backend`` as for :func:`screwsym.lambdify`.
+    ``budget`` bounds the exact closed forms (:mod:`screwsym.algebra.budget`; past it a
+    ``ValueError``).  Cached per mechanism, actuation, symbols, gravity and back end.
+
+    A parallelogram four-bar whose crank, at angle ``t``, carries a point mass of 2 at its
+    pin: the coupler translates, the mass moves on the crank's circle, so the crank needs
+    ``2 qdd + 2 * 10 cos(t)`` under gravity ``-10`` along y.
+
+    >>> import numpy as np
+    >>> from sympy import cos, sin, symbols
+    >>> from screwsym.core.inertia import SpatialInertia
+    >>> from screwsym.systems.joints import R
+    >>> from screwsym.systems.linkage import Mechanism
+    >>> t = symbols("t", real=True)
+    >>> z, A = [0, 0, 1], [cos(t), sin(t), 0]
+    >>> four = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+    ...                   ("crank", "coupler", R(A, z)),
+    ...                   ("coupler", "rocker", R([cos(t) + 2, sin(t), 0], z)),
+    ...                   ("rocker", "ground", R([2, 0, 0], z))], base="ground",
+    ...                  inertias={"crank": SpatialInertia.point_mass(2, A)})
+    >>> f = loop_dynamics_functions(four, [0], [t], gravity=(0, -10, 0), backend="numpy")
+    >>> f.inverse_dynamics(np.array([[0.0], [np.pi / 3]]), np.ones((2, 1)),
+    ...                    np.full((2, 1), 0.5)).round(12)
+    array([[21.],
+           [11.]])
+    >>> f.mass_matrix(np.array([0.3]))
+    array([[2.]])
+    """
+    from ..systems.linkage import Mechanism
+
+    if not isinstance(mech, Mechanism):
+        raise TypeError(f"mech: expected a Mechanism, got {type(mech).__name__}")
+    if not mech.inertia_pairs:
+        raise ValueError("mech: the mechanism has no inertias; build it with "
+                         "Mechanism(..., inertias={link: SpatialInertia(...)})")
+    acts = check_sequence(actuated, "actuated", "joint numbers")
+    syms = check_sequence(symbols, "symbols", "symbols")
+    for i, s in enumerate(syms):
+        if not isinstance(s, Symbol):
+            raise TypeError(f"symbols[{i}]: expected a Symbol, got {s!r}")
+    if len(set(syms)) != len(syms):
+        raise ValueError("symbols: a symbol is given twice")
+    g = check_vector(gravity, "gravity")
+    if g.free_symbols:
+        raise ValueError(f"gravity: expected numbers, got {list(g)}")
+    missing = _free_symbols(mech) - set(syms)
+    if missing:
+        raise ValueError("symbols: the mechanism's configuration has the symbols "
+                         f"{sorted(map(str, missing))} not among them")
+    return _functions(mech, tuple(int(a) if isinstance(a, int) else a for a in acts),
+                      tuple(syms), ImmutableMatrix(g), backend, check_count(budget, "budget"))
+
+
+def _free_symbols(mech: Any) -> set:
+    out: set = set()
+    for _, _, j in mech.joints:
+        out |= j.free_symbols
+    for p in mech.inertia_pairs:
+        out |= p.args[1].free_symbols
+    return out
