@@ -331,24 +331,26 @@ def _entry(e: Expr) -> Expr:
     return e
 
 
-def _exp(t: Twist, q: Expr) -> Motion:
+def motion_exp(t: Twist, q: Expr) -> Motion:
     """``exp6(t, q)`` as ``(R, p)``, numbers tidied."""
     T = exp6(t, q)
     return T.R.applyfunc(_entry), T.p.applyfunc(_entry)
 
 
-def _compose(a: Motion, b: Motion) -> Motion:
+def motion_product(a: Motion, b: Motion) -> Motion:
+    """The product of two motions ``(R, p)``, entries tidied (``numeric.ik`` builds its program with it)."""
     return (a[0] * b[0]).applyfunc(_clean_entry), (a[0] * b[1] + a[1]).applyfunc(_clean_entry)
 
 
-def _inverse(a: Motion) -> Motion:
+def motion_inverse(a: Motion) -> Motion:
+    """The inverse of a motion ``(R, p)``: ``(R^T, -R^T p)``."""
     return a[0].T, (-a[0].T * a[1]).applyfunc(_clean_entry)
 
 
 def _product(ts: Sequence[Twist], qs: Sequence[Expr]) -> Motion:
     M: Motion = (ImmutableMatrix.eye(3), ORIGIN)
     for t, q in zip(ts, qs, strict=True):
-        M = _compose(M, _exp(t, q))
+        M = motion_product(M, motion_exp(t, q))
     return M
 
 
@@ -474,12 +476,12 @@ def _spherical_wrist(t: Sequence[Twist]) -> tuple[Stage, ...] | None:
 
     def wrist(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # E = (e1 e2 e3)^-1 g fixes c (the first stages put g c = e1 e2 e3 c): |E p - c| = |p - c|
-        E = _compose(_inverse(_product(t[:3], [q[0], q[1], q[2]])), g)
+        E = motion_product(motion_inverse(_product(t[:3], [q[0], q[1], q[2]])), g)
         return (_at(E, p_on6),)
 
     def last(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # (e1 ... e5)^-1 g fixes c and c + w6: a turn about axis 6, so Subproblem 1's data agree
-        E = _compose(_inverse(_product(t[:5], [q[i] for i in range(5)])), g)
+        E = motion_product(motion_inverse(_product(t[:5], [q[i] for i in range(5)])), g)
         return (_at(E, x_off6),)
 
     return (*first,
@@ -497,7 +499,7 @@ def _wrist_centre_a(t: Sequence[Twist], c: ImmutableMatrix, r: ImmutableMatrix) 
 
     def shoulder(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # |e3 c - r| = |g c - r| by the stage before
-        return _at(_exp(t[2], q[2]), c), _at(g, c)
+        return _at(motion_exp(t[2], q[2]), c), _at(g, c)
 
     return (Stage((2,), third, lambda y: _distance(t[2], c, r, _square(y - r)),
                   "subproblem 3: joint 3 from the distance of the wrist centre"),
@@ -514,7 +516,7 @@ def _wrist_centre_b(t: Sequence[Twist], c: ImmutableMatrix, r: ImmutableMatrix) 
 
     def elbow(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # |e1^-1 g c - r| = |c - r| by the stage before
-        return (_at(_compose(_inverse(_exp(t[0], q[0])), g), c),)
+        return (_at(motion_product(motion_inverse(motion_exp(t[0], q[0])), g), c),)
 
     return (Stage((0,), first, lambda y: _distance(back, y, r, _square(c - r)),
                   "subproblem 3: joint 1 from the distance of the wrist centre"),
@@ -542,28 +544,28 @@ def _three_parallel(t: Sequence[Twist]) -> tuple[Stage, ...] | None:
 
     def fifth(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # w^T R1^T R_g w6 = w^T R2 R3 R4 R5 R6 w6 = w^T R5 w6
-        return (_dir(_exp(t[0], q[0])[0].T * g[0], w5),)
+        return (_dir(motion_exp(t[0], q[0])[0].T * g[0], w5),)
 
     def sixth(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # R6^T R5^T w = R_g^T R1 w: both unit-length images of w, their w6 parts equal by the
         # stage before (w . R5 w6 = w . R1^T R_g w6)
-        return _dir(_exp(t[4], q[4])[0].T, w), _dir(g[0].T * _exp(t[0], q[0])[0], w)
+        return _dir(motion_exp(t[4], q[4])[0].T, w), _dir(g[0].T * motion_exp(t[0], q[0])[0], w)
 
     def planar(g: Motion, q: Mapping[int, Expr]) -> Motion:
         # e2 e3 e4 = e1^-1 g e6^-1 e5^-1: it turns about w and keeps w . x (the stages before)
-        rest = _compose(_exp(t[4], q[4]), _exp(t[5], q[5]))
-        return _compose(_compose(_inverse(_exp(t[0], q[0])), g), _inverse(rest))
+        rest = motion_product(motion_exp(t[4], q[4]), motion_exp(t[5], q[5]))
+        return motion_product(motion_product(motion_inverse(motion_exp(t[0], q[0])), g), motion_inverse(rest))
 
     def third(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         return (_at(planar(g, q), p3),)
 
     def second(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # |e3 p4 - r2| = |P p4 - r2| (stage before) and both at the height w . p4
-        return _at(_exp(t[2], q[2]), p3), _at(planar(g, q), p3)
+        return _at(motion_exp(t[2], q[2]), p3), _at(planar(g, q), p3)
 
     def fourth(g: Motion, q: Mapping[int, Expr]) -> tuple[ImmutableMatrix, ...]:
         # (e2 e3)^-1 P fixes p4 and turns about w: a turn about axis 4
-        E = _compose(_inverse(_product(t[1:3], [q[1], q[2]])), planar(g, q))
+        E = motion_product(motion_inverse(_product(t[1:3], [q[1], q[2]])), planar(g, q))
         return (_at(E, x_off3),)
 
     return (Stage((0,), first, lambda y: subproblem4(-w0, w, y, height),
@@ -660,11 +662,11 @@ def reduced_chain(twists: Sequence[Twist], home: Transform, T: Transform,
     ts = list(twists)
     index = list(range(len(ts)))
     H = home.inverse()
-    g: Motion = _compose((T.R, T.p), (H.R, H.p))
+    g: Motion = motion_product((T.R, T.p), (H.R, H.p))
     for k in sorted(free, reverse=True):
         pos = index.index(k)
-        E = _exp(ts[pos], free[k])
-        g = _compose(g, _inverse(E))
+        E = motion_exp(ts[pos], free[k])
+        g = motion_product(g, motion_inverse(E))
         ts = ts[:pos] + [tidy(Transform._new(*E).apply(x)) for x in ts[pos + 1:]]
         index.pop(pos)
     return tuple(ts), g, tuple(index)
@@ -803,7 +805,7 @@ def inverse_kinematics(chain: Any, T: Any, free: Any = (), *, budget: int = BUDG
         twists, g, index = reduced_chain(chain.twists, chain.home, T, given)
         plan, forms = stage_forms(twists)
         if plan.reversed:
-            g = _inverse(g)
+            g = motion_inverse(g)
         order = list(reversed(index)) if plan.reversed else list(index)
         names = {Q[i]: Symbol(f"q{order[i] + 1}", real=True) for i in range(6)}
         branches = []

@@ -23,6 +23,7 @@ from sympy import ImmutableMatrix
 from ..codegen import lambdify
 from ..core.checks import check_choice, check_vector
 from ..motion.chain import Chain
+from ._batch import shaped
 
 __all__ = ["DynamicsFunctions", "dynamics_functions", "forward_dynamics"]
 
@@ -38,20 +39,6 @@ class DynamicsFunctions(NamedTuple):
     bias: Any
 
 
-def _shaped(f: Any, trailing: tuple[int, ...]) -> Any:
-    """``f`` with its result shaped ``(..., *trailing)``, the batch shape that of its inputs."""
-
-    def g(*args: Any) -> np.ndarray:
-        batch = np.broadcast_shapes(*(np.shape(a)[:-1] for a in args))
-        out = np.asarray(f(*args))
-        if out.size == int(np.prod(batch + trailing)):
-            return out.reshape(batch + trailing)
-        return np.broadcast_to(out.reshape(trailing), batch + trailing).copy()  # a constant
-
-    g.__doc__ = f.__doc__
-    return g
-
-
 @lru_cache(maxsize=16)
 def _functions(chain: Chain, gravity: ImmutableMatrix, backend: str | None,
                parameters: str | None = None) -> DynamicsFunctions:
@@ -62,9 +49,9 @@ def _functions(chain: Chain, gravity: ImmutableMatrix, backend: str | None,
     bias = chain.dynamics_program("bias", gravity, **options)
     extra = [] if parameters is None else ["beta" if parameters == "base" else "pi"]
     return DynamicsFunctions(
-        _shaped(lambdify(list(tau.arguments), tau, backend, names=["q", "qd", "qdd", *extra]), (n,)),
-        _shaped(lambdify(list(H.arguments), H, backend, names=["q", *extra]), (n, n)),
-        _shaped(lambdify(list(bias.arguments), bias, backend, names=["q", "qd", *extra]), (n,)),
+        shaped(lambdify(list(tau.arguments), tau, backend, names=["q", "qd", "qdd", *extra]), (n,)),
+        shaped(lambdify(list(H.arguments), H, backend, names=["q", *extra]), (n, n)),
+        shaped(lambdify(list(bias.arguments), bias, backend, names=["q", "qd", *extra]), (n,)),
     )
 
 

@@ -41,17 +41,16 @@ from sympy import (
     sin,
 )
 
-from ..codegen import default_backend, lambdify
-from ..codegen._build import compiler
+from ..codegen import compiler, default_backend, lambdify
 from ..motion.chain import Chain
 from ..motion.inverse_kinematics import (
     G,
     Motion,
     Q,
-    _compose,
-    _exp,
-    _inverse,
     free_values,
+    motion_exp,
+    motion_inverse,
+    motion_product,
     stage_forms,
 )
 
@@ -131,15 +130,15 @@ class _Program:
         self._trig: dict[Any, Any] = {}
         self._squares: dict[Any, Any] = {}
         H = chain.home.inverse()
-        g: Motion = _compose((self.T[:3, :3], self.T[:3, 3]), (H.R, H.p))
+        g: Motion = motion_product((self.T[:3, :3], self.T[:3, 3]), (H.R, H.p))
         fv = dict(zip(free, self.F if self.F is not None else (), strict=True))
         for i in sorted((i for i in free if i >= after), reverse=True):
-            g = _compose(g, _inverse(_exp(chain.twists[i], fv[i])))
+            g = motion_product(g, motion_inverse(motion_exp(chain.twists[i], fv[i])))
         for i in sorted(i for i in free if i < before):
-            g = _compose(_inverse(_exp(chain.twists[i], fv[i])), g)
+            g = motion_product(motion_inverse(motion_exp(chain.twists[i], fv[i])), g)
         plan, forms = stage_forms(tuple(chain.twists[i] for i in solved))
         if plan.reversed:
-            g = _inverse(g)
+            g = motion_inverse(g)
         order = list(reversed(solved)) if plan.reversed else solved
         gs = self._let([*g[0], *g[1]], "g")
         pose = dict(zip(G, gs, strict=True))

@@ -26,7 +26,7 @@ from sympy import Dummy, ImmutableMatrix, Matrix, Symbol
 from ..algebra.budget import BUDGET
 from ..codegen import lambdify
 from ..core.checks import check_count, check_sequence, check_vector
-from .dynamics import _shaped
+from ._batch import shaped
 
 __all__ = ["LoopDynamicsFunctions", "loop_dynamics_functions"]
 
@@ -59,9 +59,9 @@ def _functions(mech: Any, actuated: tuple, symbols: tuple, gravity: ImmutableMat
     H = mech.mass_matrix(list(actuated), budget=budget)
     p = Matrix(symbols)
     return LoopDynamicsFunctions(
-        _shaped(lambdify([p, Matrix(qd), Matrix(qdd)], tau, backend,
+        shaped(lambdify([p, Matrix(qd), Matrix(qdd)], tau, backend,
                          names=["p", "qd", "qdd"]), (k,)),
-        _shaped(lambdify([p], H, backend, names=["p"]), (k, k)),
+        shaped(lambdify([p], H, backend, names=["p"]), (k, k)),
         tau, H, qd, qdd)
 
 
