@@ -663,6 +663,19 @@ class _Drawer:
         return layout
 
 
+def _check_arguments(subs: Any, variables: Any, twists: Any, title: Any,
+                     height: Any) -> tuple[dict, tuple]:
+    """The arguments :func:`view` and :func:`live` share, checked: ``subs`` and ``variables``
+    as the scene takes them."""
+    if not isinstance(twists, bool):
+        raise TypeError(f"twists: expected True or False, got {twists!r}")
+    if title is not None and not isinstance(title, str):
+        raise TypeError(f"title: expected a string, got {type(title).__name__}")
+    if isinstance(height, bool) or not isinstance(height, int) or height < 100:
+        raise ValueError(f"height: expected a whole number of pixels >= 100, got {height!r}")
+    return check_subs(subs), check_variables(variables)
+
+
 def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, subs: Any = None,
          screws: Any = None, twists: bool = False, cylindroid: Any = None,
          anchor: Any = None, title: str | None = None, height: int = 560) -> View:
@@ -728,14 +741,7 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     (3, 3)
     """
     go = _plotly()
-    subs = check_subs(subs)
-    variables = check_variables(variables)
-    if not isinstance(twists, bool):
-        raise TypeError(f"twists: expected True or False, got {twists!r}")
-    if title is not None and not isinstance(title, str):
-        raise TypeError(f"title: expected a string, got {type(title).__name__}")
-    if isinstance(height, bool) or not isinstance(height, int) or height < 100:
-        raise ValueError(f"height: expected a whole number of pixels >= 100, got {height!r}")
+    subs, variables = _check_arguments(subs, variables, twists, title, height)
     make, groups, n = scene_maker(obj, subs=subs, variables=variables, screws=screws,
                                   twists=twists, cylindroid=cylindroid, anchor=anchor)
     if path is not None and q is not None:
@@ -881,14 +887,7 @@ def live(obj: Any, q: Any = None, *, variables: Any = None, subs: Any = None,
     >>> len(data), len(data[-1]["x"])                      # the joint twists' six heads
     (7, 6)
     """
-    subs = check_subs(subs)
-    variables = check_variables(variables)
-    if not isinstance(twists, bool):
-        raise TypeError(f"twists: expected True or False, got {twists!r}")
-    if title is not None and not isinstance(title, str):
-        raise TypeError(f"title: expected a string, got {type(title).__name__}")
-    if isinstance(height, bool) or not isinstance(height, int) or height < 100:
-        raise ValueError(f"height: expected a whole number of pixels >= 100, got {height!r}")
+    subs, variables = _check_arguments(subs, variables, twists, title, height)
     if solve is not None and not callable(solve):
         raise TypeError(f"solve: expected a function of the controls' values, got {solve!r}")
     make, groups, n = scene_maker(obj, subs=subs, variables=variables, screws=screws,
