@@ -279,12 +279,8 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
         _check_count(A, k, mech)
         idle = mech.mobility().passive
         if idle:
-            raise ValueError(
-                f"actuated: the mechanism has {idle} idle freedoms (a link such as a rod "
-                "between two spherical joints spins about its own axis, moving nothing "
-                "else), which the actuated joints do not determine: the closed-loop dynamics "
-                "of mechanisms with idle freedoms are not supported; replace one spherical "
-                "joint of each such rod by a universal joint")
+            raise ValueError(f"actuated: the mechanism has {idle} idle freedoms {_IDLE_LINK}, "
+                             f"which the actuated joints do not determine: {_IDLE_FIX}")
         with_symbols = " at every value of the symbols" if A.free_symbols else ""
         raise ValueError(
             "actuated: an actuation singularity: the passive joints' columns of the network "
@@ -318,17 +314,21 @@ def _actuation(mech: Mechanism, actuated: tuple) -> _Actuation:
                       condition, loop_terms(net), ImmutableMatrix(inverse), net)
 
 
+#: what an idle freedom is, and what to do (the errors of :func:`_actuation`, :func:`_check_count`)
+_IDLE_LINK = ("(a link such as a rod between two spherical joints spins about its own axis, "
+              "moving nothing else)")
+_IDLE_FIX = ("the closed-loop dynamics of mechanisms with idle freedoms are not supported; "
+             "replace one spherical joint of each such rod by a universal joint")
+
+
 def _check_count(A: Matrix, k: int, mech: Mechanism | None = None) -> None:
     """A ``ValueError`` unless ``k`` is the mobility (the generic one with symbols); where
     fewer are given and the mechanism has idle freedoms, the message says so."""
     M = A.cols - field_rank(A)
     if k != M:
         idle = mech.mobility().passive if mech is not None and k < M else 0
-        extra = "" if not idle else (
-            f"; {idle} of its freedoms are idle (a link such as a rod between two spherical "
-            "joints spins about its own axis, moving nothing else): no actuator drives them, "
-            "and the closed-loop dynamics of mechanisms with idle freedoms are not supported; "
-            "replace one spherical joint of each such rod by a universal joint")
+        extra = "" if not idle else (f"; {idle} of its freedoms are idle {_IDLE_LINK}: no actuator "
+                                     f"drives them, and {_IDLE_FIX}")
         raise ValueError(f"actuated: expected as many actuated joints as the mobility, {M}, "
                          f"got {k}{extra}")
 
@@ -500,31 +500,53 @@ def mass_matrix(mech: Mechanism, actuated: Any, conds: str = "none") -> Immutabl
     return _conds(ImmutableMatrix(H.applyfunc(_tidy)), act, conds)
 
 
-def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
-                     gravity: Any = None, conds: str = "none") -> ImmutableMatrix:
-    conds = check_choice(conds, "conds", CONDS)
-    act = _actuation(mech, _check_actuated(mech, actuated))
+def _motion(mech: Mechanism, act: _Actuation, rates: Any, accelerations: Any,
+            gravity: Any) -> tuple[Matrix, Matrix, Matrix]:
+    """All joints' rates and accelerations for the actuated ones, and the gravity vector."""
     k = len(act.actuated)
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
     g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
     qd = Matrix(act.G * qa)
-    qdd = _accelerations(mech, act, qd, qa2)
-    tau = zeros(k, 1)
+    return qd, _accelerations(mech, act, qd, qa2), g
+
+
+def _balances(mech: Mechanism, act: _Actuation, qd: Matrix, qdd: Matrix,
+              g: Any) -> list[tuple[int, Matrix, Matrix]]:
+    """Per body: its link number, ``A_l^T Delta`` and the wrench its motion needs,
+    ``M_l dV_l/dt + [V_l, M_l V_l] - W_l``."""
+    out = []
     for (P, swapped, I), (n, _) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
-        charge(STEP_UNITS * k)
+        charge(STEP_UNITS * len(act.actuated))
         V = P * qd
         Vdot = _link_rate(act, n, qd, qdd)
         momentum = Matrix(I.matrix) * V
         weight = I.gravity_wrench(g).matrix
-        tau += swapped * (Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight)
+        out.append((n, swapped, Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight))
+    return out
+
+
+def _forces(act: _Actuation, balances: list) -> Matrix:
+    """The actuator forces by virtual power: ``sum_l A_l^T Delta D_l``."""
+    tau = zeros(len(act.actuated), 1)
+    for _, swapped, D in balances:
+        tau += swapped * D
+    return tau
+
+
+def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                     gravity: Any = None, conds: str = "none") -> ImmutableMatrix:
+    conds = check_choice(conds, "conds", CONDS)
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    qd, qdd, g = _motion(mech, act, rates, accelerations, gravity)
+    tau = _forces(act, _balances(mech, act, qd, qdd, g))
     return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
 
 
-def _reaction_system(mech: Mechanism, act: _Actuation, tau: Matrix, qd: Matrix, qdd: Matrix,
-                     g: Any) -> tuple[Matrix, Matrix]:
+def _reaction_system(act: _Actuation, tau: Matrix, balances: list) -> tuple[Matrix, Matrix]:
     """The linear system ``K w = r`` of the joints' wrenches ``w`` (6 per joint, ray order,
-    joint by joint): each moving link's Newton–Euler balance, then each freedom's
-    reciprocity (zero power on a passive freedom, ``tau`` on an actuated one)."""
+    joint by joint): each moving link's Newton–Euler balance (``balances``, from
+    :func:`_balances`), then each freedom's reciprocity (zero power on a passive freedom,
+    ``tau`` on an actuated one)."""
     net = act.net
     graph = net.graph
     J, L = len(graph.edges), len(graph.links)
@@ -543,12 +565,7 @@ def _reaction_system(mech: Mechanism, act: _Actuation, tau: Matrix, qd: Matrix, 
                 K[row, 6 * e + 3 + i] = t[i]
     for c, f in enumerate(act.actuated):
         r[6 * (L - 1) + f, 0] = tau[c]
-    for n, I in _bodies(mech):
-        charge(STEP_UNITS)
-        V = path_matrix(net, n) * qd
-        Vdot = _link_rate(act, n, qd, qdd)
-        momentum = Matrix(I.matrix) * V
-        D = Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - I.gravity_wrench(g).matrix
+    for n, _, D in balances:
         r[6 * (n - 1):6 * n, 0] = D
     return K, r
 
@@ -558,13 +575,10 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     from ..core.wrench import Wrench
 
     act = _actuation(mech, _check_actuated(mech, actuated))
-    k = len(act.actuated)
-    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
-    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
-    tau = inverse_dynamics(mech, list(_joint_numbers(mech, act)), list(qa), list(qa2), g)
-    qd = Matrix(act.G * qa)
-    qdd = _accelerations(mech, act, qd, qa2)
-    K, r = _reaction_system(mech, act, tau, qd, qdd, g)
+    qd, qdd, g = _motion(mech, act, rates, accelerations, gravity)
+    balances = _balances(mech, act, qd, qdd, g)
+    tau = _forces(act, balances).applyfunc(_tidy)
+    K, r = _reaction_system(act, tau, balances)
     aug = Matrix.hstack(K, r)
     _charge_matrix(aug, 3)
     dm = DomainMatrix.from_Matrix(aug).to_field()
@@ -579,12 +593,6 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     w = w.applyfunc(_tidy)
     return tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
                  for e in range(len(act.net.graph.edges)))
-
-
-def _joint_numbers(mech: Mechanism, act: _Actuation) -> tuple:
-    """The joint numbers of the actuated freedoms (each actuated joint has one)."""
-    offsets = spanning_tree(mech).offsets
-    return tuple(offsets.index(f) for f in act.actuated)
 
 
 class LoopDynamicsMixin:
