@@ -338,7 +338,16 @@ def motion_exp(t: Twist, q: Expr) -> Motion:
 
 
 def motion_product(a: Motion, b: Motion) -> Motion:
-    """The product of two motions ``(R, p)``, entries tidied (``numeric.ik`` builds its program with it)."""
+    """The product of two motions ``(R, p)``, entries tidied (``numeric.ik`` builds its program with it).
+
+    >>> from sympy import pi
+    >>> from screwsym import Twist
+    >>> turn = motion_exp(Twist.rotation([0, 0, 1], point=[1, 0, 0]), pi / 2)
+    >>> turn[1].T                                   # the origin goes to (1, -1, 0)
+    Matrix([[1, -1, 0]])
+    >>> motion_product(turn, motion_inverse(turn))[1].T
+    Matrix([[0, 0, 0]])
+    """
     return (a[0] * b[0]).applyfunc(_clean_entry), (a[0] * b[1] + a[1]).applyfunc(_clean_entry)
 
 

@@ -228,7 +228,7 @@ class _Program:
 class _Staged:
     """The stages of one chain compiled one by one and evaluated in turn on arrays.
 
-    The solver before the fused program (:class:`_Fused`): kept to compare against
+    The solver before the fused program (:func:`_fused`): kept to compare against
     (``benchmarks/bench_ik.py``, the tests).
     """
 
