@@ -35,7 +35,9 @@ What is drawn (the glyphs):
 
 * **links**: grey segments between the joints' points (hover: the link's name);
   a parallel mechanism's base and platform are flat translucent polygons through
-  its limbs' first and last joints; a parallelogram joint is its four bars;
+  its limbs' first and last joints, and so are a graph mechanism's base and a
+  link of it named ``"platform"`` (through their joints); a parallelogram joint
+  is its four bars;
 * **joints**: a marker by kind (revolute ``circle``, prismatic ``square``,
   helical ``diamond``, cylindrical ``square-open``, universal ``diamond-open``,
   spherical ``circle-open``, parallelogram ``cross``) and a short stub along each
@@ -66,8 +68,8 @@ joint twists, 3 ms for the Delta by its platform: ``benchmarks/bench_view.py``),
 ``Live.widget()`` shows a plotly ``FigureWidget`` with one slider per joint (or per control,
 e.g. a Delta's platform position with ``solve=`` its inverse kinematics,
 :mod:`screwsym.plot.models`).  The widget needs ipywidgets and anywidget (plotly's
-``FigureWidget``), which the ``view`` extra does not install (``pip install ipywidgets
-anywidget``); without them ``widget()`` says so, and a path of
+``FigureWidget``), which the ``view`` extra does not install: the ``live`` extra does
+(``pip install -e ".[live]"``); without them ``widget()`` says so, and a path of
 precomputed frames (``view(..., path=...)``) is the offline equivalent.
 
 For example, the UR5 with its joint twists:
@@ -841,7 +843,8 @@ class Live:
             ipywidgets = importlib.import_module("ipywidgets")
             importlib.import_module("anywidget")        # plotly's FigureWidget (plotly >= 6)
         except ImportError as exc:
-            raise ImportError("Live.widget needs ipywidgets and anywidget (pip install "
+            raise ImportError("Live.widget needs ipywidgets and anywidget: the live extra "
+                              "(pip install -e \".[live]\" from a clone, or pip install "
                               "ipywidgets anywidget); without them, view(..., path=...) draws "
                               "precomputed frames with a slider") from exc
         go = _plotly()
