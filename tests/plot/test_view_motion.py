@@ -164,8 +164,8 @@ def test_live_widget_needs_ipywidgets():
 
 
 # the rigid 3-RPS of notebook 13 (Tsai 1999; Lee & Shah 1988): tilted about y by the Rodrigues
-# parameter g at height z, det of its six wrenches has the factor z (1 - g^4) - 6 g^3 - 4 g, which
-# is (1 + g^2)^2 n . d1 (leg 1 in the platform's plane): zero at z = 44/15 for g = 1/2
+# parameter g at height z, det of its six wrenches has the factor g^4 z + 6 g^3 + 4 g - z, which
+# is -(1 + g^2)^2 n . d1 (zero: leg 1 in the platform's plane): zero at z = 44/15 for g = 1/2
 
 
 def test_the_rigid_3rps_keeps_its_platform_and_its_legs_constraints():
