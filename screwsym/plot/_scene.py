@@ -427,7 +427,9 @@ def _mechanism_maker(mech: Mechanism, packer: _Packer):
             ring = [full[k] for k, (a, b, _) in enumerate(triples) if link in (a, b)]
             if len(ring) < 2:
                 continue
-            if link == mech.base and len(ring) >= 3:
+            # the base, and a link named "platform", as a flat solid through its joints (in the
+            # order of the mechanism's joints)
+            if (link == mech.base or link == "platform") and len(ring) >= 3:
                 scene.solids.append(np.stack(ring))
                 continue
             scene.links.append(np.stack(ring + ([ring[0]] if len(ring) >= 3 else [])))

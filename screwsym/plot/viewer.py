@@ -35,7 +35,9 @@ What is drawn (the glyphs):
 
 * **links**: grey segments between the joints' points (hover: the link's name);
   a parallel mechanism's base and platform are flat translucent polygons through
-  its limbs' first and last joints; a parallelogram joint is its four bars;
+  its limbs' first and last joints, and so are a graph mechanism's base and a
+  link of it named ``"platform"`` (through their joints); a parallelogram joint
+  is its four bars;
 * **joints**: a marker by kind (revolute ``circle``, prismatic ``square``,
   helical ``diamond``, cylindrical ``square-open``, universal ``diamond-open``,
   spherical ``circle-open``, parallelogram ``cross``) and a short stub along each
@@ -66,8 +68,8 @@ joint twists, 3 ms for the Delta by its platform: ``benchmarks/bench_view.py``),
 ``Live.widget()`` shows a plotly ``FigureWidget`` with one slider per joint (or per control,
 e.g. a Delta's platform position with ``solve=`` its inverse kinematics,
 :mod:`screwsym.plot.models`).  The widget needs ipywidgets and anywidget (plotly's
-``FigureWidget``), which the ``view`` extra does not install (``pip install ipywidgets
-anywidget``); without them ``widget()`` says so, and a path of
+``FigureWidget``), which the ``view`` extra does not install: the ``live`` extra does
+(``pip install -e ".[live]"``); without them ``widget()`` says so, and a path of
 precomputed frames (``view(..., path=...)``) is the offline equivalent.
 
 For example, the UR5 with its joint twists:
@@ -648,7 +650,7 @@ class _Drawer:
         return [{**_style(name, self.groups, self.colours, self.free), **d}
                 for name, d in zip(self.names, data, strict=True)]
 
-    def layout(self, height: int, title: str | None) -> dict:
+    def layout(self, height: int, title: str | None, camera: dict | None = None) -> dict:
         half = 0.62 * self.size
         axis = {c: {"range": [float(self.centre[i] - half), float(self.centre[i] + half)],
                     "title": c} for i, c in enumerate("xyz")}
@@ -658,6 +660,8 @@ class _Drawer:
                       "aspectmode": "cube"},
             "legend": {"itemsizing": "constant"},
         }
+        if camera is not None:
+            layout["scene"]["camera"] = camera
         if title:
             layout["title"] = {"text": html.escape(title)}
         return layout
@@ -676,9 +680,26 @@ def _check_arguments(subs: Any, variables: Any, twists: Any, title: Any,
     return check_subs(subs), check_variables(variables)
 
 
+def _check_camera(camera: Any) -> dict | None:
+    """plotly's ``scene.camera`` for ``camera=(x, y, z)``, the eye's position (None: plotly's)."""
+    if camera is None:
+        return None
+    if isinstance(camera, (str, bytes)) or not isinstance(camera, (list, tuple, np.ndarray)):
+        raise TypeError(f"camera: expected three numbers (the eye's position), got "
+                        f"{type(camera).__name__}")
+    try:
+        eye = np.array(camera, dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"camera: expected three numbers, got {camera!r}") from exc
+    if eye.shape != (3,) or not np.all(np.isfinite(eye)) or not np.any(eye):
+        raise ValueError(f"camera: expected three finite numbers, not all zero, got {camera!r}")
+    return {"eye": dict(zip("xyz", (float(c) for c in eye), strict=True))}
+
+
 def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, subs: Any = None,
          screws: Any = None, twists: bool = False, cylindroid: Any = None,
-         anchor: Any = None, title: str | None = None, height: int = 560) -> View:
+         anchor: Any = None, title: str | None = None, height: int = 560,
+         camera: Any = None) -> View:
     r"""A 3-D view of a chain, a parallel mechanism, a graph mechanism or screws.
 
     Parameters
@@ -717,6 +738,11 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     title : str, optional
     height : int
         The figure's height in pixels (default 560).
+    camera : three numbers, optional
+        Where the eye looks from at first (plotly's ``scene.camera.eye``, in
+        units of the scene's half-size from its centre; default plotly's
+        ``(1.25, 1.25, 1.25)``): e.g. ``(1.8, 1.1, 0.4)`` for a lower view of a
+        tall mechanism.  The reader can still turn the view.
 
     Examples
     ========
@@ -742,6 +768,7 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
     """
     go = _plotly()
     subs, variables = _check_arguments(subs, variables, twists, title, height)
+    eye = _check_camera(camera)
     make, groups, n = scene_maker(obj, subs=subs, variables=variables, screws=screws,
                                   twists=twists, cylindroid=cylindroid, anchor=anchor)
     if path is not None and q is not None:
@@ -759,7 +786,7 @@ def view(obj: Any, q: Any = None, *, path: Any = None, variables: Any = None, su
         if k == 0:
             counts = c
     traces = drawer.traces(datas[0])
-    layout = drawer.layout(height, title)
+    layout = drawer.layout(height, title, eye)
     spec = {"data": traces, "layout": layout}
     if path is not None:
         names = [str(k) for k in range(len(rows))]
@@ -810,9 +837,10 @@ class Live:
     """
 
     def __init__(self, drawer: _Drawer, controls: list[tuple[str, float, float, float]],
-                 solve: Any, n: int, height: int, title: str | None) -> None:
+                 solve: Any, n: int, height: int, title: str | None,
+                 camera: dict | None = None) -> None:
         self._drawer, self.controls, self._solve, self._n = drawer, tuple(controls), solve, n
-        self._height, self._title = height, title
+        self._height, self._title, self._camera = height, title, camera
 
     def __repr__(self) -> str:
         names = ", ".join(c[0] for c in self.controls)
@@ -833,7 +861,8 @@ class Live:
         """A plotly ``Figure`` at the controls' first values."""
         data = self.redraw([c[3] for c in self.controls])
         return _plotly().Figure({"data": self._drawer.traces(data),
-                                 "layout": self._drawer.layout(self._height, self._title)})
+                                 "layout": self._drawer.layout(self._height, self._title,
+                                                               self._camera)})
 
     def widget(self) -> Any:
         """A plotly ``FigureWidget`` and one slider per control, redrawn as they move."""
@@ -841,7 +870,8 @@ class Live:
             ipywidgets = importlib.import_module("ipywidgets")
             importlib.import_module("anywidget")        # plotly's FigureWidget (plotly >= 6)
         except ImportError as exc:
-            raise ImportError("Live.widget needs ipywidgets and anywidget (pip install "
+            raise ImportError("Live.widget needs ipywidgets and anywidget: the live extra "
+                              "(pip install -e \".[live]\" from a clone, or pip install "
                               "ipywidgets anywidget); without them, view(..., path=...) draws "
                               "precomputed frames with a slider") from exc
         go = _plotly()
@@ -867,7 +897,7 @@ class Live:
 def live(obj: Any, q: Any = None, *, variables: Any = None, subs: Any = None,
          screws: Any = None, twists: bool = False, anchor: Any = None,
          controls: Any = None, solve: Any = None, extent: Any = None,
-         title: str | None = None, height: int = 560) -> Live:
+         title: str | None = None, height: int = 560, camera: Any = None) -> Live:
     r"""A view to move with sliders in a live kernel, redrawn by generated numeric functions.
 
     The arguments are :func:`view`'s; the SymPy work is done here, once.  ``controls``:
@@ -888,6 +918,7 @@ def live(obj: Any, q: Any = None, *, variables: Any = None, subs: Any = None,
     (7, 6)
     """
     subs, variables = _check_arguments(subs, variables, twists, title, height)
+    eye = _check_camera(camera)
     if solve is not None and not callable(solve):
         raise TypeError(f"solve: expected a function of the controls' values, got {solve!r}")
     make, groups, n = scene_maker(obj, subs=subs, variables=variables, screws=screws,
@@ -925,4 +956,4 @@ def live(obj: Any, q: Any = None, *, variables: Any = None, subs: Any = None,
     if extent is not None:
         rows += list(_check_values(extent, "extent", n, rows=True))
     drawer = _Drawer(make, groups, [make(r) for r in rows])
-    return Live(drawer, ctl, solve, n, height, title)
+    return Live(drawer, ctl, solve, n, height, title, eye)

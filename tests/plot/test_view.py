@@ -19,7 +19,7 @@ from sympy import Rational, pi, sqrt, symbols  # noqa: E402
 
 from screwsym import Chain, Transform, Twist, Wrench  # noqa: E402
 from screwsym.motion.chain import ur5  # noqa: E402
-from screwsym.plot import View, view  # noqa: E402
+from screwsym.plot import View, live, view  # noqa: E402
 from screwsym.systems.joints import P, R, S  # noqa: E402
 from screwsym.systems.linkage import Mechanism  # noqa: E402
 from screwsym.systems.parallel import Limb, ParallelMechanism  # noqa: E402
@@ -268,10 +268,25 @@ def test_the_view_is_immutable_and_its_figure_a_copy():
     ({"screws": {1: Twist([0, 0, 1], [0, 0, 0])}}, TypeError, "screws"),
     ({"screws": "S"}, TypeError, "screws"),
     ({"height": 10}, ValueError, "height"),
+    ({"camera": "top"}, TypeError, "camera"),
+    ({"camera": [1, "a", 0]}, TypeError, "camera"),
+    ({"camera": [0, 0, 0]}, ValueError, "camera"),
+    ({"camera": [1, 2]}, ValueError, "camera"),
+    ({"camera": [1, float("inf"), 0]}, ValueError, "camera"),
 ])
 def test_bad_input(kwargs, error, match):
     with pytest.raises(error, match=match):
         view(ur5(), **kwargs)
+
+
+def test_the_camera_is_where_the_view_looks_from():
+    v = view(ur5(), camera=(1.8, 1.1, 0.4))
+    assert v.figure.layout.scene.camera.eye.to_plotly_json() == {"x": 1.8, "y": 1.1, "z": 0.4}
+    assert view(ur5()).figure.layout.scene.camera.eye.x is None      # plotly's default
+    lv = live(ur5(), camera=[2, 0, 0])
+    assert lv.figure().layout.scene.camera.eye.x == 2
+    with pytest.raises(ValueError, match="camera"):
+        live(ur5(), camera=[0, 0, 0])
 
 
 def test_bad_objects_and_symbols():

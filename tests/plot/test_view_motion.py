@@ -1,9 +1,10 @@
-"""Views that move: the Delta along a platform path, live redraws, the 3-RPS at a singular pose.
+"""Views that move: the Delta along a platform path, live redraws, the rigid 3-RPS at a singular pose.
 
 The Delta's frames are checked against its geometry (each rod keeps its length 2 sqrt 2 and each
 parallelogram stays one, Clavel's Delta as in notebook 11), the live redraw against the exact
 space Jacobian of the UR5 (its columns' axes through the drawn joints, Lynch & Park §5.1.1),
-and the 3-RPS singular pose against the determinant of its six wrenches; each check is shown to
+and the rigid 3-RPS against its constraints (a rigid platform, each pivot in its R joint's plane)
+and its singular pose against the determinant of its six wrenches; each check is shown to
 reject a wrong picture.
 """
 
@@ -14,13 +15,11 @@ import pytest
 
 pytest.importorskip("plotly")
 
-from sympy import Rational, sqrt, symbols  # noqa: E402
+from sympy import Rational, cancel, pi, symbols  # noqa: E402
 
 from screwsym.motion.chain import ur5  # noqa: E402
 from screwsym.plot import Live, live, view  # noqa: E402
-from screwsym.plot.models import delta  # noqa: E402
-from screwsym.systems.joints import P, R, S  # noqa: E402
-from screwsym.systems.parallel import Limb, ParallelMechanism  # noqa: E402
+from screwsym.plot.models import delta, three_rps  # noqa: E402
 
 ROD = 2 * np.sqrt(2)
 
@@ -64,12 +63,17 @@ def test_the_delta_moves_along_its_platform_path(robot):
     links = [named_links({"x": f.x, "y": f.y, "z": f.z, "hovertext": f.hovertext}, names)
              for f in frames]
     assert all(rods_keep_their_length(lk) for lk in links)
-    # the platform moves: its pivots' centre follows the path (pivot i at p + e_i, sum e_i = 0
-    # up to the radial directions' mean (-1/15, 0, 0))
-    for lk, row in zip(links, rows, strict=True):
-        ring = lk["platform"][:-1]
-        assert np.allclose(ring.mean(axis=0), row[:3] + [-1 / 15, 0, 0], atol=1e-9)
-    assert not np.allclose(links[0]["platform"], links[3]["platform"])
+    # the platform, a solid triangle through its three pivots p + e_i (the e_i 120 degrees
+    # apart, Clavel's: their sum is 0), moves: its centre follows the path
+    s = names.index("solids")
+    platforms = [np.column_stack([fr.data[s].x, fr.data[s].y, fr.data[s].z])[3:]
+                 for fr in fig.frames]                         # the base's 3 vertices first
+    assert fig.data[s].type == "mesh3d" and all(len(p) == 3 for p in platforms)
+    for tri, row in zip(platforms, rows, strict=True):
+        assert np.allclose(tri.mean(axis=0), row[:3], atol=1e-9)
+        sides = np.linalg.norm(tri - np.roll(tri, 1, axis=0), axis=1)
+        assert np.allclose(sides, np.sqrt(3), atol=1e-9)          # equilateral, legs 120 apart
+    assert not np.allclose(platforms[0], platforms[3])
 
 
 def test_the_rod_check_rejects_a_wrong_arm_angle(robot):
@@ -84,6 +88,13 @@ def test_the_rod_check_rejects_a_wrong_arm_angle(robot):
 
 def test_the_delta_home_and_an_unreachable_point(robot):
     assert np.allclose(robot.configurations([0, 0, -3])[0, 3:], np.pi / 4)
+    # the closed form against the symbolic joints: the rods' lengths exact at home
+    home = dict(zip(robot.variables, (0, 0, -3, pi / 4, pi / 4, pi / 4), strict=True))
+    joints = robot.mechanism.joints
+    ends = [(joints[7 * i + 2][2].args[0], joints[7 * i + 3][2].args[0]) for i in range(3)]
+    assert [(a - b).subs(home).dot((a - b).subs(home)) for a, b in ends] == [8, 8, 8]
+    off = (ends[0][0] - ends[0][1]).subs({**home, robot.variables[3]: pi / 3})    # ... can fail
+    assert abs(float(off.dot(off)) - 8) > 0.1
     with pytest.raises(ValueError, match=r"points\[0\]: the platform cannot reach"):
         robot.configurations([[0, 0, -10]])
     with pytest.raises(ValueError, match="points"):
@@ -142,7 +153,7 @@ def test_live_widget_needs_ipywidgets():
         import anywidget  # noqa: F401
         import ipywidgets  # noqa: F401
     except ImportError:
-        with pytest.raises(ImportError, match="ipywidgets"):
+        with pytest.raises(ImportError, match=r"ipywidgets and anywidget: the live extra"):
             lv.widget()
         return
     box = lv.widget()
@@ -152,30 +163,40 @@ def test_live_widget_needs_ipywidgets():
     assert fig.data[0].x != before
 
 
-# the 3-RPS of notebook 13 (Tsai 1999): det of its six wrenches is
-# -72 (11 h1^2 h2 + 11 h1^2 h3 + 11 h1 h2^2 - 147 h1 h2 h3 + 11 h1 h3^2 + 11 h2^2 h3 + 11 h2 h3^2),
-# which with h1 = h2 = 2 is -72 * 4 (11 h3^2 - 125 h3 + 44): zero at h3 = 4/11 and 11
-E = [[1, 0, 0], [-Rational(1, 2), sqrt(3) / 2, 0], [-Rational(1, 2), -sqrt(3) / 2, 0]]
+# the rigid 3-RPS of notebook 13 (Tsai 1999; Lee & Shah 1988): tilted about y by the Rodrigues
+# parameter g at height z, det of its six wrenches has the factor g^4 z + 6 g^3 + 4 g - z, which
+# is -(1 + g^2)^2 n . d1 (zero: leg 1 in the platform's plane): zero at z = 44/15 for g = 1/2
 
 
-def rps(heights):
-    def leg(e, h, base=2):
-        rho = -Rational(1, 2)
-        b = [base * c for c in e]
-        top = [b[0] + rho * e[0], b[1] + rho * e[1], h]
-        return Limb(R(b, [-e[1], e[0], 0]), P([t - s for t, s in zip(top, b, strict=True)]),
-                    S(top), actuated=1)
-    return ParallelMechanism(*(leg(e, h) for e, h in zip(E, heights, strict=True)))
+def test_the_rigid_3rps_keeps_its_platform_and_its_legs_constraints():
+    z, gx, gy = symbols("z g_x g_y", real=True)
+    m = three_rps(z, (gx, gy))
+    pivots = [limb.joints[2].args[0] for limb in m.limbs]
+    sides = [(pivots[i] - pivots[j]).dot(pivots[i] - pivots[j]) for i, j in ((0, 1), (1, 2), (2, 0))]
+    assert [cancel(s) for s in sides] == [3, 3, 3]                 # rigid: side sqrt(3)
+    for limb, p in zip(m.limbs, pivots, strict=True):             # each pivot in its R's plane
+        foot, axis = limb.joints[0].args
+        assert cancel(axis.dot(p - foot)) == 0
+    wrong = three_rps(z, (gx, gy), platform=Rational(3, 2))        # ... the checks can fail
+    q = wrong.limbs[0].joints[2].args[0] - wrong.limbs[1].joints[2].args[0]
+    assert cancel(q.dot(q)) != 3
+    with pytest.raises(ValueError, match="tilt"):
+        three_rps(2, (0.5, 0))
+    with pytest.raises(ValueError, match="platform"):
+        three_rps(2, (0, 0), platform=-1)
 
 
 def test_the_3rps_singular_pose_is_singular_and_drawn():
-    h = symbols("h1:4", real=True)
-    regular, singular = rps([2, 2, 2]), rps([2, 2, Rational(4, 11)])
+    height, gy = Rational(44, 15), symbols("g_y", real=True)
+    regular, singular = three_rps(height, (0, Rational(1, 3))), three_rps(height, (0, Rational(1, 2)))
     assert regular.singularities().rows() == []
     # type II: J_x loses rank (5) while the constraints keep theirs
     assert singular.singularities().rows() == [("actuation", "", True, 5)]
-    assert rps([2, 2, Rational(5, 11)]).singularities().rows() == []    # the check can fail
-    m = rps(h)
+    assert three_rps(3, (0, Rational(1, 2))).singularities().rows() == []   # the check can fail
+    pivots = [limb.joints[2].args[0] for limb in singular.limbs]
+    normal = (pivots[1] - pivots[0]).cross(pivots[2] - pivots[0])
+    assert normal.dot(pivots[0] - singular.limbs[0].joints[0].args[0]) == 0   # leg 1 in plane
+    m = three_rps(height, (0, gy))
     screws = {"constraint wrenches": m.constraints, "actuation wrenches": m.actuation_wrenches()}
-    v = view(m, [2, 2, 4 / 11], variables=h, screws=screws)
+    v = view(m, [0.5], variables=[gy], screws=screws)
     assert v.kinds["screws"] == 6 and v.kinds["solids"] == 2
