@@ -426,7 +426,7 @@ def _frac(v: Any, name: str) -> Fraction:
     """An exact rational as a ``Fraction`` (a float as its exact binary value)."""
     from sympy import Float, Rational, sympify
 
-    e = sympify(v)
+    e = sympify(v, strict=True)
     if isinstance(e, Float):
         e = Rational(e)
     if not e.is_Rational:
