@@ -59,6 +59,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
+from math import gcd
 from typing import Any
 
 import numpy as np
@@ -216,30 +217,46 @@ def krawczyk(A: list, b: list, k: list, m: list, r: Fraction) -> bool:
     False
     """
     n = len(m)
-    F, J = [], []
-    for Ae, be, ke in zip(A, b, k, strict=True):
-        Am = [sum((Ae[i][j] * m[j] for j in range(n) if Ae[i][j]), Fraction(0)) for i in range(n)]
-        F.append(sum((m[i] * Am[i] for i in range(n)), Fraction(0)) + sum((be[i] * m[i] for i in range(n) if be[i]), Fraction(0)) + ke)
-        J.append([2 * Am[j] + be[j] for j in range(n)])
     charge(5 * n**3)
-    try:
-        Yf = np.linalg.inv(np.array([[float(v) for v in row] for row in J]))
+    # integers throughout: the system times its common denominator q, m = M / dm, Y = Yi / 2**60
+    q = _lcm([v.denominator for Ae in A for row in Ae for v in row] + [v.denominator for be in b for v in be] + [v.denominator for v in k])
+    dm = _lcm([Fraction(v).denominator for v in m])
+    M = [int(Fraction(v) * dm) for v in m]
+    F, J, S = [], [], []  # F * q * dm**2, J * q * dm, sum_l |A_e[j][l]| * q
+    for Ae, be, ke in zip(A, b, k, strict=True):
+        Ai = [[int(v * q) for v in row] for row in Ae]
+        bi, ki = [int(v * q) for v in be], int(ke * q)
+        AM = [sum(a * x for a, x in zip(row, M, strict=True) if a) for row in Ai]
+        F.append(sum(x * y for x, y in zip(M, AM, strict=True)) + dm * sum(u * x for u, x in zip(bi, M, strict=True) if u) + dm * dm * ki)
+        J.append([2 * AM[j] + dm * bi[j] for j in range(n)])
+        S.append([sum(abs(a) for a in row) for row in Ai])
+    try:  # the Jacobian at m, in floats, inverted
+        Yf = np.linalg.inv(np.array([[float(Fraction(v, q * dm)) for v in row] for row in J]))
     except np.linalg.LinAlgError:
         return False
     if not np.all(np.isfinite(Yf)):
         return False
-    Y = [[Fraction(float(v)) for v in row] for row in Yf]
-    D = [[2 * r * sum((abs(v) for v in Ae[j]), Fraction(0)) for j in range(n)] for Ae in A]
+    # Y = Yi / 2**60 with Yi = Yf 2**60 rounded (any Y is sound): Y J = Yi J / (2**60 q dm),
+    # Y F = Yi F / (2**60 q dm**2), and the sum over j of (|Y| D)_ij is 2 r sum |Yi| S / (2**60 q)
+    big = 2**60
+    Yi = [[int(round(float(v) * big)) for v in row] for row in Yf]
+    sj = big * q * dm
     for i in range(n):
-        Yi = Y[i]
-        bound = abs(sum((Yi[e] * F[e] for e in range(n)), Fraction(0)))
-        for j in range(n):
-            cij = (1 if i == j else 0) - sum((Yi[e] * J[e][j] for e in range(n)), Fraction(0))
-            dij = sum((abs(Yi[e]) * D[e][j] for e in range(n)), Fraction(0))
-            bound += (abs(cij) + dij) * r
+        row = Yi[i]
+        yf = Fraction(abs(sum(y * f for y, f in zip(row, F, strict=True))), sj * dm)
+        c = sum(abs((sj if i == j else 0) - sum(row[e] * J[e][j] for e in range(n))) for j in range(n))
+        d = sum(abs(row[e]) * S[e][j] for e in range(n) for j in range(n))
+        bound = yf + (Fraction(c, sj) + 2 * r * Fraction(d, big * q)) * r
         if not bound < r:
             return False
     return True
+
+
+def _lcm(values: list) -> int:
+    out = 1
+    for v in values:
+        out = out * v // gcd(out, v)
+    return out
 
 
 # --------------------------------------------------------------------------------------
