@@ -41,8 +41,9 @@ How: a homotopy, then a proof.
    solution in a real box: a real mode); a non-real one in ``R^16`` (real and imaginary
    parts), with a box whose imaginary part excludes 0 (a non-real solution).  Pairwise
    disjoint boxes hold distinct solutions.
-3. *Completeness*: 40 distinct certified solutions reach the bound, so none is missing
-   (``complete=True``); fewer (a path lost, after three homotopies with new random
+3. *Completeness*: 40 distinct certified solutions reach the bound, so no isolated mode is
+   missing (``complete=True``; the bound is on isolated modes: a curve of modes besides them,
+   a self-motion, is not excluded by this argument); fewer (a path lost, after three homotopies with new random
    constants) is reported as such (``complete=False`` and the count), never silently.
 
 Why not the alternatives.  SymPy's ``groebner`` on these equations does not finish in
