@@ -58,7 +58,7 @@ tolerance, keeps the library's rule: no tolerance as a verdict.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from math import gcd
 from typing import Any
@@ -155,16 +155,24 @@ def pose_from_study(z: tuple) -> tuple[list, list]:
     return [2 * q[n] / d for n in (1, 2, 3)], _rotation(x)
 
 
-def study_from_pose(t: Any, R: Any) -> tuple | None:
-    """Study's parameters ``(x, y)`` of a pose with exact rational ``t``, ``R`` (up to a
-    factor; rational: ``x`` from the traces of ``R``), or None at ``trace R = -1`` where the
-    formula used has no ``x0``.  (A half-turn: the other charts of ``x`` are not needed by the
-    callers here.)"""
-    tr = R[0][0] + R[1][1] + R[2][2]
-    if tr == -1:
-        return None
-    x = (1 + tr, R[2][1] - R[1][2], R[0][2] - R[2][0], R[1][0] - R[0][1])
-    y = _qmul((0, *t), x)
+def study_from_pose(t: Any, R: Any) -> tuple:
+    """Study's parameters ``(x, y)`` of a pose with exact rational ``t`` and rotation ``R``,
+    up to a factor and rational: ``x`` is the column of ``4 x x^T`` (a matrix of the entries
+    of ``R``) with the largest diagonal entry (Shepperd 1978; never zero for a rotation), and
+    ``y = t x / 2``.
+
+    >>> [str(v) for v in study_from_pose([0, 0, 2], [[1, 0, 0], [0, 1, 0], [0, 0, 1]])]
+    ['4', '0', '0', '0', '0', '0', '0', '4']
+    """
+    (r11, r12, r13), (r21, r22, r23), (r31, r32, r33) = R
+    cols = [
+        (1 + r11 + r22 + r33, r32 - r23, r13 - r31, r21 - r12),
+        (r32 - r23, 1 + r11 - r22 - r33, r12 + r21, r13 + r31),
+        (r13 - r31, r12 + r21, 1 - r11 + r22 - r33, r23 + r32),
+        (r21 - r12, r13 + r31, r23 + r32, 1 - r11 - r22 + r33),
+    ]
+    x = tuple(Fraction(v) for v in cols[max(range(4), key=lambda i: cols[i][i])])
+    y = _qmul((Fraction(0), *(Fraction(v) for v in t)), x)
     return (*x, *(v / 2 for v in y))
 
 
@@ -400,7 +408,8 @@ class CertifiedMode:
     orthogonal); ``study`` is that centre, exact (``Fraction``), in Study's parameters on
     the chart ``chart . x = 1``, and the box ``study +- radius`` (each coordinate) is proven
     to hold exactly one solution of the exact equations, a real one
-    (:meth:`contains` decides whether an exact pose is that one).
+    (:meth:`contains` decides whether an exact pose is that one); ``scale`` the power of 2
+    the geometry was divided by, ``quadrics`` the equations so scaled.
     """
 
     position: Any
@@ -410,6 +419,7 @@ class CertifiedMode:
     chart: tuple
     scale: Fraction
     multiplicity: int = 1
+    quadrics: tuple = field(default=(), repr=False, compare=False)
 
     @property
     def pose(self) -> tuple:
@@ -431,13 +441,26 @@ class CertifiedMode:
         if M.shape != (3, 3) or len(t) != 3:
             raise ValueError(f"contains: expected a pose (3-vector, 3 x 3 rotation), got shapes {len(t)}, {M.shape}")
         R = [[_frac(M[i, j], "pose[1]") for j in range(3)] for i in range(3)]
+        orthogonal = all(
+            sum((R[k][i] * R[k][j] for k in range(3)), Fraction(0)) == (1 if i == j else 0)
+            for i in range(3) for j in range(3)
+        )
+        det = (R[0][0] * (R[1][1] * R[2][2] - R[1][2] * R[2][1]) - R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0])
+               + R[0][2] * (R[1][0] * R[2][1] - R[1][1] * R[2][0]))
+        if not (orthogonal and det == 1):
+            return False  # no pose
         z = study_from_pose([v / self.scale for v in t], R)
-        if z is None:
-            return False
         lam = sum((ci * zi for ci, zi in zip(self.chart, z[:4], strict=True)), Fraction(0))
         if lam == 0:
             return False
-        return all(abs(zi / lam - mi) <= self.radius for zi, mi in zip(z, self.study, strict=True))
+        w = [zi / lam for zi in z]
+        if not all(abs(wi - mi) <= self.radius for wi, mi in zip(w, self.study, strict=True)):
+            return False
+        # inside the box: the mode exactly when it closes every leg (the box's only solution)
+        return all(
+            sum((w[i] * Qk[i][j] * w[j] for i in range(8) for j in range(8) if Qk[i][j]), Fraction(0)) == 0
+            for Qk in self.quadrics
+        )
 
 
 def _frac(v: Any, name: str) -> Fraction:
@@ -567,6 +590,6 @@ def general_modes(a: tuple, b: tuple, l2: tuple, attempts: int = 3) -> tuple[lis
         t, R = pose_from_study(m)
         position = ImmutableMatrix([Float(float(v * sc), 17) for v in t])
         rotation = ImmutableMatrix([[Float(float(v), 17) for v in row] for row in R])
-        modes.append(CertifiedMode(position, rotation, m, r, chart, sc))
+        modes.append(CertifiedMode(position, rotation, m, r, chart, sc, 1, tuple(quadrics)))
     modes.sort(key=lambda md: tuple(float(v) for v in md.position))
     return modes, len(found), len(found) >= MAX_MODES

@@ -583,7 +583,10 @@ def test_the_6_6_checkers_reject_a_wrong_mode():
     other = m.modes[8]
     exact = (Matrix([Rational(v) for v in mode.position]), Matrix(3, 3, [Rational(v) for v in mode.rotation]))
     assert not other.contains(exact)
+    # ... inside this mode's box, but not the mode: it does not close the legs exactly
+    assert not mode.contains(exact)
     assert not mode.contains((POSE[0], POSE[1]))
+    assert not mode.contains((exact[0], -exact[1]))  # no rotation
     # the closure decided exactly: the floating-point centre of a box does not close
     assert not m.closes(mode.pose)
     with pytest.raises(ValueError, match="contains: pose\\[0\\]: expected exact rational"):
