@@ -548,6 +548,13 @@ def test_dietmaier_40_real_modes_agree_with_phcpack():
     assert np.sort(D, axis=1)[:, 1].min() > 0.1
 
 
+def test_a_6_6_mode_refines_to_50_digits():
+    A, B, L = dietmaier_input()
+    for mode in dietmaier().modes[::13]:
+        errs = mp_leg_errors(A, B, mode.evalf(50), [v**2 for v in L], dps=60)
+        assert max(errs) < mpmath.mpf(10) ** -45
+
+
 @pytest.mark.parametrize("seed", [3])
 def test_a_random_6_6_from_a_known_pose(seed):
     rnd = random.Random(seed)
