@@ -23,15 +23,15 @@ paths end there and are discarded.  A general 6-6 has at most 40 isolated comple
 1996 the univariate polynomial of degree 40), and 40 can all be real (Dietmaier 1998).
 
 How: a homotopy, then a proof.
-1. *Homotopy continuation* (total degree, the gamma trick: Morgan 1987; Sommese & Wampler
-   2005, chapter 8) from ``G_k = z_k**2 - z_0**2`` (128 known solutions) to the quadrics, on
+1. *Homotopy continuation* (total degree, the gamma trick: Morgan & Sommese 1987; Sommese &
+   Wampler 2005) from ``G_k = z_k**2 - z_0**2`` (128 known solutions) to the quadrics, on
    a random complex patch ``h . z = 1``: ``H(z, s) = (1 - s) gamma G(z) + s F(z)``.  All
    paths are tracked together, vectorised in NumPy: a fourth-order Runge-Kutta predictor
    along ``dz/ds = -H_z^{-1} H_s``, Newton's corrector, the step per path doubled after
    three successes and halved on a failure.  Endpoints whose ``x`` vanishes are the
    exceptional generator's; the others are polished by Newton's method at ``s = 1``.
    Floating point decides nothing here: it only proposes.
-2. *Krawczyk's test* (Krawczyk 1969; Moore, Kearfott & Cloud 2009, section 8.2) proves
+2. *Krawczyk's test* (Krawczyk 1969; Moore, Kearfott & Cloud 2009) proves
    each proposal, in exact rational arithmetic (Python's ``Fraction``) on the exact
    equations: on the real chart ``c . x = 1`` (``c`` rational) the 8 equations
    ``F(w) = 0`` are quadratic, so for a box ``X = m +- r`` the Krawczyk operator
@@ -46,9 +46,9 @@ How: a homotopy, then a proof.
    a self-motion, is not excluded by this argument); fewer (a path lost, after three homotopies with new random
    constants) is reported as such (``complete=False`` and the count), never silently.
 
-Why not the alternatives.  SymPy's ``groebner`` on these equations does not finish in
-minutes (the degree-40 elimination of Husty's method is an hour-long computation in
-exact arithmetic); no univariate polynomial is computed, so the result's ``polynomial`` is
+Why not the alternatives.  SymPy's ``groebner`` already takes about 70 s on a 6-3 platform
+(16 modes: tests/systems/test_assembly.py) and is not tried on 40; Husty's elimination to a
+univariate polynomial of degree 40 is not done either, so the result's ``polynomial`` is
 ``None``.  The total-degree homotopy in Study's parameters has 128 paths, where PHCpack's
 formulation of Dietmaier's example (position and two columns of the rotation, 9 unknowns)
 has a mixed volume of 1536 (``src/Demo/stewgou40``): fewer paths, each short.

@@ -601,9 +601,9 @@ def test_the_6_6_checkers_reject_a_wrong_mode():
 
 
 def test_an_architecturally_singular_6_6_is_reported_incomplete():
-    # base and platform points on conics (parabolas) in projective correspondence: an
-    # architecturally singular platform (Roeschel & Mick 1998, Karger 2003): no isolated
-    # non-singular mode to certify, and the answer says so instead of an empty list
+    # a planar base and a planar platform whose points lie on parabolas, matched by the same
+    # parameter: a design of the architecturally singular kind (Roeschel & Mick 1998): no
+    # isolated non-singular mode is certified, and the answer says so instead of an empty list
     m = direct_kinematics([(i, i * i, 0) for i in range(6)], [(i, 1, i * i) for i in range(6)], [5] * 6)
     assert not m.complete and m.certified < 40
     with pytest.raises(ValueError, match="complex assembly modes were certified"):
