@@ -7,6 +7,7 @@ sibling of :mod:`screwsym.motion`: neither imports the other.
 from .assembly import (
     AssemblyFamily,
     AssemblyModes,
+    CertifiedMode,
     PlanarMode,
     SpatialMode,
     direct_kinematics,
@@ -55,4 +56,5 @@ __all__ = [
     "PlanarMode",
     "AssemblyFamily",
     "SpatialMode",
+    "CertifiedMode",
 ]

@@ -25,6 +25,12 @@ a number whose square is rational (``sqrt(5)`` is fine).  Floats are taken as th
 rationals of their binary values (``0.1`` is ``3602879701896397/36028797018963968``), so a
 float input gives the exact answer of the float data, not of the decimal the user meant.
 
+The general 6-6 Gough-Stewart platform (six legs, no two sharing a point as the 3-3 and 6-3
+do): Study's parameters (Husty 1996), a homotopy continuation in NumPy that proposes every
+mode, Krawczyk's test in exact rational arithmetic that proves each (one mode in a box,
+real or not), and the bound of 40 complex modes (Ronga & Vust 1995; Lazard 1993; Mourrain
+1993) that proves the list complete when 40 are certified: :mod:`._homotopy`.
+
 Every step charges the work budget (:mod:`screwsym.algebra.budget`): past it a
 ``ValueError`` naming ``direct_kinematics``.
 """
@@ -69,6 +75,7 @@ from ..core.checks import (
     describe,
 )
 from ._gough_stewart import SpatialMode, paired_legs, paired_modes
+from ._homotopy import CertifiedMode
 from ._root_field import RealRoot, real_roots_of
 
 __all__ = [
@@ -78,6 +85,7 @@ __all__ = [
     "PlanarMode",
     "AssemblyFamily",
     "SpatialMode",
+    "CertifiedMode",
 ]
 
 #: the variable of the univariate polynomials: ``t = tan(phi/2)``
@@ -140,17 +148,25 @@ class AssemblyModes:
     """The assembly modes of a mechanism for given leg lengths (:func:`direct_kinematics`).
 
     ``polynomial`` is the univariate polynomial solved (a ``Poly`` in ``t = tan(phi/2)``
-    for the 3-RPR), ``isolated_modes`` the modes found one by one, ``families`` the
-    infinite families (empty when the modes are finitely many).  :attr:`modes` is the
-    complete list, and refuses to answer when there are infinitely many.
+    for the 3-RPR), or None for the general 6-6 Gough-Stewart platform (no univariate
+    polynomial is computed there: its modes are found by a homotopy and each certified),
+    ``isolated_modes`` the modes found one by one, ``families`` the infinite families
+    (empty when the modes are finitely many).  :attr:`modes` is the complete list, and
+    refuses to answer when there are infinitely many or when the list is not proven complete.
+
+    ``complete`` says whether every isolated mode is proven found (always, but for a 6-6
+    whose certified complex modes fall short of the bound 40); ``certified`` is, for the
+    6-6, the number of distinct complex modes proven (real or not; None otherwise).
     """
 
-    polynomial: Poly
+    polynomial: Poly | None
     isolated_modes: tuple
     families: tuple
     base_points: tuple
     platform_points: tuple
     squared_lengths: tuple
+    complete: bool = True
+    certified: int | None = None
 
     @property
     def is_finite(self) -> bool:
@@ -159,7 +175,14 @@ class AssemblyModes:
 
     @property
     def modes(self) -> tuple:
-        """Every real assembly mode; ``ValueError`` when they are infinitely many."""
+        """Every real assembly mode; ``ValueError`` when they are infinitely many, or when
+        the list is not proven complete (``complete`` False: see ``.isolated_modes``)."""
+        if not self.complete:
+            raise ValueError(
+                f"direct_kinematics: only {self.certified} of at most 40 complex assembly modes "
+                "were certified, so the real ones found may not be all: see .isolated_modes "
+                "(each certified) and .certified"
+            )
         if self.families:
             raise ValueError(
                 "direct_kinematics: infinitely many assembly modes ("
@@ -480,7 +503,33 @@ def direct_kinematics(
     >>> sorted(round(float(mode.position[2]), 6) for mode in m.modes)
     [-3.987801, -3.769533, -2.692076, -2.571284, 2.571284, 2.692076, 3.769533, 3.987801]
 
-    The general 6-6 (40 complex modes, Husty 1996) is not handled (``NotImplementedError``).
+    The general 6-6 (any six legs: at most 40 isolated complex modes, Ronga & Vust 1995,
+    Husty 1996) is solved otherwise: a homotopy in Study's parameters proposes the modes and
+    Krawczyk's test proves each one in exact arithmetic, a box holding exactly one mode, a
+    real one (:mod:`screwsym.systems._homotopy`).  No univariate polynomial is computed
+    (``polynomial`` is None); each mode is a :class:`CertifiedMode`, its pose the box's
+    centre in floating point (``closes`` therefore says False: use ``mode.contains`` for an
+    exact pose), and ``complete`` is True only when 40 distinct complex modes are proven
+    (then none is missing; otherwise ``.modes`` raises and ``certified`` says how many).
+    Dietmaier's (1998) platform has all 40 real:
+
+    >>> from sympy import Rational as Q
+    >>> A = [(0, 0, 0), (Q('1.107915'), 0, 0), (Q('0.549094'), Q('0.756063'), 0),
+    ...      (Q('0.735077'), Q('-0.223935'), Q('0.525991')),
+    ...      (Q('0.514188'), Q('-0.526063'), Q('-0.368418')),
+    ...      (Q('0.590473'), Q('0.094733'), Q('-0.205018'))]
+    >>> B = [(0, 0, 0), (Q('0.542805'), 0, 0), (Q('0.956919'), Q('-0.528915'), 0),
+    ...      (Q('0.665885'), Q('-0.353482'), Q('1.402538')),
+    ...      (Q('0.478359'), Q('1.158742'), Q('0.107672')),
+    ...      (Q('-0.137087'), Q('-0.235121'), Q('0.353913'))]
+    >>> L = [1] + [Q(v) for v in ('0.645275', '1.086284', '1.503439', '1.281933', '0.771071')]
+    >>> m = direct_kinematics(A, B, L)
+    >>> m.polynomial is None, m.complete, m.certified, len(m.modes)
+    (True, True, 40, 40)
+    >>> [round(float(v), 6) for v in m.modes[0].position]
+    [0.442199, -0.713494, -0.543494]
+    >>> m.modes[0].contains(m.modes[1].pose)
+    False
 
     Bad input is refused:
 
@@ -519,11 +568,7 @@ def _spatial(a: tuple, b: tuple, l2: tuple) -> AssemblyModes:
     else:
         pairs = paired_legs(b, a)
         if pairs is None:
-            raise NotImplementedError(
-                "direct_kinematics: only the Gough-Stewart platforms whose six legs meet in pairs "
-                "at three platform (or three base) points (3-3, 6-3, 3-6); the general 6-6 "
-                "(40 complex modes, Husty 1996) is not handled"
-            )
+            return _general(a, b, l2)
         poly, inverse = paired_modes(b, a, l2, pairs)
         # the inverted mechanism's pose (p', R') is the inverse of ours: R = R'^T, p = -R p'
         modes = []
@@ -532,6 +577,15 @@ def _spatial(a: tuple, b: tuple, l2: tuple) -> AssemblyModes:
             modes.append(SpatialMode(ImmutableMatrix(-(rot * m.position)), rot, m.root, m.multiplicity))
     modes.sort(key=lambda m: m.root.evalf(30))
     return AssemblyModes(poly, tuple(modes), (), a, b, l2)
+
+
+def _general(a: tuple, b: tuple, l2: tuple) -> AssemblyModes:
+    """The general 6-6 (any six legs): a homotopy in Study's parameters, every mode
+    certified by Krawczyk's test in exact arithmetic (:mod:`screwsym.systems._homotopy`)."""
+    from ._homotopy import general_modes
+
+    modes, certified, complete = general_modes(a, b, l2)
+    return AssemblyModes(None, tuple(modes), (), a, b, l2, complete, certified)
 
 
 def _cos_sin(phi: Expr) -> tuple[Expr, Expr]:
