@@ -74,6 +74,9 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--peer", type=int, default=200, help="poses for modern_robotics IKinSpace")
     parser.add_argument("--quick", action="store_true", help="skip the fresh-process generation")
+    parser.add_argument("--backends", default="numpy,numba,c",
+                        help="comma-separated back ends to measure, those available among them "
+                             "(--backends numpy: NumPy alone, as without a compiler or numba)")
     args = parser.parse_args()
 
     import modern_robotics as mr
@@ -84,16 +87,20 @@ def main() -> None:
     arm = ur5()
     S = np.array([[float(x) for x in t.matrix] for t in arm.twists]).T
     M = np.array(arm.home.matrix, dtype=float)
-    backends = ["numpy"]
+    wanted = set(args.backends.split(","))
+    backends = ["numpy"] if "numpy" in wanted else []
     try:
         import numba  # noqa: F401
-        backends.append("numba")
+        if "numba" in wanted:
+            backends.append("numba")
     except ImportError:
         pass
     from screwsym.codegen._build import compiler
-    if compiler() is not None:
+    if compiler() is not None and "c" in wanted:
         backends.append("c")
-    default = fastest_backend()
+    if not backends:
+        parser.error(f"--backends: none of {args.backends!r} is available")
+    default = fastest_backend() if fastest_backend() in backends else backends[-1]
     solvers = [("fused", _fused, b) for b in backends] + [("staged", _staged, b) for b in backends
                                                           if b != "c"]
 
