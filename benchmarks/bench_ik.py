@@ -18,13 +18,16 @@ it replaced (each stage compiled on its own and evaluated in turn on arrays: "st
    ``(N, 8, 6)``, best of ``--rounds``, per pose (target: under 5 us; IKFast's published ~4 us
    per solve), and one pose ``(4, 4)`` per call; side by side with the peer modern_robotics
    ``IKinSpace`` (Newton's method from a guess 0.1 rad off, one branch per call) on a subset;
+   for NumPy, one pose a call also through the array code (the path before the one of
+   Python floats, ``numeric.ik._Solver``);
 3. round trips on ``--poses`` random poses away from singularities (the smallest singular
    value of the space Jacobian over 0.05, modern_robotics): the joints that made the pose
    are among the branches (to 1e-8 rad) and every branch that exists reproduces the pose
    under modern_robotics' ``FKinSpace`` (to 1e-9) (target: 100 %), for the default back end;
    every other back end and the staged solver agree with it (NaN in the same places).
 
-``--quick`` skips the fresh-process generation (figure 1).
+``--quick`` skips the fresh-process generation (figure 1); ``--backends numpy`` measures NumPy
+alone (as on a machine without a C compiler or numba).
 """
 
 from __future__ import annotations
@@ -131,6 +134,10 @@ def main() -> None:
         one = min(_timed_each(f, T[:calls]) for _ in range(args.rounds))
         mark = " (default)" if label == "fused" and b == default else ""
         print(f"   {label:6s} {b:6s} {best / args.poses * 1e6:9.2f} {one / calls * 1e6:12.2f}{mark}")
+        if label == "fused" and b == "numpy":  # the same pose through the array code: the path before
+            array = min(_timed_each(f.fn, T[:calls]) for _ in range(args.rounds))
+            print(f"   {label:6s} {b:6s} {'':9s} {array / calls * 1e6:12.2f} one pose through the array code "
+                  "(before the path of Python floats)")
     guesses = q[: args.peer] + 0.1
     t0 = time.process_time()
     converged = sum(mr.IKinSpace(S, M, T[k], guesses[k], 1e-9, 1e-9)[1] for k in range(args.peer))
