@@ -18,8 +18,8 @@ it replaced (each stage compiled on its own and evaluated in turn on arrays: "st
    ``(N, 8, 6)``, best of ``--rounds``, per pose (target: under 5 us; IKFast's published ~4 us
    per solve), and one pose ``(4, 4)`` per call; side by side with the peer modern_robotics
    ``IKinSpace`` (Newton's method from a guess 0.1 rad off, one branch per call) on a subset;
-   for NumPy, one pose a call also through the array code (the path before the one of
-   Python floats, ``numeric.ik._Solver``);
+   and a batch of one pose ``(1, 4, 4)`` per call, which takes the array code (in NumPy the
+   one-pose path before the single-point path on floats reached programs of this size);
 3. round trips on ``--poses`` random poses away from singularities (the smallest singular
    value of the space Jacobian over 0.05, modern_robotics): the joints that made the pose
    are among the branches (to 1e-8 rad) and every branch that exists reproduces the pose
@@ -124,7 +124,7 @@ def main() -> None:
 
     print(f"2. solver, {args.poses} poses (CPU us per pose, best of {args.rounds}; "
           "target < 5 us batched, IKFast ~4 us per solve):")
-    print("   solver back end   batched   one pose a call")
+    print("   solver back end   batched   one pose a call   a batch of one a call")
     for label, solver, b in solvers:
         f = solver(arm, (), b)
         f(T[:10])
@@ -132,12 +132,10 @@ def main() -> None:
         best = min(_timed(f, T) for _ in range(args.rounds))
         calls = min(1000, args.poses)
         one = min(_timed_each(f, T[:calls]) for _ in range(args.rounds))
+        ones = min(_timed_each(f, T[:calls, None]) for _ in range(args.rounds))  # (1, 4, 4): arrays
         mark = " (default)" if label == "fused" and b == default else ""
-        print(f"   {label:6s} {b:6s} {best / args.poses * 1e6:9.2f} {one / calls * 1e6:12.2f}{mark}")
-        if label == "fused" and b == "numpy":  # the same pose through the array code: the path before
-            array = min(_timed_each(f.fn, T[:calls]) for _ in range(args.rounds))
-            print(f"   {label:6s} {b:6s} {'':9s} {array / calls * 1e6:12.2f} one pose through the array code "
-                  "(before the path of Python floats)")
+        print(f"   {label:6s} {b:6s} {best / args.poses * 1e6:9.2f} {one / calls * 1e6:12.2f} "
+              f"{ones / calls * 1e6:18.2f}{mark}")
     guesses = q[: args.peer] + 0.1
     t0 = time.process_time()
     converged = sum(mr.IKinSpace(S, M, T[k], guesses[k], 1e-9, 1e-9)[1] for k in range(args.peer))

@@ -206,7 +206,7 @@ def run_bounded(fn: Callable[..., _T], *args: Any) -> _T:
     left = deadline - process_time()
     if left <= 0:
         raise OverBudget
-    ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
+    ctx: Any = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
     timer = hasattr(signal, "setitimer")
     receive, send = ctx.Pipe(duplex=False)
     worker = ctx.Process(target=_run_worker, args=(send, fn, args, left if timer else None), daemon=True)

@@ -19,7 +19,6 @@ singularity, a tangent) hold on sets of measure zero and are left to the exact
 
 from __future__ import annotations
 
-import math
 from functools import lru_cache
 from typing import Any
 
@@ -34,7 +33,6 @@ from sympy import (
     Lt,
     Mul,
     Piecewise,
-    S,
     cos,
     cse,
     floor,
@@ -42,8 +40,6 @@ from sympy import (
     pi,
     sin,
 )
-
-from sympy.printing.pycode import PythonCodePrinter
 
 from ..codegen import compiler, default_backend, lambdify
 from ..motion.chain import Chain
@@ -313,120 +309,26 @@ def _staged(chain: Chain, free: tuple[int, ...], backend: str | None) -> _Staged
     return _Staged(chain, free, backend)
 
 
-class _ScalarPrinter(PythonCodePrinter):
-    """The program's right-hand sides as Python on floats (``math``), each symbol by its new name.
+class _GivenFree:
+    """The compiled program of a chain with free joints: ``f(T, free_values)``, a scalar for one."""
 
-    A square root of a negative number is NaN (``_sqrt``), as in the array code, so that
-    a branch that does not exist does not stop the others; anything else ``math`` refuses
-    (a division by zero, an infinite input) raises, and the caller takes the array code.
-    """
-
-    def __init__(self, names: dict):
-        super().__init__({"fully_qualified_modules": True, "strict": True})
-        self._names = names
-
-    def _print_Symbol(self, expr: Any) -> str:
-        return self._names[expr]
-
-    _print_Dummy = _print_Symbol
-
-    def _print_Pow(self, expr: Any, rational: bool = False) -> str:
-        b, e = self._print(expr.base), expr.exp
-        if e == S.Half:
-            return f"_sqrt({b})"
-        if e == 2 and expr.base.is_Symbol:
-            return f"({b}*{b})"
-        if e.is_Integer and e < 0:
-            return f"(1.0/({b})**({-int(e)}))"
-        if e.is_Integer:
-            return f"({b})**({int(e)})"
-        return f"math.pow({b}, {self._print(e)})"
-
-    def _print_Piecewise(self, expr: Any) -> str:
-        code = "_nan"
-        for value, cond in reversed(expr.args):
-            code = (f"({self._print(value)})" if cond is S.true
-                    else f"(({self._print(value)}) if ({self._print(cond)}) else {code})")
-        return code
-
-    def _print_floor(self, expr: Any) -> str:
-        return f"float(math.floor({self._print(expr.args[0])}))"
-
-
-def _sqrt_or_nan(x: float) -> float:
-    return math.sqrt(x) if x >= 0.0 else math.nan
-
-
-def _scalar_function(program: _Program) -> Any:
-    """The program as one Python function of floats: ``f(t, f)`` -> the outputs, a flat list.
-
-    ``t`` the pose's 16 entries (row by row), ``f`` the free joints' values.  Every name
-    in its source is ``_v<k>`` (the program's symbols renamed) or the module's; the
-    numbers are the chain's.
-    """
-    names: dict[Any, str] = {}
-    inputs = list(program.T) + (list(program.F) if program.F is not None else [])
-    for k, x in enumerate(inputs + [t for t, _ in program.assignments]):
-        names[x] = f"_v{k}"
-    printer = _ScalarPrinter(names)
-    lines = ["def _one(_t, _f):",
-             f"    {', '.join(names[x] for x in program.T)}, = _t"]
-    if program.F is not None:
-        lines.append(f"    {', '.join(names[x] for x in program.F)}, = _f")
-    lines += [f"    {names[t]} = {printer.doprint(e)}" for t, e in program.assignments]
-    lines.append(f"    return [{', '.join(printer.doprint(e) for e in program.outputs)}]")
-    namespace = {"math": math, "_sqrt": _sqrt_or_nan, "_nan": math.nan}
-    exec(compile("\n".join(lines) + "\n", "<screwsym.numeric.ik one pose>", "exec"), namespace)
-    return namespace["_one"]
-
-
-class _Solver:
-    """The compiled program: ``f(T[, free_values])``, with a path of Python floats for one pose.
-
-    The NumPy back end pays per array operation, hundreds of them on arrays of one row for
-    one pose (1.4 ms for the UR5 against 0.58 ms for the staged solver it replaced); the
-    same program on Python floats takes that pose in tens of microseconds
-    (``benchmarks/bench_ik.py``).  The path is built on the first pose that takes it and
-    taken for one ``(4, 4)`` float64 pose (and its free joints, a float or ``(k,)``), the
-    array code otherwise, and where ``math`` refuses (a division by zero, an infinite input).
-    """
-
-    def __init__(self, fn: Any, program: _Program | None, k: int):
+    def __init__(self, fn: Any, k: int):
         self.fn, self.k = fn, k
-        self.shape = (program.outputs.shape if program is not None else None)
-        self._program = program
-        self._one: Any = None
 
     def __call__(self, T: Any, free_values: Any = None) -> np.ndarray:
-        if self.k:
-            if free_values is None:
-                raise TypeError(f"free_values: expected the values of the {self.k} free joints, "
-                                f"(..., {self.k})")
-            if self.k == 1 and np.ndim(free_values) == 0:
-                free_values = np.reshape(np.asarray(free_values, dtype=float), (1,))
-        elif free_values is not None:
-            raise TypeError("free_values: the solver has no free joints, got values for some")
-        if (self._program is not None and type(T) is np.ndarray and T.shape == (4, 4)
-                and T.dtype == np.float64):
-            given = (free_values.tolist() if type(free_values) is np.ndarray
-                     and free_values.shape == (self.k,) and free_values.dtype == np.float64
-                     else () if not self.k else None)
-            if given is not None:
-                if self._one is None:
-                    self._one = _scalar_function(self._program)
-                try:
-                    return np.array(self._one(T.ravel().tolist(), given)).reshape(self.shape)
-                except (ZeroDivisionError, OverflowError, ValueError):
-                    pass  # IEEE 754 inf/nan where math raises: the array code gives it
-        return self.fn(T) if not self.k else self.fn(T, free_values)
+        if free_values is None:
+            raise TypeError(f"free_values: expected the values of the {self.k} free joints, (..., {self.k})")
+        if self.k == 1 and np.ndim(free_values) == 0:
+            free_values = np.reshape(np.asarray(free_values, dtype=float), (1,))
+        return self.fn(T, free_values)
 
 
 @lru_cache(maxsize=16)
 def _fused(chain: Chain, free: tuple[int, ...], backend: str) -> Any:
     program = _Program(chain, free)
-    fn = lambdify(program.arguments, program, backend,
-                  names=["T"] if program.F is None else ["T", "free_values"])
-    return _Solver(fn, program if backend == "numpy" else None, len(free))
+    if program.F is None:
+        return lambdify(program.arguments, program, backend, names=["T"])
+    return _GivenFree(lambdify(program.arguments, program, backend, names=["T", "free_values"]), len(free))
 
 
 def fastest_backend() -> str:
@@ -449,8 +351,9 @@ def inverse_kinematics_function(chain: Chain, free: Any = (), backend: str | Non
     joint).  All branches are one generated program (:class:`_Program`), one loop over
     the poses; ``backend`` as for :func:`screwsym.lambdify`, by default the fastest
     there is (:func:`fastest_backend`: C where a compiler is found).  One pose
-    ``(4, 4)`` takes the back end's one-point path.  Cached per chain, ``free`` and back
-    end.
+    ``(4, 4)`` takes the back end's one-point path (NumPy's: the program on Python floats,
+    a branch that does not exist NaN there too; 44 us for the UR5 against 1.4 ms on the
+    array code, ``benchmarks/bench_ik.py``).  Cached per chain, ``free`` and back end.
 
     >>> import numpy as np
     >>> from screwsym.motion.chain import ur5

@@ -134,32 +134,21 @@ def test_the_panda_with_its_seventh_joint_given(backend):
         assert np.nanmax(np.abs(wrapped(one - branches[0]))) < 1e-10
 
 
-def test_one_pose_on_python_floats_falls_back_to_the_array_code():
-    """NumPy's one-pose path (the program on Python floats): a branch that does not exist is
-    NaN there too, and where ``math`` raises (a division by zero) the array code answers."""
+def test_one_pose_on_python_floats_has_the_same_missing_branches():
+    """NumPy's one-pose path (the program on Python floats, screwsym.codegen's single-point
+    path): a branch that does not exist (the square root of a negative number) is NaN there
+    too, the others as in the batch."""
     arm = ur5()
     f = inverse_kinematics_function(arm, backend="numpy")
     q, T = poses(arm, 60, seed=3)
     batch = f(T)
     assert np.isnan(batch).any()  # some poses lose branches
     one = np.array([f(x) for x in T])
-    assert f._one is not None  # the path of floats was taken
     assert (np.isnan(one) == np.isnan(batch)).all()
     assert np.nanmax(np.abs(wrapped(one - batch))) < 1e-10
     far = T[0].copy()
     far[:3, 3] = [5, 0, 0]
     assert np.isnan(f(far)).all()
-
-    def refuses(t, free):
-        raise ZeroDivisionError
-
-    f._one, kept = refuses, f._one
-    try:
-        assert np.array_equal(f(T[0]), batch[0], equal_nan=True)  # the array code's row, exactly
-    finally:
-        f._one = kept
-    with pytest.raises(TypeError, match="free_values: the solver has no free joints"):
-        f(T[0], 0.5)
 
 
 def test_the_program_holds_only_its_own_symbols_and_the_default_is_the_fastest():
