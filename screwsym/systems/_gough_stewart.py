@@ -13,7 +13,8 @@ univariate polynomial of degree 16 (Nanua, Waldron & Murthy 1990: at most 16 mod
 coordinate a polynomial in the root (exact, in ``Q(r)``); the rotation maps the platform
 triangle onto ``B_1 B_2 B_3``.  A basis not in shape position (a double mode, a mode not
 separated by the last unknown, after trying the three ``y_j`` as the last) is refused, not
-guessed.
+guessed.  SymPy's ``groebner`` cannot be stopped midway: it runs in a worker process ended
+when the budget's CPU time runs out (:func:`screwsym.algebra.budget.run_bounded`).
 """
 
 from __future__ import annotations
