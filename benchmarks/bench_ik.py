@@ -18,13 +18,16 @@ it replaced (each stage compiled on its own and evaluated in turn on arrays: "st
    ``(N, 8, 6)``, best of ``--rounds``, per pose (target: under 5 us; IKFast's published ~4 us
    per solve), and one pose ``(4, 4)`` per call; side by side with the peer modern_robotics
    ``IKinSpace`` (Newton's method from a guess 0.1 rad off, one branch per call) on a subset;
+   and a batch of one pose ``(1, 4, 4)`` per call, which takes the array code (in NumPy the
+   one-pose path before the single-point path on floats reached programs of this size);
 3. round trips on ``--poses`` random poses away from singularities (the smallest singular
    value of the space Jacobian over 0.05, modern_robotics): the joints that made the pose
    are among the branches (to 1e-8 rad) and every branch that exists reproduces the pose
    under modern_robotics' ``FKinSpace`` (to 1e-9) (target: 100 %), for the default back end;
    every other back end and the staged solver agree with it (NaN in the same places).
 
-``--quick`` skips the fresh-process generation (figure 1).
+``--quick`` skips the fresh-process generation (figure 1); ``--backends numpy`` measures NumPy
+alone (as on a machine without a C compiler or numba).
 """
 
 from __future__ import annotations
@@ -74,6 +77,9 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--peer", type=int, default=200, help="poses for modern_robotics IKinSpace")
     parser.add_argument("--quick", action="store_true", help="skip the fresh-process generation")
+    parser.add_argument("--backends", default="numpy,numba,c",
+                        help="comma-separated back ends to measure, those available among them "
+                             "(--backends numpy: NumPy alone, as without a compiler or numba)")
     args = parser.parse_args()
 
     import modern_robotics as mr
@@ -84,16 +90,20 @@ def main() -> None:
     arm = ur5()
     S = np.array([[float(x) for x in t.matrix] for t in arm.twists]).T
     M = np.array(arm.home.matrix, dtype=float)
-    backends = ["numpy"]
+    wanted = set(args.backends.split(","))
+    backends = ["numpy"] if "numpy" in wanted else []
     try:
         import numba  # noqa: F401
-        backends.append("numba")
+        if "numba" in wanted:
+            backends.append("numba")
     except ImportError:
         pass
     from screwsym.codegen._build import compiler
-    if compiler() is not None:
+    if compiler() is not None and "c" in wanted:
         backends.append("c")
-    default = fastest_backend()
+    if not backends:
+        parser.error(f"--backends: none of {args.backends!r} is available")
+    default = fastest_backend() if fastest_backend() in backends else backends[-1]
     solvers = [("fused", _fused, b) for b in backends] + [("staged", _staged, b) for b in backends
                                                           if b != "c"]
 
@@ -114,7 +124,7 @@ def main() -> None:
 
     print(f"2. solver, {args.poses} poses (CPU us per pose, best of {args.rounds}; "
           "target < 5 us batched, IKFast ~4 us per solve):")
-    print("   solver back end   batched   one pose a call")
+    print("   solver back end   batched   one pose a call   a batch of one a call")
     for label, solver, b in solvers:
         f = solver(arm, (), b)
         f(T[:10])
@@ -122,8 +132,10 @@ def main() -> None:
         best = min(_timed(f, T) for _ in range(args.rounds))
         calls = min(1000, args.poses)
         one = min(_timed_each(f, T[:calls]) for _ in range(args.rounds))
+        ones = min(_timed_each(f, T[:calls, None]) for _ in range(args.rounds))  # (1, 4, 4): arrays
         mark = " (default)" if label == "fused" and b == default else ""
-        print(f"   {label:6s} {b:6s} {best / args.poses * 1e6:9.2f} {one / calls * 1e6:12.2f}{mark}")
+        print(f"   {label:6s} {b:6s} {best / args.poses * 1e6:9.2f} {one / calls * 1e6:12.2f} "
+              f"{ones / calls * 1e6:18.2f}{mark}")
     guesses = q[: args.peer] + 0.1
     t0 = time.process_time()
     converged = sum(mr.IKinSpace(S, M, T[k], guesses[k], 1e-9, 1e-9)[1] for k in range(args.peer))

@@ -17,15 +17,21 @@ microseconds of CPU time (:data:`SLACK`), checked at every charge.  A call that 
 it stops with the same error at its next charge; CPU time, not wall time, so that a
 loaded machine does not stop a call that an idle one answers.
 
+A step that can neither be priced in advance nor stopped midway (SymPy's ``groebner``)
+runs in a worker process whose CPU time is limited to what the budget has left
+(:func:`run_bounded`): stopped there, it ends the call with the same error.
+
 SymPy has no such budget (its ``polys`` run to the end), hence this module.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import signal
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 from time import process_time
+from typing import Any, TypeVar
 
 __all__ = [
     "TooManyCases",
@@ -34,6 +40,7 @@ __all__ = [
     "budget_name",
     "case_budget",
     "bounded",
+    "run_bounded",
     "CaseList",
     "MAX_CASES",
     "BUDGET",
@@ -163,6 +170,88 @@ def bounded(budget: int, name: str, message: str) -> Iterator[None]:
             yield
         except OverBudget:
             raise ValueError(message.format(name=name, budget=budget)) from None
+
+
+_T = TypeVar("_T")
+
+
+def run_bounded(fn: Callable[..., _T], *args: Any) -> _T:
+    """``fn(*args)`` in a worker process stopped when the budget under way runs out of CPU time.
+
+    For a step that can neither be priced in advance nor stopped midway (SymPy's
+    ``groebner`` runs to the end).  The worker (forked where the platform can, spawned
+    otherwise: then ``fn`` must be a module-level function, and ``args`` and the result
+    must pickle either way) may spend the CPU time the budget has left
+    (``budget x SLACK`` microseconds from its start, less what the call spent); a
+    profiling timer (``ITIMER_PROF``, CPU time) ends it there, and the call stops with
+    the budget's ``ValueError``, as at a :func:`charge`.  Where the platform has no such
+    timer (Windows) the worker is ended after that much wall time instead, which a loaded
+    machine reaches sooner.  Its CPU time is then charged to the budget as the share of
+    the CPU bound it used (``t`` microseconds as ``t / SLACK`` units).  An exception in
+    ``fn`` is raised here.  Outside a budget, and in a daemonic process (a worker of a
+    ``multiprocessing`` pool, which may not start processes), ``fn(*args)`` runs here,
+    unbounded as before.
+
+    >>> with case_budget(1_000_000, "demo"):
+    ...     run_bounded(pow, 2, 10)
+    1024
+    >>> run_bounded(pow, 2, 10)                  # outside a budget: called here
+    1024
+    """
+    import multiprocessing as mp
+
+    deadline = _DEADLINE.get()
+    if deadline is None or _LEFT.get() is None or mp.current_process().daemon:
+        return fn(*args)
+    left = deadline - process_time()
+    if left <= 0:
+        raise OverBudget
+    ctx: Any = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
+    timer = hasattr(signal, "setitimer")
+    receive, send = ctx.Pipe(duplex=False)
+    worker = ctx.Process(target=_run_worker, args=(send, fn, args, left if timer else None), daemon=True)
+    worker.start()
+    send.close()
+    try:
+        if not receive.poll(None if timer else left):
+            raise OverBudget  # no timer: the wall time is up
+        try:
+            status, value, used = receive.recv()
+        except EOFError:  # the worker ended without an answer
+            worker.join()
+            if timer and worker.exitcode == -signal.SIGPROF:
+                raise OverBudget from None
+            raise RuntimeError(f"run_bounded: the worker process ended with exit code "
+                               f"{worker.exitcode} and no answer") from None
+    finally:
+        if worker.is_alive():
+            worker.kill()
+        worker.join()
+        receive.close()
+    charge(int(used * 1e6 / SLACK))
+    if status == "error":
+        raise value
+    return value
+
+
+def _run_worker(send: Any, fn: Callable, args: tuple, seconds: float | None) -> None:
+    """The worker of :func:`run_bounded`: ``fn(*args)`` under a CPU timer, the answer sent."""
+    if seconds is not None:
+        signal.signal(signal.SIGPROF, signal.SIG_DFL)  # the default action ends the process
+        signal.setitimer(signal.ITIMER_PROF, seconds)
+    start = process_time()
+    try:
+        answer: tuple = ("ok", fn(*args))
+    except Exception as error:  # raised again in the caller
+        answer = ("error", error)
+    if seconds is not None:
+        signal.setitimer(signal.ITIMER_PROF, 0)
+    used = process_time() - start
+    try:
+        send.send((*answer, used))
+    except Exception as error:  # an answer that does not pickle
+        send.send(("error", RuntimeError(f"run_bounded: the answer cannot be sent back: {error!r}"), used))
+    send.close()
 
 
 class CaseList(list):

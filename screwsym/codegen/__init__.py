@@ -80,8 +80,10 @@ a ``(3,)`` vector, a Python or NumPy float) takes a fast path in every back
 end: in C the compiled point function, called at the cost of one C call
 (about pinocchio's Python call for the UR5's kinematics and dynamics,
 ``benchmarks/bench_one_pose.py``); elsewhere the same plan in plain Python
-floats, and where that path would divide by zero or leave the reals, the
-array code gives the IEEE result instead.
+floats (plans of up to 500 statements; 1000 in NumPy, whose array code pays
+per operation), a square root of a negative number NaN there as
+in the arrays, and where that path would divide by zero or overflow, the array
+code gives the IEEE result instead.
 
 Generated functions are cached in memory per signature (bounded, least
 recently used first; one build per signature when threads race), named

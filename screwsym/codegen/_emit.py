@@ -111,11 +111,20 @@ def _returns(plan: Plan) -> str:
 
 
 #: plans of more statements than this have no single-point fast path (a single point
-#: takes the array code): printing and compiling a huge closed form twice costs seconds
+#: takes the compiled loop, one row): printing and compiling a huge closed form twice
+#: costs seconds, and past a few hundred statements numba's or C's loop of one row is
+#: faster than Python floats (the UR5's inverse kinematics, 538 statements: 8 us in numba
+#: against about 45 us on floats)
 SCALAR_STATEMENTS = 500
+#: ... and in the NumPy back end, whose array code pays per operation on arrays of one row:
+#: the inverse kinematics of the UR5, the PUMA 560 and the Panda (every branch one program,
+#: ``screwsym.numeric.inverse_kinematics_function``, 508-538 statements) take one pose in
+#: about 45 us on floats against 1.4 ms on the array code (``benchmarks/bench_ik.py``)
+SCALAR_STATEMENTS_NUMPY = 1000
 
 
-def _wrapper(plan: Plan, body: list[str], contiguous: bool, fast: bool = False) -> list[str]:
+def _wrapper(plan: Plan, body: list[str], contiguous: bool, fast: bool = False,
+             scalar_limit: int = SCALAR_STATEMENTS) -> list[str]:
     params = _params(plan)
     lines = [f"def _fn({params}, *, out=None):"]
     if fast:  # the extension module's point(): None unless one plain point
@@ -125,7 +134,7 @@ def _wrapper(plan: Plan, body: list[str], contiguous: bool, fast: bool = False) 
             "        if _r is not None:",
             "            return _r",
         ]
-    elif len(plan.assigns) <= SCALAR_STATEMENTS:  # a huge plan: printed (and compiled) once
+    elif len(plan.assigns) <= scalar_limit:  # a huge plan: printed (and compiled) once
         lines += _scalar_path(plan)
     lines.append(
         f"    ({params},), ({_outs(plan)},), _shape, _n = "
@@ -166,7 +175,8 @@ def numpy_source(plan: Plan) -> str:
             else f"{ind}_o{j}[_i:_j, {c}] = {code}"
         ),
     )
-    return "\n".join(_header(plan, "numpy") + _wrapper(plan, body, False)) + "\n"
+    return "\n".join(_header(plan, "numpy") + _wrapper(plan, body, False,
+                                                       scalar_limit=SCALAR_STATEMENTS_NUMPY)) + "\n"
 
 
 def kernel_source(plan: Plan) -> list[str]:

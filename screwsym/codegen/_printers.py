@@ -166,12 +166,16 @@ class ScalarPrinter(_Common, PythonCodePrinter):
         if e.is_Integer:
             return f"({self._print(b)})**({self._print(e)})"
         if e == Float(0.5) or e == Integer(1) / 2:
-            return f"_m.sqrt({self._print(b)})"
+            return f"{self._sqrt}({self._print(b)})"
         if e == -Integer(1) / 2:
-            return f"(1.0/_m.sqrt({self._print(b)}))"
+            return f"(1.0/{self._sqrt}({self._print(b)}))"
         return f"_m.pow({self._print(b)}, {self._print(e)})"
 
     _helper = "_"  # helpers are _min, _max, _sign, _mod (see PY_HELPERS)
+    #: the square root: NaN for a negative number (``_sqrt`` of PY_HELPERS) as in the array
+    #: code, where ``math.sqrt`` raises (a closed form with a branch that does not exist at
+    #: the point, an inverse kinematics, would otherwise leave the single-point path)
+    _sqrt = "_sqrt"
 
     @property
     def _functions(self):
@@ -197,6 +201,7 @@ class NumbaPrinter(ScalarPrinter):
     """The fused loop: as the scalar path, with NumPy's float ``floor``/``ceil``."""
 
     _helper = "_nb_"  # the helpers compiled by numba
+    _sqrt = "_m.sqrt"  # NaN for a negative number under error_model='numpy'
 
     def _print_floor(self, expr):
         return f"_np.floor({self._print(expr.args[0])})"
@@ -250,6 +255,10 @@ def _sign(x):
 
 def _mod(a, b):
     return a % b if b != 0.0 else _m.nan
+
+
+def _sqrt(x):
+    return _m.sqrt(x) if x >= 0.0 else _m.nan
 """
 
 #: helpers every generated C file defines (static inline: no unused warnings)

@@ -32,7 +32,7 @@ from .parameters import (
     base_values,
     parameters,
 )
-from .subproblems import Branch, subproblem1, subproblem2, subproblem3
+from .subproblems import Branch, subproblem1, subproblem2, subproblem3, subproblem5
 from .transform import Transform, adjoint_matrix, skew
 
 __all__ = [
@@ -70,6 +70,7 @@ __all__ = [
     "subproblem2",
     "subproblem3",
     "subproblem4",
+    "subproblem5",
     "inverse_kinematics",
     "decomposition",
     "Decomposition",

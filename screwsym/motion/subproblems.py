@@ -70,7 +70,7 @@ from ..core.screw import Screw
 from ..core.tidy import tidy
 from ..core.twist import Twist
 
-__all__ = ["Branch", "subproblem1", "subproblem2", "subproblem3"]
+__all__ = ["Branch", "subproblem1", "subproblem2", "subproblem3", "subproblem5"]
 
 
 class Branch(NamedTuple):
@@ -467,3 +467,159 @@ def subproblem3(axis: Any, p: Any, q: Any, delta: Any, *, point: Any = None) -> 
         Branch(And(_zero(_clean(uu * vv)), _zero(c)), (Dummy("theta", real=True),)),
     ]
     return _kept(branches)
+
+
+# --------------------------------------------------------------------- Subproblem 5
+
+
+def _rational_axis(axis: Any, name: str) -> tuple[ImmutableMatrix, Expr]:
+    """``(k, w)``: a non-zero rational 3-vector and its length, which must be rational."""
+    k = check_nonzero_vector(axis, name, "a rotation axis needs a non-zero direction")
+    if not all(x.is_Rational for x in k):
+        raise ValueError(f"{name}: expected rational entries (subproblem5 finds its roots "
+                         f"exactly over the rationals), got {list(k)}")
+    w = sqrt(k.dot(k))
+    if not w.is_Rational:
+        raise ValueError(f"{name}: expected an axis of rational length (such as a unit axis), "
+                         f"got {list(k)} of length {w}")
+    return k, w
+
+
+def _circle_terms(k: ImmutableMatrix, ww: Expr, w: Expr, p: ImmutableMatrix,
+                  h: ImmutableMatrix) -> tuple[Expr, Expr, Expr]:
+    """``h . R(k, theta) p = a + b cos(w theta) + c sin(w theta)``: ``(a, b, c)``."""
+    kp, kh = k.dot(p) / ww, k.dot(h)
+    return (kp * kh, h.dot(p) - kp * kh, h.dot(k.cross(p)) / w)
+
+
+def subproblem5(axis1: Any, axis2: Any, axis3: Any, p0: Any, p1: Any, p2: Any,
+                p3: Any) -> tuple[Branch, ...]:
+    r"""Subproblem 5 (IK-Geo): ``p0 + R(axis1, theta1) p1 = R(axis2, theta2) (p2 + R(axis3, theta3) p3)``.
+
+    Explanation
+    ===========
+
+    ``R(k, theta)`` turns by ``|k| theta`` about the line through the origin along ``k``
+    (as ``exp6`` and :func:`~screwsym.motion.inverse_kinematics.subproblem4`).  The point
+    ``x = p0 + R1 p1`` runs on a circle about axis 1, ``y = p2 + R3 p3`` on one about
+    axis 3, and a rotation about axis 2 takes ``y`` to ``x`` iff ``|x| = |y|`` and
+    ``k2 . x = k2 . y``.  Both sides are affine in ``(cos, sin)`` of their angle
+    (Elias & Wen 2025, Subproblem 5), so the two conditions give ``(cos, sin)`` of
+    ``theta3`` as affine functions of those of ``theta1`` (a 2 x 2 linear system),
+    ``cos^2 + sin^2 = 1`` a conic in those of ``theta1``, and ``t = tan(w1 theta1 / 2)`` a
+    polynomial of degree at most 4: the quartic.  Each real root ``t`` (exact: a rational
+    or a ``CRootOf``), and ``w1 theta1 = pi`` where it is a solution (the root at
+    infinity), gives one branch: ``theta1 = 2 atan(t) / w1``, ``theta3`` the ``atan2`` of
+    its ``(sin, cos)``, ``theta2`` Subproblem 1 from ``y`` to ``x`` about axis 2 (a free
+    real ``Dummy`` where ``x`` lies on axis 2).  At most four branches, each exact.
+
+    Exact rational data only (its roots are those of a rational quartic), axes of rational
+    length; the case where the 2 x 2 system is singular (``theta3`` not fixed by the two
+    conditions, as where axes 2 and 3 are parallel or ``p3`` lies on axis 3) and a quartic
+    that vanishes identically (infinitely many solutions) are refused with
+    ``NotImplementedError``, never answered by a guess.
+
+    Examples
+    ========
+
+    >>> from sympy import Rational
+    >>> from screwsym.motion.subproblems import subproblem5
+    >>> x, y, z = [1, 0, 0], [0, 1, 0], [0, 0, 1]
+    >>> p0 = [Rational(24, 25), Rational(1, 5), Rational(-52, 25)]
+    >>> branches = subproblem5(x, y, z, p0, [0, 1, 0], [1, 0, 0], [1, 0, 0])
+    >>> len(branches)
+    2
+    >>> branches[0].values                   # the quartic's rational root t = 1/2
+    (2*atan(1/2), atan(4/3), atan(4/3))
+    >>> [round(float(v), 6) for v in branches[1].values]     # a root of its cubic factor
+    [2.529816, 1.003197, -0.666997]
+    >>> subproblem5(x, y, z, [9, 0, 0], [0, 1, 0], [1, 0, 0], [1, 0, 0])   # out of reach
+    ()
+
+    Parameters
+    ==========
+
+    axis1, axis2, axis3 : rational 3-vectors of rational length (the axes through the origin)
+    p0, p1, p2, p3 : rational 3-vectors
+
+    See Also
+    ========
+
+    subproblem1, screwsym.motion.inverse_kinematics.subproblem4
+
+    References
+    ==========
+
+    A. J. Elias & J. T. Wen, "IK-Geo: Unified robot inverse kinematics using subproblem
+    decomposition", *Mechanism and Machine Theory* 209 (2025), Subproblem 5.
+    """
+    from sympy import Poly, atan, pi, real_roots
+
+    k1, w1 = _rational_axis(axis1, "axis1")
+    k2, w2 = _rational_axis(axis2, "axis2")
+    k3, w3 = _rational_axis(axis3, "axis3")
+    pts = []
+    for name, value in (("p0", p0), ("p1", p1), ("p2", p2), ("p3", p3)):
+        v = check_vector(value, name)
+        if not all(e.is_Rational for e in v):
+            raise ValueError(f"{name}: expected rational entries, got {list(v)}")
+        pts.append(v)
+    q0, q1, q2, q3 = pts
+    ww1, ww3 = w1**2, w3**2
+    # |x|^2 = A0 + A1 c1 + A2 s1, k2.x = B0 + B1 c1 + B2 s1 (c1, s1 of w1 theta1); same for y
+    a = _circle_terms(k1, ww1, w1, q1, q0)
+    A = (q0.dot(q0) + q1.dot(q1) + 2 * a[0], 2 * a[1], 2 * a[2])
+    b = _circle_terms(k1, ww1, w1, q1, k2)
+    B = (k2.dot(q0) + b[0], b[1], b[2])
+    e = _circle_terms(k3, ww3, w3, q3, q2)
+    E = (q2.dot(q2) + q3.dot(q3) + 2 * e[0], 2 * e[1], 2 * e[2])
+    f = _circle_terms(k3, ww3, w3, q3, k2)
+    F = (k2.dot(q2) + f[0], f[1], f[2])
+    det = E[1] * F[2] - E[2] * F[1]
+    if det == 0:
+        raise NotImplementedError(
+            "subproblem5: |y| and k2 . y do not fix theta3 (axes 2 and 3 parallel, or p3 on "
+            "axis 3): this degenerate case is not handled")
+    t = Dummy("t", real=True)
+
+    def third(c1: Expr, s1: Expr, one: Expr = S.One) -> tuple[Expr, Expr]:
+        """``(cos, sin)`` of ``w3 theta3`` where ``(cos, sin)`` of ``w1 theta1`` are
+        ``(c1, s1) / one`` (times ``one``: homogeneous)."""
+        r1 = (A[0] - E[0]) * one + A[1] * c1 + A[2] * s1
+        r2 = (B[0] - F[0]) * one + B[1] * c1 + B[2] * s1
+        return ((F[2] * r1 - E[2] * r2) / det, (E[1] * r2 - F[1] * r1) / det)
+
+    den = 1 + t**2
+    c3, s3 = third(1 - t**2, 2 * t, den)  # times 1 + t^2: polynomials in t
+    quartic = Poly((c3**2 + s3**2 - den**2).expand(), t, domain="QQ")
+    if quartic.is_zero:
+        raise NotImplementedError(
+            "subproblem5: the quartic vanishes identically (infinitely many solutions): this "
+            "degenerate case is not handled")
+    starts: list[tuple[Expr, Expr, Expr]] = []
+    for root in dict.fromkeys(real_roots(quartic)):
+        c1, s1 = (1 - root**2) / (1 + root**2), 2 * root / (1 + root**2)
+        starts.append((2 * atan(root) / w1, c1, s1))
+    cpi, spi = third(S.NegativeOne, S.Zero)
+    if cpi**2 + spi**2 == 1:  # w1 theta1 = pi: the root at infinity
+        starts.append((pi / w1, S.NegativeOne, S.Zero))
+    branches = []
+    for theta1, c1, s1 in starts:
+        c3, s3 = third(c1, s1)
+        theta3 = atan2(s3, c3) / w3
+        x = q0 + _turned(k1, w1, q1, c1, s1)
+        y = q2 + _turned(k3, w3, q3, c3, s3)
+        X, Y = k2.cross(x), k2.cross(y)
+        if all(v == 0 for v in X):  # x on axis 2 (then y too): theta2 free
+            theta2: Expr = Dummy("theta2", real=True)
+        else:
+            theta2 = atan2(k2.dot(Y.cross(X)), w2 * Y.dot(X)) / w2
+        branches.append(Branch(S.true, (theta1, theta2, theta3)))
+    return tuple(branches)
+
+
+def _turned(k: ImmutableMatrix, w: Expr, p: ImmutableMatrix, c: Expr, s: Expr) -> ImmutableMatrix:
+    """``R(k, theta) p`` with ``(cos, sin)`` of ``|k| theta`` given (Rodrigues)."""
+    ww = w**2
+    along = k * (k.dot(p) / ww)
+    return along + (p - along) * c + k.cross(p) * (s / w)

@@ -13,7 +13,8 @@ univariate polynomial of degree 16 (Nanua, Waldron & Murthy 1990: at most 16 mod
 coordinate a polynomial in the root (exact, in ``Q(r)``); the rotation maps the platform
 triangle onto ``B_1 B_2 B_3``.  A basis not in shape position (a double mode, a mode not
 separated by the last unknown, after trying the three ``y_j`` as the last) is refused, not
-guessed.
+guessed.  SymPy's ``groebner`` cannot be stopped midway: it runs in a worker process ended
+when the budget's CPU time runs out (:func:`screwsym.algebra.budget.run_bounded`).
 """
 
 from __future__ import annotations
@@ -21,9 +22,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from sympy import Dummy, ImmutableMatrix, Matrix, Poly, Rational, Symbol, factor_list, groebner
+from sympy import Dummy, ImmutableMatrix, Matrix, Poly, Symbol, factor_list, groebner, symbols
 
-from ..algebra.budget import charge
+from ..algebra.budget import charge, run_bounded
 from ._root_field import RealRoot, real_roots_of
 
 __all__ = ["SpatialMode", "paired_modes", "paired_legs"]
@@ -119,19 +120,19 @@ def _shape(basis: list, gens: tuple) -> tuple[Poly, dict] | None:
     return Poly(uni[0].as_expr(), last, domain="QQ"), values
 
 
-def _price(eqs: list) -> int:
-    """The work of the Groebner basis, priced in advance from the size of the coefficients
-    (units of about a microsecond, :mod:`screwsym.algebra.budget`): 2 s a 16 bits of the
-    largest coefficient (measured: 2 s for small integer data, 26 s for a 3-3 given in
-    decimals).  A rough price: SymPy's ``groebner`` cannot be stopped midway, so the
-    budget's bound on the CPU time is checked when it returns (a 6-3 whose base points are
-    not coplanar takes about 70 s with small integers)."""
-    bits = max(
-        max(abs(Rational(c).p).bit_length(), Rational(c).q.bit_length())
-        for e in eqs
-        for c in e.coeffs()
-    )
-    return 2_000_000 * max(1, bits // 16)
+def _lex_basis(eqs: list, n: int) -> tuple[str, list | None]:
+    """The reduced lex Groebner basis of ``eqs`` (coefficient dicts of polynomials in ``n``
+    unknowns, the last the lowest): SymPy's ``groebner`` in grevlex, then ``fglm`` to lex.
+    ``("one", None)`` for no solution, ``("infinite", None)`` for a basis not
+    zero-dimensional, else ``("lex", dicts)``.  Dicts in and out: it runs in a worker
+    process (:func:`screwsym.algebra.budget.run_bounded`)."""
+    zs = symbols(f"z0:{n}")
+    G = groebner([Poly.from_dict(e, *zs, domain="QQ").as_expr() for e in eqs], *zs, order="grevlex")
+    if list(G.exprs) == [1]:
+        return "one", None
+    if not G.is_zero_dimensional:
+        return "infinite", None
+    return "lex", [Poly(e, *zs, domain="QQ").as_dict() for e in G.fglm("lex").exprs]
 
 
 def paired_modes(base: tuple, platform: tuple, l2: tuple, pairs: list) -> tuple[Poly, list]:
@@ -152,20 +153,23 @@ def paired_modes(base: tuple, platform: tuple, l2: tuple, pairs: list) -> tuple[
         # less the two circles: bilinear in (x_j, y_j, 1) and (x_k, y_k, 1) (u_j . v_j = 0),
         # the same ideal, and its Groebner basis is much cheaper
         eqs.append(side - eqs[j] - eqs[k])
-    charge(_price(eqs))
     for last in (2, 1, 0):
         others = [g for j, g in enumerate(ys) if j != last]
         gens = (*xs, *others, ys[last])
-        G = groebner([e.as_expr() for e in eqs], *gens, order="grevlex")
+        # SymPy's groebner cannot be stopped midway: a worker process, ended when the
+        # budget's CPU time runs out (a 6-3 whose base points are not coplanar takes about
+        # 70 s, 2 s with a planar base), its CPU time charged when it returns
+        kind, lex = run_bounded(_lex_basis, [Poly(e.as_expr(), *gens, domain="QQ").as_dict()
+                                             for e in eqs], len(gens))
         charge(1000)
-        if list(G.exprs) == [1]:
+        if kind == "one":
             return Poly(1, Symbol(f"y{last + 1}"), domain="ZZ"), []
-        if not G.is_zero_dimensional:
+        if kind == "infinite" or lex is None:
             raise NotImplementedError(
                 "direct_kinematics: infinitely many (complex) solutions of the closure equations; "
                 "whether they hold a real family is not decided here"
             )
-        shape = _shape(list(G.fglm("lex").exprs), gens)
+        shape = _shape([Poly.from_dict(e, *gens, domain="QQ").as_expr() for e in lex], gens)
         charge(1000)
         if shape is not None:
             break

@@ -202,3 +202,30 @@ def test_a_tiny_budget_still_allows_a_few_milliseconds_of_cpu():
         while time.process_time() - start < 2 * MIN_CPU:
             pass
         charge(1)
+
+
+def _spin(n: int) -> int:
+    """Work without a charge, as SymPy's groebner does: a loop of ``n`` steps."""
+    total = 0
+    for k in range(n):
+        total += k * k % 7
+    return total
+
+
+def _fail() -> None:
+    raise ZeroDivisionError("in the worker")
+
+
+def test_run_bounded_stops_a_worker_past_the_budget_and_charges_its_time():
+    from screwsym.algebra.budget import run_bounded
+
+    # within the budget: the worker's answer, and its CPU time charged (t / SLACK units)
+    with case_budget(2_000_000, "demo"):
+        assert run_bounded(_spin, 1000) == _spin(1000)
+    with pytest.raises(ValueError, match="demo: the case split needs more work than budget=40000"):
+        with case_budget(40_000, "demo"):  # 0.2 s of CPU: an endless loop is ended there
+            run_bounded(_spin, 10**12)
+    with pytest.raises(ZeroDivisionError, match="in the worker"):  # raised in the caller
+        with case_budget(2_000_000, "demo"):
+            run_bounded(_fail)
+    assert run_bounded(_spin, 10) == _spin(10)  # outside a budget: called here

@@ -226,3 +226,58 @@ def test_the_panda_with_its_seventh_joint_a_parameter():
     assert found and all(reproduces(arm, v, Tn) for v in found)
     qf = np.array([float(x) for x in q])
     assert (np.abs(wrapped(np.array(found) - qf, list(range(7)))).max(axis=1) < 1e-9).any()
+
+
+#: the URDF robots, read by screwsym and by pinocchio from the same files (example-robot-data,
+#: tests/data/urdf): (file, base, tip, free joints)
+URDF_ROBOTS = {
+    "ur5": ("ur5_robot.urdf", "base_link", "tool0", ()),
+    "panda": ("panda.urdf", "panda_link0", "panda_link8", (6,)),
+}
+
+
+def pinocchio_fk(pin, path, base: str, tip: str):
+    """pinocchio's forward kinematics of the file: ``q -> T`` (tip in base), an independent FK."""
+    from screwsym.motion.urdf import path_joints
+
+    model = pin.buildModelFromUrdf(str(path))
+    data = model.createData()
+    slots = [model.joints[model.getJointId(j)].idx_q for j in path_joints(path, base, tip)]
+    frame, base_frame = model.getFrameId(tip), model.getFrameId(base)
+
+    def fk(q) -> np.ndarray:
+        x = pin.neutral(model)
+        x[slots] = q
+        pin.framesForwardKinematics(model, data, x)
+        return data.oMf[base_frame].actInv(data.oMf[frame]).homogeneous
+
+    return fk
+
+
+@pytest.mark.filterwarnings("ignore::UserWarning")
+@pytest.mark.parametrize("name", sorted(URDF_ROBOTS))
+def test_every_branch_reproduces_the_pose_under_pinocchio(name):
+    """The URDF robots against pinocchio (Carpentier et al. 2019), test-only: pinocchio's FK of
+    random joints, screwsym's IK of that pose (the chain read from the same URDF, its rpy
+    decimals of pi/2 read as pi/2), every branch back through pinocchio's FK."""
+    pin = pytest.importorskip("pinocchio")
+    pytest.importorskip("defusedxml")
+    from _robots import DATA
+
+    file, base, tip, free = URDF_ROBOTS[name]
+    arm = panda() if name == "panda" else Chain.from_urdf(DATA / file, base, tip, angles="pi/12")
+    fk_pin = pinocchio_fk(pin, DATA / file, base, tip)
+    n = arm.n_joints
+    f = inverse_kinematics_function(arm, free, backend="numpy")
+    q = np.random.default_rng(2019).uniform(-np.pi, np.pi, (20, n))
+    T = np.array([fk_pin(x) for x in q])
+    branches = f(T, q[:, list(free)]) if free else f(T)
+    assert branches.shape == (len(q), 8, n)
+    # the file's 1.57079632679 is 5e-12 from pi/2: pinocchio and screwsym differ by that much
+    close = lambda b, t: np.abs(fk_pin(b) - t).max() < 1e-9  # noqa: E731
+    for k in range(len(q)):
+        live = [b for b in branches[k] if not np.isnan(b).any()]
+        assert live and all(close(b, T[k]) for b in live)
+        assert (np.abs(wrapped(np.array(live) - q[k], list(range(n)))).max(axis=1) < 1e-8).any()
+        wrong = np.array(live) + 1e-6 * (np.arange(n) == 1)  # the check rejects a wrong branch
+        assert not any(close(b, T[k]) for b in wrong)

@@ -7,7 +7,9 @@ to Robotic Manipulation*, CRC Press 1994, Section 3.2.2 (Subproblems 1-3, (3.18)
 Each target point is built by screwsym's own exponential (``exp6``); each answer is
 then checked independently: Rodrigues' formula evaluated in mpmath at 60 digits
 (not screwsym's code), the two sides agreeing to 40 digits.  Each checker is shown
-to reject a perturbed angle.
+to reject a perturbed angle.  Subproblem 5 (three rotations, a quartic: A. J. Elias &
+J. T. Wen, "IK-Geo", *Mechanism and Machine Theory* 209, 2025) is checked in floats by an
+independent Rodrigues formula.
 """
 
 from __future__ import annotations
@@ -15,11 +17,14 @@ from __future__ import annotations
 import random
 
 import mpmath
+import numpy as np
 import pytest
 from sympy import (
     Dummy,
     Float,
     ImmutableMatrix,
+    Integer,
+    Matrix,
     Rational,
     S,
     atan2,
@@ -30,7 +35,7 @@ from sympy import (
 )
 
 from screwsym import Twist, Wrench, exp6
-from screwsym.motion import Branch, subproblem1, subproblem2, subproblem3
+from screwsym.motion import Branch, subproblem1, subproblem2, subproblem3, subproblem5
 
 DPS = 60
 CLOSE = mpmath.mpf(10) ** -40
@@ -473,3 +478,89 @@ def test_subproblem3_finds_every_solution():
         for b in branches:
             assert at_distance(twist, b.values[0], p, q, delta)
     assert counts == {0, 2}  # both cases met by these draws
+
+
+# --------------------------------------------------------------------- Subproblem 5 (IK-Geo)
+
+#: rational axes of rational length (Pythagorean quadruples), the angles' half-tangents
+SP5_AXES = [(1, 0, 0), (0, 1, 0), (0, 0, 1), (Rational(3, 5), Rational(4, 5), 0),
+            (0, Rational(5, 13), Rational(12, 13)), (Rational(2, 3), Rational(1, 3), Rational(2, 3)),
+            (2, 1, 2)]
+
+
+def _rodrigues(k, theta):
+    """The rotation of ``exp6`` about ``k`` through the origin (turning |k| theta), floats:
+    independent of screwsym."""
+    k = np.array([float(x) for x in k])
+    w = np.linalg.norm(k)
+    u = k / w
+    K = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
+    return np.eye(3) + np.sin(w * theta) * K + (1 - np.cos(w * theta)) * (K @ K)
+
+
+def _rational_turn(k, t, p):
+    """``R(k, theta) p`` exact, where ``tan(|k| theta / 2) = t`` (``t = None``: a half turn)."""
+    k, p = Matrix(k), Matrix(p)
+    w = sqrt(k.dot(k))
+    c, s = (Integer(-1), Integer(0)) if t is None else ((1 - t**2) / (1 + t**2), 2 * t / (1 + t**2))
+    along = k * k.dot(p) / w**2
+    return along + (p - along) * c + k.cross(p) * s / w
+
+
+def _sp5_residual(axes, points, values):
+    k1, k2, k3 = axes
+    p0, p1, p2, p3 = (np.array([float(x) for x in p]) for p in points)
+    t1, t2, t3 = (float(v.evalf(30)) for v in values)
+    return np.abs(p0 + _rodrigues(k1, t1) @ p1 - _rodrigues(k2, t2) @ (p2 + _rodrigues(k3, t3) @ p3)).max()
+
+
+def _sp5_case(rng, half_turn=False):
+    """Axes, points and the angles that solve them (p0 made from the others and the angles)."""
+    axes = [SP5_AXES[i] for i in rng.choice(len(SP5_AXES), 3, replace=False)]
+    p1, p2, p3 = ([Rational(int(x), 4) for x in rng.integers(-8, 9, 3)] for _ in range(3))
+    ts = [None if half_turn else Rational(int(rng.integers(-9, 10)), 5),
+          Rational(int(rng.integers(-9, 10)), 5), Rational(int(rng.integers(-9, 10)), 5)]
+    y = Matrix(p2) + _rational_turn(axes[2], ts[2], p3)
+    p0 = _rational_turn(axes[1], ts[1], y) - _rational_turn(axes[0], ts[0], p1)
+    angles = [np.pi if t is None else 2 * np.arctan(float(t)) for t in ts]
+    angles = [a / float(sqrt(Matrix(k).dot(Matrix(k)))) for a, k in zip(angles, axes, strict=True)]
+    return axes, [list(p0), p1, p2, p3], angles
+
+
+@pytest.mark.parametrize("half_turn", [False, True])
+def test_subproblem5_every_branch_solves_it_and_the_angles_are_among_them(half_turn):
+    """Elias & Wen 2025, Subproblem 5 (IK-Geo): every branch checked in floats by an
+    independent Rodrigues formula, the angles that made the data among them, a wrong one
+    rejected; the half turn is the quartic's root at infinity."""
+    rng = np.random.default_rng(5 + half_turn)
+    done = 0
+    while done < (2 if half_turn else 4):
+        axes, points, angles = _sp5_case(rng, half_turn)
+        try:
+            branches = subproblem5(*axes, *points)
+        except NotImplementedError:  # a degenerate draw (axes 2 and 3 parallel, ...)
+            continue
+        done += 1
+        assert 1 <= len(branches) <= 4
+        for b in branches:
+            assert b.condition is S.true
+            assert _sp5_residual(axes, points, b.values) < 1e-12
+        got = np.array([[float(v.evalf(30)) for v in b.values] for b in branches])
+        turn = [2 * np.pi / float(sqrt(Matrix(k).dot(Matrix(k)))) for k in axes]
+        gap = np.abs(np.mod(got - angles + np.array(turn) / 2, turn) - np.array(turn) / 2)
+        assert (gap.max(axis=1) < 1e-9).any()
+        wrong = list(branches[0].values)
+        wrong[2] += Rational(1, 10**4)
+        assert _sp5_residual(axes, points, wrong) > 1e-6
+
+
+def test_subproblem5_refuses_what_it_does_not_handle():
+    x, y, z = [1, 0, 0], [0, 1, 0], [0, 0, 1]
+    with pytest.raises(NotImplementedError, match="do not fix theta3"):  # |y| constant
+        subproblem5(x, y, z, [0, 0, 0], [0, 1, 0], [0, 0, 0], [1, 0, 0])
+    with pytest.raises(ValueError, match="axis1: expected an axis of rational length"):
+        subproblem5([1, 1, 0], y, z, [0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 0, 0])
+    with pytest.raises(ValueError, match="p1: expected rational entries"):
+        subproblem5(x, y, z, [0, 0, 0], [0, 0.5, 0], [1, 0, 0], [1, 0, 0])
+    with pytest.raises(ValueError, match="axis2: expected rational entries"):
+        subproblem5(x, [0, sqrt(2), 0], z, [0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 0, 0])
