@@ -62,6 +62,15 @@ whose closure does not extend to second order along the rates given (a shaky
 one: no acceleration closes the loops).  With symbols the rows outside ``R`` are
 taken to close to second order as they do on a genuine configuration.
 
+Floats (the float policy, ``notebooks/float-policy.md``).  The joints are exact (a
+mechanism refuses floats in its geometry); floats in the inertias, the actuated rates
+and accelerations and the gravity (``-9.81``) are read as the exact rationals of their
+binary values (``Rational(0.1)``, not a decimal guess), the computation is exact, and
+the result is rounded once to the floats' precision and a guard digit, as
+:func:`~screwsym.core.line.common_normal` rounds.  So the passive joints' rates follow
+the actuated ones exactly and close the loops to second order (rates rounded joint by
+joint would not), and no elimination pivots on a rounding residue.
+
 References
 ==========
 
@@ -102,6 +111,7 @@ from sympy import (
     true,
     zeros,
 )
+from sympy.core.evalf import prec_to_dps
 from sympy.polys.matrices import DomainMatrix
 
 from ..algebra.budget import BUDGET, bounded, charge
@@ -342,8 +352,39 @@ def _tidy(e: Any) -> Any:
 
 
 def _rates(value: Any, name: str, k: int) -> Matrix:
+    """The ``k`` actuated rates (or accelerations) given, checked; floats kept (see :func:`_exact`)."""
     items = check_sequence(value, name, "actuated rates", k)
     return Matrix([check_scalar(x, f"{name}[{i}]") for i, x in enumerate(items)])
+
+
+# ------------------------------------------------------------------ floats (the float policy)
+def _exact(value: Any) -> Any:
+    """``value`` with every float replaced by the exact rational of its binary value
+    (``Rational(0.1) == 3602879701896397/36028797018963968``; not ``nsimplify``'s guess)."""
+    floats = value.atoms(Float)
+    return value.xreplace({f: Rational(f) for f in floats}) if floats else value
+
+
+def _digits(*values: Any) -> int | None:
+    """The digits a result from floats among ``values`` is rounded to: those of the least
+    precise float and one guard digit (16 for double precision, as ``common_normal``
+    rounds), or ``None`` when no float is involved (then the result stays exact)."""
+    precs = [f._prec for v in values for f in v.atoms(Float)]
+    return max(15, prec_to_dps(min(precs)) + 1) if precs else None
+
+
+def _rounded(value: Any, digits: int | None) -> Any:
+    """``value`` (a matrix, or a tuple of wrenches) rounded once to ``digits``, or as it is."""
+    if digits is None:
+        return value
+    if isinstance(value, tuple):
+        return tuple(_rounded(v, digits) for v in value)
+    return value.evalf(n=digits)
+
+
+def _inertias(mech: Mechanism) -> list:
+    """The mechanism's inertias as given (for :func:`_digits`)."""
+    return [p.args[1] for p in mech.inertia_pairs]
 
 
 def actuation_condition(mech: Mechanism, actuated: Any) -> Any:
@@ -354,7 +395,7 @@ def actuation_condition(mech: Mechanism, actuated: Any) -> Any:
 def joint_rates(mech: Mechanism, actuated: Any, rates: Any) -> ImmutableMatrix:
     act = _actuation(mech, _check_actuated(mech, actuated))
     qa = _rates(rates, "rates", len(act.actuated))
-    return ImmutableMatrix((act.G * qa).applyfunc(_tidy))
+    return _rounded(ImmutableMatrix((act.G * _exact(qa)).applyfunc(_tidy)), _digits(qa))
 
 
 def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) -> Matrix:
@@ -428,7 +469,8 @@ def joint_accelerations(mech: Mechanism, actuated: Any, rates: Any,
     act = _actuation(mech, _check_actuated(mech, actuated))
     k = len(act.actuated)
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
-    return ImmutableMatrix(_accelerations(mech, act, act.G * qa, qa2))
+    qdd = _accelerations(mech, act, act.G * _exact(qa), _exact(qa2))
+    return _rounded(ImmutableMatrix(qdd), _digits(qa, qa2))
 
 
 def _link(mech: Mechanism, link: Any) -> int:
@@ -447,7 +489,8 @@ def _twist(V: Matrix) -> Twist:
 def link_twist(mech: Mechanism, link: Any, actuated: Any, rates: Any) -> Twist:
     act = _actuation(mech, _check_actuated(mech, actuated))
     qa = _rates(rates, "rates", len(act.actuated))
-    return _twist(path_matrix(act.net, _link(mech, link)) * act.G * qa)
+    return _rounded(_twist(path_matrix(act.net, _link(mech, link)) * act.G * _exact(qa)),
+                    _digits(qa))
 
 
 def _link_rate(act: _Actuation, n: int, qd: Matrix, qdd: Matrix) -> Matrix:
@@ -460,25 +503,33 @@ def link_acceleration(mech: Mechanism, link: Any, actuated: Any, rates: Any,
     act = _actuation(mech, _check_actuated(mech, actuated))
     k = len(act.actuated)
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
-    qd = Matrix(act.G * qa)
+    qd = Matrix(act.G * _exact(qa))
     n = _link(mech, link)
-    return _twist(_link_rate(act, n, qd, _accelerations(mech, act, qd, qa2)))
+    return _rounded(_twist(_link_rate(act, n, qd, _accelerations(mech, act, qd, _exact(qa2)))),
+                    _digits(qa, qa2))
 
 
-def _bodies(mech: Mechanism) -> list[tuple[int, SpatialInertia]]:
+def _bodies(mech: Mechanism) -> list[tuple[int, Matrix, SpatialInertia]]:
+    """Per body: its link number, its 6 x 6 inertia matrix and a point mass at its centre of
+    mass (for its weight), floats taken as their exact binary values (:func:`_exact`)."""
     g = spanning_tree(mech)
-    return [(int(g.index[p.args[0]]), p.args[1]) for p in mech.inertia_pairs]
+    out = []
+    for p in mech.inertia_pairs:
+        I = p.args[1]
+        point = SpatialInertia.point_mass(_exact(I.mass), _exact(I.com))  # the weight's source
+        out.append((int(g.index[p.args[0]]), Matrix(_exact(I.matrix)), point))
+    return out
 
 
-def _power_rows(mech: Mechanism, act: _Actuation) -> list[tuple[Matrix, Matrix, SpatialInertia]]:
-    """Per body: ``P_l``, ``A_l^T Delta`` (k x 6) and its inertia."""
+def _power_rows(mech: Mechanism, act: _Actuation) -> list[tuple[Matrix, Matrix, Matrix]]:
+    """Per body: ``P_l``, ``A_l^T Delta`` (k x 6) and its inertia matrix (exact)."""
     net = act.net
     out = []
-    for n, I in _bodies(mech):
+    for n, M, _ in _bodies(mech):
         P = path_matrix(net, n)
         Al = P * act.G
         swapped = Matrix.hstack(Al[3:, :].T, Al[:3, :].T)  # A_l^T Delta
-        out.append((P, swapped, I))
+        out.append((P, swapped, M))
     return out
 
 
@@ -494,20 +545,28 @@ def mass_matrix(mech: Mechanism, actuated: Any, conds: str = "none") -> Immutabl
     act = _actuation(mech, _check_actuated(mech, actuated))
     k = len(act.actuated)
     H = zeros(k, k)
-    for P, swapped, I in _power_rows(mech, act):
+    for P, swapped, M in _power_rows(mech, act):
         charge(STEP_UNITS * k * k)
-        H += swapped * Matrix(I.matrix) * (P * act.G)
-    return _conds(ImmutableMatrix(H.applyfunc(_tidy)), act, conds)
+        H += swapped * M * (P * act.G)
+    H = _rounded(ImmutableMatrix(H.applyfunc(_tidy)), _digits(*_inertias(mech)))
+    return _conds(H, act, conds)
 
 
 def _motion(mech: Mechanism, act: _Actuation, rates: Any, accelerations: Any,
-            gravity: Any) -> tuple[Matrix, Matrix, Matrix]:
-    """All joints' rates and accelerations for the actuated ones, and the gravity vector."""
+            gravity: Any) -> tuple[Matrix, Matrix, Matrix, int | None]:
+    """All joints' rates and accelerations for the actuated ones, the gravity vector, and
+    the digits the results are rounded to (:func:`_digits`: ``None`` for exact input).
+
+    Floats in the actuated rates, accelerations, gravity and inertias are taken as their
+    exact binary values (:func:`_exact`) and the other joints' rates and accelerations
+    follow exactly, so they close the loops exactly (rates rounded joint by joint would
+    not, and the second-order check would refuse them)."""
     k = len(act.actuated)
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
     g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
-    qd = Matrix(act.G * qa)
-    return qd, _accelerations(mech, act, qd, qa2), g
+    digits = _digits(qa, qa2, g, *_inertias(mech))
+    qd = Matrix(act.G * _exact(qa))
+    return qd, _accelerations(mech, act, qd, _exact(qa2)), _exact(g), digits
 
 
 def _balances(mech: Mechanism, act: _Actuation, qd: Matrix, qdd: Matrix,
@@ -515,13 +574,12 @@ def _balances(mech: Mechanism, act: _Actuation, qd: Matrix, qdd: Matrix,
     """Per body: its link number, ``A_l^T Delta`` and the wrench its motion needs,
     ``M_l dV_l/dt + [V_l, M_l V_l] - W_l``."""
     out = []
-    for (P, swapped, I), (n, _) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
+    for (P, swapped, M), (n, _, point) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
         charge(STEP_UNITS * len(act.actuated))
         V = P * qd
         Vdot = _link_rate(act, n, qd, qdd)
-        momentum = Matrix(I.matrix) * V
-        weight = I.gravity_wrench(g).matrix
-        out.append((n, swapped, Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight))
+        weight = point.gravity_wrench(g).matrix
+        out.append((n, swapped, M * Vdot + Matrix(bracket(V, M * V)) - weight))
     return out
 
 
@@ -537,9 +595,9 @@ def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: 
                      gravity: Any = None, conds: str = "none") -> ImmutableMatrix:
     conds = check_choice(conds, "conds", CONDS)
     act = _actuation(mech, _check_actuated(mech, actuated))
-    qd, qdd, g = _motion(mech, act, rates, accelerations, gravity)
+    qd, qdd, g, digits = _motion(mech, act, rates, accelerations, gravity)
     tau = _forces(act, _balances(mech, act, qd, qdd, g))
-    return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
+    return _conds(_rounded(ImmutableMatrix(tau.applyfunc(_tidy)), digits), act, conds)
 
 
 def _reaction_system(act: _Actuation, tau: Matrix, balances: list) -> tuple[Matrix, Matrix]:
@@ -575,7 +633,7 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     from ..core.wrench import Wrench
 
     act = _actuation(mech, _check_actuated(mech, actuated))
-    qd, qdd, g = _motion(mech, act, rates, accelerations, gravity)
+    qd, qdd, g, digits = _motion(mech, act, rates, accelerations, gravity)
     balances = _balances(mech, act, qd, qdd, g)
     tau = _forces(act, balances).applyfunc(_tidy)
     K, r = _reaction_system(act, tau, balances)
@@ -591,8 +649,8 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     for i, p in enumerate(pivots):
         w[p, 0] = R[i, K.cols]  # the free unknowns (a self-stress) are zero
     w = w.applyfunc(_tidy)
-    return tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
-                 for e in range(len(act.net.graph.edges)))
+    return _rounded(tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
+                          for e in range(len(act.net.graph.edges))), digits)
 
 
 class LoopDynamicsMixin:

@@ -20,6 +20,7 @@ import pytest
 from _linkages import DELTA_RADIAL, bennett, delta_joints, shaky_4r
 from mpmath import mp, mpf
 from sympy import (
+    Float,
     ImmutableMatrix,
     Matrix,
     Ne,
@@ -283,6 +284,85 @@ def test_decimal_rates_and_inertias_give_the_exact_answer_rounded():
     floats = fourbar({"coupler": 2.0}).inverse_dynamics([0], [1.5], [-0.25], [0, -10.0, 0])
     assert abs(float(floats[0]) - float(exact[0])) < 1e-12 * abs(float(exact[0]))
     assert abs(float(floats[0]) - float(exact[0]) * (1 + 1e-9)) > 1e-12 * abs(float(exact[0]))
+
+
+def _float_fourbar():
+    """The four-bar of :func:`fourbar` with every inertia in floats (masses, centres of mass,
+    tensors: ``1/3``, ``1/7``, ... rounded), and its exact twin: the same floats read as
+    their exact binary values (``Rational(float)``), which is what the float policy
+    computes with."""
+    def bodies(convert):
+        return {name: SpatialInertia(convert(m), [convert(c[0]), convert(c[1]), 0],
+                                     I.applyfunc(convert))
+                for name, m, c, I in FOURBAR_BODIES}
+
+    pt = [list(p) + [0] for p in (O, A0, B0, D)]
+    joints = [("ground", "crank", R(pt[0], Z)), ("crank", "coupler", R(pt[1], Z)),
+              ("coupler", "rocker", R(pt[2], Z)), ("rocker", "ground", R(pt[3], Z))]
+    return (Mechanism(joints, base="ground", inertias=bodies(float)),
+            Mechanism(joints, base="ground", inertias=bodies(lambda x: Rational(float(x)))))
+
+
+def close(ours, exact, rtol=1e-15):
+    """Each float entry within ``rtol`` of the exact value, relative to the largest."""
+    ours, exact = [complex(x) for x in ours], [complex(x) for x in exact]
+    scale = max(abs(x) for x in exact)
+    return all(abs(a - b) <= rtol * scale for a, b in zip(ours, exact, strict=True))
+
+
+def test_float_inertias_rates_and_gravity_give_the_exact_answer_rounded_once():
+    """The float policy (notebooks/float-policy.md): floats in the inertias, rates,
+    accelerations and gravity (``-9.81``) are read as their exact binary values and the
+    result is rounded once, so it agrees with the exact computation on those values to
+    float precision: mass matrix, inverse dynamics and every joint reaction (the float
+    elimination of the reactions used to find a spurious pivot, "inconsistent input")."""
+    floats, exact = _float_fourbar()
+    qd, qdd, g = [1.5], [-0.3], [0, -9.81, 0]
+    qx, qddx, gx = [Rational(1.5)], [Rational(-0.3)], [0, Rational(-9.81), 0]
+    H, Hx = floats.mass_matrix([0]), exact.mass_matrix([0])
+    assert H.atoms(Rational) <= {0} and close(H, Hx)
+    tau, taux = floats.inverse_dynamics([0], qd, qdd, g), exact.inverse_dynamics([0], qx, qddx, gx)
+    assert close(tau, taux) and not close(tau * (1 + 1e-12), taux)
+    w = floats.joint_reactions([0], qd, qdd, g)
+    wx = exact.joint_reactions([0], qx, qddx, gx)
+    assert all(close(a.matrix, b.matrix, 1e-14) for a, b in zip(w, wx, strict=True))
+    assert close(floats.joint_rates([0], qd), exact.joint_rates([0], qx))
+    assert close(floats.joint_accelerations([0], qd, qdd), exact.joint_accelerations([0], qx, qddx))
+    # the Lagrangian agrees too (the inertias differ from the rationals by the rounding only)
+    assert abs(float(tau[0]) - float(fourbar_truth(qx[0], qddx[0], gx)[0])) < 1e-12 * abs(float(tau[0]))
+    # exact input stays exact
+    assert exact.inverse_dynamics([0], qx, qddx, gx).atoms(Float) == set()
+
+
+def test_delta_with_floats_everywhere_matches_the_exact_delta():
+    """The Delta link by link with float masses and inertias, decimal rates and
+    accelerations that no rational joint rates match exactly in floats (``0.1``, ``-0.2``,
+    ...) and ``g = -9.81``: no refusal (the passive rates follow the actuated ones
+    exactly, so the closure holds to second order), and the torques, mass matrix and
+    reactions agree with the exact Delta on the floats' binary values."""
+    def mech(convert):
+        inertias = {f"arm{i + 1}": SpatialInertia(convert(Rational(21, 10)),
+                                                  [convert(Rational(5, 2) * e[0]),
+                                                   convert(Rational(5, 2) * e[1]), convert(Rational(-1, 2))],
+                                                  diag(1, 1, 1).applyfunc(lambda x: convert(x / 3)))
+                    for i, e in enumerate(DELTA_RADIAL)}
+        inertias["platform"] = SpatialInertia(convert(Rational(33, 10)), [0, 0, -3],
+                                              diag(convert(Rational(3, 10)), convert(Rational(3, 10)),
+                                                   convert(Rational(1, 2))))
+        return Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
+                         base="base", inertias=inertias)
+
+    floats, exact = mech(float), mech(lambda x: Rational(float(x)))
+    qd, qdd, g = [0.1, -0.2, 0.3], [0.7, 0.0, -1.1], [0, 0, -9.81]
+    ex = [[Rational(x) for x in v] for v in (qd, qdd, g)]
+    act = [0, 7, 14]
+    tau, taux = floats.inverse_dynamics(act, qd, qdd, g), exact.inverse_dynamics(act, *ex)
+    assert close(tau, taux) and not close(tau.applyfunc(lambda x: x * (1 + 1e-12)), taux)
+    assert close(floats.mass_matrix(act), exact.mass_matrix(act))
+    w, wx = floats.joint_reactions(act, qd, qdd, g), exact.joint_reactions(act, *ex)
+    scale = max(abs(float(x)) for r in wx for x in r.matrix)
+    assert all(abs(float(a - b)) <= 1e-14 * scale
+               for r, rx in zip(w, wx, strict=True) for a, b in zip(r.matrix, rx.matrix, strict=True))
 
 
 def test_fourbar_mass_matrix_and_joint_rates():
