@@ -91,7 +91,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any, NamedTuple, cast
 
 from sympy import (
     Add,
@@ -130,7 +130,7 @@ from .topology import bare_network, check_link, link_label, path_matrix, spannin
 if TYPE_CHECKING:
     from .linkage import Mechanism
 
-__all__: list[str] = []  # its names serve Mechanism's methods; users reach them there
+__all__ = ["PlatformDynamics"]  # the rest serves Mechanism's methods; users reach it there
 
 #: the default gravitational acceleration, ``(0, 0, -g)``: the same as
 #: :data:`screwsym.motion.dynamics.GRAVITY` (systems does not import motion)
@@ -543,13 +543,18 @@ def _conds(value: ImmutableMatrix, act: _Actuation, conds: str) -> ImmutableMatr
 def mass_matrix(mech: Mechanism, actuated: Any, conds: str = "none") -> ImmutableMatrix:
     conds = check_choice(conds, "conds", CONDS)
     act = _actuation(mech, _check_actuated(mech, actuated))
+    H = _rounded(ImmutableMatrix(_mass(mech, act)), _digits(*_inertias(mech)))
+    return _conds(H, act, conds)
+
+
+def _mass(mech: Mechanism, act: _Actuation) -> Matrix:
+    """``H = sum_l A_l^T Delta M_l A_l``, exact (floats read exactly), tidied."""
     k = len(act.actuated)
     H = zeros(k, k)
     for P, swapped, M in _power_rows(mech, act):
         charge(STEP_UNITS * k * k)
         H += swapped * M * (P * act.G)
-    H = _rounded(ImmutableMatrix(H.applyfunc(_tidy)), _digits(*_inertias(mech)))
-    return _conds(H, act, conds)
+    return H.applyfunc(_tidy)
 
 
 def _motion(mech: Mechanism, act: _Actuation, rates: Any, accelerations: Any,
@@ -651,6 +656,118 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     w = w.applyfunc(_tidy)
     return _rounded(tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
                           for e in range(len(act.net.graph.edges))), digits)
+
+
+# ------------------------------------------------------------------ the platform's coordinates
+#: the names of a platform twist's components at the reference point: ``(omega; v_P)``
+COMPONENTS = ("wx", "wy", "wz", "vx", "vy", "vz")
+
+
+class PlatformDynamics(NamedTuple):
+    """The dynamics of a mechanism in its platform's coordinates
+    (:meth:`Mechanism.platform_dynamics <screwsym.systems.linkage.Mechanism.platform_dynamics>`)."""
+
+    #: the names of the ``k`` platform coordinates, from ``wx wy wz`` (the angular
+    #: velocity) and ``vx vy vz`` (the velocity of the platform's point at ``point``)
+    coordinates: tuple
+    #: ``J`` (k x k): the actuated rates per platform rate, ``qa' = J x'`` (Tsai's ``J``)
+    jacobian: ImmutableMatrix
+    #: ``Lambda = J^T H J`` (k x k): the kinetic energy is ``1/2 x'^T Lambda x'``
+    mass_matrix: ImmutableMatrix
+    #: ``F`` (k x 1): the generalised forces on the platform coordinates, ``J^T tau``
+    #: (``None`` without a state)
+    forces: ImmutableMatrix | None
+    #: ``tau = J^-T F`` (k x 1): the actuator forces (``None`` without a state)
+    actuator_forces: ImmutableMatrix | None
+
+
+def _skew(p: Matrix) -> Matrix:
+    return Matrix([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
+
+
+def _coordinates(value: Any, X: Matrix) -> tuple[int, ...]:
+    """The rows of ``X`` (6 x k, the platform twist at the point per actuated rate) named by
+    ``value``, or with ``None`` the first ``k`` independent ones in the order ``COMPONENTS``."""
+    k = X.cols
+    if value is None:
+        _charge_matrix(X, 3)
+        _, pivots = field_matrix(X.T).rref()
+        if len(pivots) < k:
+            raise ValueError(
+                f"platform: its twist has rank {len(pivots)} < {k} in the actuated rates, so "
+                "its motion does not determine the actuated joints' (name a link the "
+                "actuators all move)")
+        return tuple(pivots[:k])
+    names = check_sequence(value, "coordinates", "component names", k)
+    rows = []
+    for i, c in enumerate(names):
+        if c not in COMPONENTS:
+            raise ValueError(f"coordinates[{i}]: expected one of {', '.join(COMPONENTS)}, got {c!r}")
+        if COMPONENTS.index(c) in rows:
+            raise ValueError(f"coordinates: {c!r} given twice")
+        rows.append(COMPONENTS.index(c))
+    return tuple(rows)
+
+
+def platform_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                      gravity: Any, platform: Any, point: Any, coordinates: Any,
+                      conds: str) -> PlatformDynamics:
+    conds = check_choice(conds, "conds", CONDS)
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    n = _link(mech, platform)
+    c = _exact(check_vector([0, 0, 0] if point is None else point, "point"))
+    if (rates is None) != (accelerations is None):
+        raise ValueError("rates, accelerations: give both (a state) or neither (the mass "
+                         "matrix and the Jacobian alone)")
+    # the platform twist at the point per actuated rate: omega; v_P = v_O - c x omega
+    shift = Matrix.vstack(Matrix.hstack(Matrix.eye(3), zeros(3, 3)),
+                          Matrix.hstack(-_skew(c), Matrix.eye(3)))
+    X = (shift * path_matrix(act.net, n) * act.G).applyfunc(_tidy)
+    rows = _coordinates(coordinates, X)
+    B = X.extract(list(rows), list(range(k)))  # x' = B qa'
+    charge(STEP_UNITS * k**3)
+    det, condition = _determinant(B)
+    if det == 0 or not det.free_symbols and vanishes(det):
+        raise ValueError(
+            f"coordinates: the platform rates {', '.join(COMPONENTS[r] for r in rows)} do not "
+            "determine the actuated rates here (the actuators move with them held: a "
+            "singularity of the first kind, or coordinates that miss a freedom)")
+    J = _solve(B, Matrix.eye(k)).applyfunc(_tidy)
+    digits = _digits(*_inertias(mech))
+    Lam = (J.T * _mass(mech, act) * J).applyfunc(_tidy)
+    forces = tau = None
+    if rates is not None:
+        xd, xdd = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+        g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+        digits = _digits(xd, xdd, g, *_inertias(mech))
+        qa = J * _exact(xd)
+        qd = act.G * qa
+        # the platform's accelerations with the actuated ones zero: x'' = B qa'' + b
+        rest = _link_rate(act, n, qd, _accelerations(mech, act, qd, zeros(k, 1)))
+        V = path_matrix(act.net, n) * qd
+        w, v, wd, vd = V[:3, 0], V[3:, 0], rest[:3, 0], rest[3:, 0]
+        a = vd + wd.cross(c) + w.cross(v + w.cross(c))  # the point's acceleration
+        b = Matrix.vstack(wd, a).extract(list(rows), [0])
+        qa2 = (J * (_exact(xdd) - b)).applyfunc(_tidy)
+        qdd = _accelerations(mech, act, qd, qa2)
+        tau = _forces(act, _balances(mech, act, qd, qdd, _exact(g))).applyfunc(_tidy)
+        forces = (J.T * tau).applyfunc(_tidy)
+    if act.condition is not true or condition is not true:
+        condition = And(act.condition, condition)
+    else:
+        condition = true
+
+    def out(M: Any) -> Any:
+        if M is None:
+            return None
+        M = _rounded(ImmutableMatrix(M), digits)
+        if conds == "none" or condition is true:
+            return M
+        return ImmutableMatrix(piecewise([(M, condition)], M.applyfunc(lambda _: nan)))
+
+    return PlatformDynamics(tuple(COMPONENTS[r] for r in rows), out(J), out(Lam), out(forces),
+                            out(tau))
 
 
 class LoopDynamicsMixin:
@@ -867,6 +984,83 @@ class LoopDynamicsMixin:
         """
         with _bounded(budget, "inverse_dynamics"):
             return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)
+
+    def platform_dynamics(self, actuated: Any, rates: Any = None, accelerations: Any = None,
+                          gravity: Any = None, *, platform: Any = "platform", point: Any = None,
+                          coordinates: Any = None, conds: str = "none",
+                          budget: int = BUDGET) -> PlatformDynamics:
+        r"""The dynamics in the coordinates of the link ``platform`` (its pose rates): the
+        form of Tsai's virtual-work model and of Codourey's model of the Delta.
+
+        Explanation
+        ===========
+
+        The platform's coordinates are ``k`` components (k, the mobility) of its twist
+        written at the reference point ``point`` (default the origin): ``wx wy wz``, its
+        angular velocity, and ``vx vy vz``, the velocity of its point at ``point``; their
+        rates ``x''`` are the angular acceleration and that point's acceleration.  With
+        ``coordinates=None`` the first ``k`` components, in that order, that the platform's
+        motion leaves independent (``vx vy vz`` for a Delta, ``wz vx vy`` for a planar
+        platform); or name them, e.g. ``("vx", "vy", "wz")``.  For a translating platform
+        these are the rates of its position; with a rotation ``wx wy wz`` are angular
+        velocities (quasi-velocities), not rates of angles.
+
+        ``J`` is the actuated rates per platform rate, ``qa' = J x'`` (Tsai's ``J``, the
+        inverse of the platform's twist per actuated rate; for a parallel mechanism the
+        rows of :meth:`ParallelMechanism.jacobian
+        <screwsym.systems.parallel.ParallelMechanism.jacobian>`'s ``Jx t = Jq qa'`` on the
+        actuation wrenches, ``t`` the platform twist in these coordinates).  By virtual
+        power the generalised forces on the platform coordinates are ``F = J^T tau`` and
+        the actuator forces ``tau = J^-T F`` (Tsai 1999, §9.6); the kinetic energy
+        ``1/2 qa'^T H qa'`` (:meth:`mass_matrix`) is ``1/2 x'^T Lambda x'`` with
+        ``Lambda = J^T H J``.  Given the platform's ``rates`` and ``accelerations`` (``k``
+        each) the actuated ones are ``qa' = J x'`` and ``qa'' = J (x'' - b)``, ``b`` the
+        platform's accelerations with ``qa'' = 0``, and ``tau`` is :meth:`inverse_dynamics`'s
+        there.  Without a state only ``J`` and ``Lambda`` (``forces`` and
+        ``actuator_forces`` are ``None``).
+
+        Exact for exact input (floats as in :meth:`inverse_dynamics`); generic with symbols,
+        holding where the actuated joints determine the motion (:meth:`actuation_condition`)
+        and ``det J^-1 != 0`` (``conds="piecewise"``: each result a ``Piecewise`` with that
+        condition).  Coordinates that do not determine the actuated rates here (a
+        singularity of the first kind) are a ``ValueError``.
+
+        Examples
+        ========
+
+        The four-bar of :meth:`mass_matrix`, its coupler as the "platform": it turns at
+        ``-5/7`` per unit crank rate (:meth:`joint_rates`: ``5 - 60/7`` for ``5``), so
+        ``J = -7/5`` and ``Lambda = (7/5)**2 * 425/49 = 17``; at rest under gravity ``-10``
+        along y the crank holds ``10/7``, a torque ``F = J tau = -2`` on the coupler.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> pd = fourbar.platform_dynamics([0], [0], [0], [0, -10, 0], platform="coupler")
+        >>> pd.coordinates, pd.jacobian, pd.mass_matrix
+        (('wz',), Matrix([[-7/5]]), Matrix([[17]]))
+        >>> pd.forces, pd.actuator_forces
+        (Matrix([[-2]]), Matrix([[10/7]]))
+
+        References
+        ==========
+
+        L.-W. Tsai, *Robot Analysis*, Wiley 1999, §9.6 (virtual work); L.-W. Tsai, "Solving
+        the inverse dynamics of a Stewart-Gough manipulator by the principle of virtual
+        work", J. Mech. Design 122 (2000) 3-9; A. Codourey, "Dynamic modeling of parallel
+        robots for computed-torque control implementation", Int. J. Robotics Research
+        17(12) (1998) 1325-1336.
+        """
+        with _bounded(budget, "platform_dynamics"):
+            return platform_dynamics(cast("Mechanism", self), actuated, rates, accelerations,
+                                     gravity, platform, point, coordinates, conds)
 
     def joint_reactions(self, actuated: Any, rates: Any, accelerations: Any,
                         gravity: Any = None, *, budget: int = BUDGET) -> tuple:

@@ -582,17 +582,67 @@ def test_3rpr_platform_dynamics_matches_tsais_virtual_work_model():
     assert heavier.inverse_dynamics(actuated, [0, 0, 0], [0, 0, 0], [0, -10, 0]) != -J.T * wg
 
 
+def test_3rpr_in_the_platforms_coordinates_is_tsais_virtual_work_model():
+    """The 3-RPR of the test above in its platform's coordinates at its centre of mass,
+    ``(wz, vx, vy)``, at a moving state: the legs massless, Tsai's virtual-work model (Tsai
+    2000, J. Mech. Design 122; *Robot Analysis* §9.6) is the platform's own Newton-Euler
+    balance, ``F = (Izz wz', m (a - g))`` with ``Lambda = diag(Izz, m, m)``, and ``tau =
+    J^-T F``, ``J`` from :meth:`ParallelMechanism.jacobian`'s ``Jx t = Jq qa'`` (``t`` the
+    platform twist in these coordinates).  The platform form agrees with the actuated form
+    (``Lambda = J^T H J``); the checker rejects a perturbed platform mass."""
+    from screwsym.systems.joints import P
+    from screwsym.systems.parallel import Limb, ParallelMechanism
+
+    base = [Matrix([0, 0]), Matrix([10, 0]), Matrix([5, 12])]
+    pivots = [Matrix([3, 4]), Matrix([6, 3]), Matrix([5, 7])]
+    u = [(p - b) / 5 for b, p in zip(base, pivots, strict=True)]
+    pm = ParallelMechanism(*(Limb(R(list(b) + [0], Z), P(list(d) + [0]), R(list(p) + [0], Z),
+                                  actuated=1)
+                             for b, d, p in zip(base, u, pivots, strict=True)))
+    c, Izz = [Rational(14, 3), Rational(14, 3), 0], Rational(5, 2)
+
+    def mech(m):
+        platform = SpatialInertia(m, c, diag(1, Rational(3, 2), Izz))
+        return Mechanism.from_parallel(pm, inertias={"platform": platform})
+
+    m, g = 3, [0, -10, 0]
+    xd, xdd = [Rational(1, 2), -1, 2], [Rational(-1, 3), Rational(3, 2), 1]  # (wz, vx, vy) at c
+    pd = mech(m).platform_dynamics([1, 4, 7], xd, xdd, g, point=c)
+    assert pd.coordinates == ("wz", "vx", "vy")
+    # the Jacobian through ParallelMechanism.jacobian: t = T x', Jx t = Jq qa'
+    Jx, Jq = pm.jacobian()
+    # v_O = v_c - omega x c
+    T = Matrix([[0, 0, 0], [0, 0, 0], [1, 0, 0], [c[1], 1, 0], [-c[0], 0, 1], [0, 0, 0]])
+    J = Jq[:3, :].inv() * Jx[:3, :] * T  # Jx's rows (C_O; f) times (omega; v_O)
+    assert pd.jacobian == J
+    Lam = diag(Izz, m, m)
+    F = Matrix([Izz * xdd[0], m * (xdd[1] - g[0]), m * (xdd[2] - g[1])])
+    assert pd.mass_matrix == Lam and pd.forces == F
+    assert pd.actuator_forces == J.inv().T * F
+    H = mech(m).mass_matrix([1, 4, 7])
+    assert H == J.inv().T * Lam * J.inv()
+    # at rest qa'' = J x'': the actuated form gives the same forces
+    rest = mech(m).platform_dynamics([1, 4, 7], [0, 0, 0], xdd, g, point=c).actuator_forces
+    assert rest == mech(m).inverse_dynamics([1, 4, 7], [0, 0, 0], list(J * Matrix(xdd)), g)
+    wrong = mech(m + Rational(1, 100)).platform_dynamics([1, 4, 7], xd, xdd, g, point=c)
+    assert wrong.forces != F and wrong.mass_matrix != Lam
+    # named coordinates, Tsai's order (vx, vy, wz): the same model permuted
+    tsai = mech(m).platform_dynamics([1, 4, 7], [xd[1], xd[2], xd[0]], [xdd[1], xdd[2], xdd[0]],
+                                     g, point=c, coordinates=("vx", "vy", "wz"))
+    assert tsai.mass_matrix == diag(m, m, Izz) and tsai.actuator_forces == pd.actuator_forces
+
+
 # ------------------------------------------------------------------ the Delta robot (spatial)
-def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
-    """Clavel's Delta built link by link (17 links, 21 revolutes, 5 loops; the parallelogram
-    forearms massless), its arms and platform with inertia, at a moving state: the
-    inverse dynamics against Codourey's model (Codourey 1998, IJRR 17(12): the arms
-    turning about fixed axes, the platform translating), computed here by vector
-    algebra: the rod constraints ``s_i . pdot = s_i . w_i`` (``s_i`` the rod, ``w_i``
-    the elbow's velocity) and, differentiated, ``s_i . pddot = s_i . a_i - |pdot - w_i|**2``.
-    Exact; the checker rejects a perturbed arm inertia."""
+def codourey(qd, qdd, g, m_arm=2, m_p=3):
+    """Clavel's Delta link by link (17 links, 21 revolutes, 5 loops; the parallelogram
+    forearms massless), its arms and platform with inertia, and Codourey's model of it
+    (Codourey 1998, IJRR 17(12): the arms turning about fixed axes, the platform
+    translating), computed here by vector algebra: the rod constraints ``s_i . pdot = s_i .
+    w_i`` (``s_i`` the rod, ``w_i`` the elbow's velocity) and, differentiated, ``s_i .
+    pddot = s_i . a_i - |pdot - w_i|**2``.  Returns the mechanism, the platform's velocity
+    and acceleration, ``Jp`` (``pdot = Jp qd``), the motor torques and Codourey's
+    Cartesian mass matrix ``m_p 1 + Jp^-T diag(I_axis) Jp^-1``."""
     joints = [t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)]
-    m_arm, m_p = 2, 3
     I_c = diag(Rational(1, 5), Rational(1, 4), Rational(1, 3))
     legs = []
     for e in DELTA_RADIAL:
@@ -602,15 +652,10 @@ def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
         elbow = b + e + Matrix([0, 0, -1])
         attach = Matrix([0, 0, -3]) + e
         legs.append((u, b, elbow, attach, (b + elbow) / 2))  # the arm's com at its middle
-
-    def mech(arm_mass=m_arm):
-        inertias = {f"arm{i + 1}": SpatialInertia(arm_mass, list(leg[4]), I_c)
-                    for i, leg in enumerate(legs)}
-        inertias["platform"] = SpatialInertia(m_p, [0, 0, -3], diag(1, 1, 2))
-        return Mechanism(joints, base="base", inertias=inertias)
-
-    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], Matrix([0, 0, -10])
-    # Codourey's model, independently
+    inertias = {f"arm{i + 1}": SpatialInertia(m_arm, list(leg[4]), I_c)
+                for i, leg in enumerate(legs)}
+    inertias["platform"] = SpatialInertia(m_p, [0, 0, -3], diag(1, 1, 2))
+    mech = Mechanism(joints, base="base", inertias=inertias)
     S = Matrix.hstack(*(attach - elbow for u, b, elbow, attach, _ in legs)).T
     w = [u.cross(elbow - b) * qd[i] for i, (u, b, elbow, attach, _) in enumerate(legs)]
     pd = S.solve(Matrix([S.row(i).dot(w[i]) for i in range(3)]))
@@ -619,18 +664,50 @@ def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
     pdd = S.solve(Matrix([S.row(i).dot(acc[i]) - (pd - w[i]).dot(pd - w[i]) for i in range(3)]))
     J = S.solve(Matrix.diag(*(S.row(i).dot(u.cross(elbow - b))
                               for i, (u, b, elbow, attach, _) in enumerate(legs))))
-    tau = []
+    tau, axial = [], []
     for i, (u, b, _, _, c) in enumerate(legs):
         r = c - b
-        axial = (u.T * I_c * u)[0] + m_arm * (r.dot(r) - r.dot(u) ** 2)  # about the arm's axis
+        axial.append((u.T * I_c * u)[0] + m_arm * (r.dot(r) - r.dot(u) ** 2))  # about the axis
         weight = m_arm * g.dot(u.cross(r))  # the weight's power per unit arm rate
-        tau.append(axial * qdd[i] - weight)
+        tau.append(axial[i] * qdd[i] - weight)
     truth = Matrix(tau) + J.T * (m_p * (pdd - g))
-    ours = mech().inverse_dynamics([0, 7, 14], qd, qdd, list(g))
+    Lam = m_p * Matrix.eye(3) + J.inv().T * diag(*axial) * J.inv()
+    return mech, pd, pdd, J, truth, Lam
+
+
+def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
+    """The Delta link by link at a moving state: the inverse dynamics against Codourey's
+    model (:func:`codourey`).  Exact; the checker rejects a perturbed arm inertia."""
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], Matrix([0, 0, -10])
+    mech, _, _, _, truth, _ = codourey(qd, qdd, g)
+    ours = mech.inverse_dynamics([0, 7, 14], qd, qdd, list(g))
     assert ours == truth
-    assert mech(m_arm + Rational(1, 100)).inverse_dynamics([0, 7, 14], qd, qdd, list(g)) != truth
-    H = mech().mass_matrix([0, 7, 14])
+    heavier = codourey(qd, qdd, g, m_arm=2 + Rational(1, 100))[0]
+    assert heavier.inverse_dynamics([0, 7, 14], qd, qdd, list(g)) != truth
+    H = mech.mass_matrix([0, 7, 14])
     assert is_symmetric_positive_definite(H)
+
+
+def test_delta_in_the_platforms_coordinates_is_codoureys_model():
+    """Codourey's form of the Delta (1998, IJRR 17(12), massless forearms): in the
+    platform's coordinates ``(vx, vy, vz)`` the Jacobian is the inverse of his ``pdot = Jp
+    qd``, the Cartesian mass matrix ``m_p 1 + Jp^-T diag(I_axis) Jp^-1``, and the motor
+    torques from the platform's velocity and acceleration his; the platform form and the
+    actuated form agree (``Lambda = J^T H J``, ``tau = J^-T F``).  The checker rejects a
+    perturbed arm mass."""
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], Matrix([0, 0, -10])
+    mech, pd, pdd, Jp, truth, Lam = codourey(qd, qdd, g)
+    ours = mech.platform_dynamics([0, 7, 14], list(pd), list(pdd), list(g))
+    assert ours.coordinates == ("vx", "vy", "vz")
+    assert ours.jacobian == Jp.inv()
+    assert ours.mass_matrix == Lam
+    assert ours.actuator_forces == truth
+    assert ours.forces == Jp.inv().T * truth
+    H = mech.mass_matrix([0, 7, 14])
+    assert ours.mass_matrix == ours.jacobian.T * H * ours.jacobian
+    assert mech.platform_dynamics([0, 7, 14]).forces is None
+    heavier = codourey(qd, qdd, g, m_arm=2 + Rational(1, 100))[0]
+    assert heavier.platform_dynamics([0, 7, 14]).mass_matrix != Lam
 
 
 def delta_at(top):
@@ -770,6 +847,37 @@ def test_symbolic_configuration_gives_the_generic_result_and_its_condition():
         fresh.mass_matrix([0], budget=10)
     with pytest.raises(ValueError, match="budget"):
         fresh.inverse_dynamics([0], [1], [0], budget=0)
+
+
+def test_platform_coordinates_symbolic_and_bad_input():
+    """The four-bar's coupler as a platform, its coupler joint at ``(x, y)``: the platform
+    form is generic, ``conds="piecewise"`` adds the actuation condition, and numbers put in
+    agree with the numeric four-bar of the docstring (``J = -7/5``, ``Lambda = 17``).
+    Coordinates that miss the motion, bad names and half a state are refused clearly."""
+    x, y = symbols("x y", real=True)
+    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
+    mech = Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
+                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
+                     base="ground", inertias=inert)
+    pd = mech.platform_dynamics([0], platform="coupler")
+    assert pd.coordinates == ("wz",)
+    assert pd.jacobian.subs({x: 3, y: 3}) == Matrix([[Rational(-7, 5)]])
+    assert pd.mass_matrix.subs({x: 3, y: 3}) == Matrix([[17]])
+    pw = mech.platform_dynamics([0], platform="coupler", conds="piecewise").mass_matrix
+    assert isinstance(pw[0], Piecewise) and pw[0].subs({x: Rational(5, 2), y: 1}) is nan
+    assert pw[0].subs({x: 3, y: 3}) == 17
+    numeric = mech.subs({x: 3, y: 3})
+    with pytest.raises(ValueError, match="coordinates: the platform rates wx do not determine"):
+        numeric.platform_dynamics([0], platform="coupler", coordinates=["wx"])
+    with pytest.raises(ValueError, match="coordinates\\[0\\]: expected one of wx, wy"):
+        numeric.platform_dynamics([0], platform="coupler", coordinates=["omega"])
+    with pytest.raises(ValueError, match="rates, accelerations: give both"):
+        numeric.platform_dynamics([0], [1], platform="coupler")
+    with pytest.raises(ValueError, match="link: 'platform' is not a link"):
+        numeric.platform_dynamics([0])
+    with pytest.raises(ValueError, match="platform: its twist has rank 0 < 1"):
+        numeric.platform_dynamics([0], platform="ground")
 
 
 def test_a_mechanism_with_inertias_substitutes_and_compares_as_a_value():
