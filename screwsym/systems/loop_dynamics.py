@@ -117,7 +117,14 @@ from sympy.polys.matrices import DomainMatrix
 from ..algebra.budget import bounded, charge
 from ..algebra.linalg import field_matrix, field_rank
 from ..algebra.rings import vanishes
-from ..core.checks import check_choice, check_count, check_scalar, check_sequence, check_vector
+from ..core.checks import (
+    check_choice,
+    check_count,
+    check_flag,
+    check_scalar,
+    check_sequence,
+    check_vector,
+)
 from ..core.conditions import CONDS, piecewise
 from ..core.decide import is_zero
 from ..core.formulas import bracket
@@ -634,9 +641,11 @@ def _reaction_system(act: _Actuation, tau: Matrix, balances: list) -> tuple[Matr
 
 
 def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
-                    gravity: Any = None) -> tuple:
+                    gravity: Any = None, conds: str = "none", self_stress: bool = False) -> tuple:
     from ..core.wrench import Wrench
 
+    conds = check_choice(conds, "conds", CONDS)
+    self_stress = check_flag(self_stress, "self_stress")
     act = _actuation(mech, _check_actuated(mech, actuated))
     qd, qdd, g, digits = _motion(mech, act, rates, accelerations, gravity)
     balances = _balances(mech, act, qd, qdd, g)
@@ -653,9 +662,29 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     w = zeros(K.cols, 1)
     for i, p in enumerate(pivots):
         w[p, 0] = R[i, K.cols]  # the free unknowns (a self-stress) are zero
-    w = w.applyfunc(_tidy)
-    return _rounded(tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
-                          for e in range(len(act.net.graph.edges))), digits)
+    edges = range(len(act.net.graph.edges))
+
+    def wrenches(v: Matrix, digits: int | None) -> tuple:
+        v = v.applyfunc(_tidy)
+        if conds == "piecewise" and act.condition is not true:  # columns: a Wrench holds no nan
+            return tuple(_conds(_rounded(ImmutableMatrix(v[6 * e:6 * e + 6, 0]), digits), act,
+                                conds) for e in edges)
+        return _rounded(tuple(Wrench(v[6 * e:6 * e + 3, 0], v[6 * e + 3:6 * e + 6, 0])
+                              for e in edges), digits)
+
+    out = wrenches(w, digits)
+    if not self_stress:
+        return out
+    # the null space of the balances: one self-stress per free unknown (the geometry's alone)
+    basis = []
+    for f in (c for c in range(K.cols) if c not in pivots):
+        charge(STEP_UNITS * len(pivots))
+        v = zeros(K.cols, 1)
+        v[f, 0] = 1
+        for i, p in enumerate(pivots):
+            v[p, 0] = -R[i, f]
+        basis.append(wrenches(v, None))
+    return out, tuple(basis)
 
 
 # ------------------------------------------------------------------ the platform's coordinates

@@ -327,7 +327,8 @@ class LoopDynamicsMixin:
                                      gravity, platform, point, coordinates, conds)
 
     def joint_reactions(self, actuated: Any, rates: Any, accelerations: Any,
-                        gravity: Any = None, *, budget: int = BUDGET) -> tuple:
+                        gravity: Any = None, *, conds: str = "none", self_stress: bool = False,
+                        budget: int = BUDGET) -> tuple:
         r"""The wrench each joint transmits, for the actuated joints' ``rates`` and
         ``accelerations`` driven by the forces of :meth:`inverse_dynamics`.
 
@@ -351,6 +352,19 @@ class LoopDynamicsMixin:
         undetermined unknowns (the free columns of the reduced echelon form, the last
         joints' last components first) to zero.  For a planar linkage loaded in its
         plane that is the planar solution: the in-plane forces are the unique ones.
+        With ``self_stress=True`` the result is the pair ``(reactions, basis)``, ``basis``
+        a tuple of self-stresses (each a tuple of one wrench per joint, in equilibrium on
+        every link, reciprocal to every joint's twists, with no power on the actuated
+        ones either) spanning them: the reactions are ``reactions + sum c_i basis[i]`` for
+        any ``c_i``.  There are ``6 L - rank`` of them (:meth:`mobility`'s loops and the
+        network matrix's rank: the statics dual of Davies' kinematics), each depending on
+        the geometry alone.
+
+        With symbols and ``conds="piecewise"`` each reaction (and self-stress) is a 6 x 1
+        column, ray order, of ``Piecewise`` entries that hold where
+        :meth:`actuation_condition` does and are ``nan`` elsewhere (a
+        :class:`~screwsym.core.wrench.Wrench` holds no ``nan``); where the condition is
+        ``True`` they are wrenches as without it.
 
         Examples
         ========
@@ -380,7 +394,18 @@ class LoopDynamicsMixin:
         >>> from screwsym.core.wrench import power
         >>> [power(j.twists.screws[0], r) for (_, _, j), r in zip(fourbar.joints, w)]
         [10/7, 0, 0, 0]
+
+        Its self-stresses: three, the loop's out-of-plane force and moments (a planar
+        loop has ``6 - 3`` overconstraints).  The first is a unit force along z through
+        the origin, the same at every pin: each link bears it from one pin and its
+        opposite from the other, and it does no work on any revolute about z.
+
+        >>> w, basis = fourbar.joint_reactions([0], [0], [0], [0, -10, 0], self_stress=True)
+        >>> len(basis), fourbar.mobility().loops * 6 - fourbar.mobility().rank
+        (3, 3)
+        >>> basis[0]
+        (Wrench([0, 0, 1], [0, 0, 0]), Wrench([0, 0, 1], [0, 0, 0]), Wrench([0, 0, 1], [0, 0, 0]), Wrench([0, 0, 1], [0, 0, 0]))
         """
         with bounded_call(budget, "joint_reactions"):
             return joint_reactions(cast("Mechanism", self), actuated, rates, accelerations,
-                                   gravity)
+                                   gravity, conds, self_stress)

@@ -1120,6 +1120,79 @@ def test_joint_reactions_with_symbols_and_bad_input():
         mech.joint_reactions([0], 1, [0])
 
 
+def is_self_stress(mech, stress):
+    """Joint wrenches (one per joint, the wrench of ``(a, b, joint)`` on ``b``) in equilibrium
+    on every moving link and doing no work on any joint freedom: a self-stress."""
+    from screwsym.core.wrench import power
+
+    links = {}
+    for (a, b, _), w in zip(mech.joints, stress, strict=True):
+        links[b] = links.get(b, Matrix.zeros(6, 1)) + w.matrix
+        links[a] = links.get(a, Matrix.zeros(6, 1)) - w.matrix
+    balanced = all(v == Matrix.zeros(6, 1) for link, v in links.items() if link != mech.base)
+    idle = all(power(t, w) == 0 for (_, _, j), w in zip(mech.joints, stress, strict=True)
+               for t in j.twists.screws)
+    return balanced and idle
+
+
+def test_self_stresses_of_overconstrained_loops():
+    """The reactions of an overconstrained loop are determined up to its self-stresses:
+    ``self_stress=True`` gives a basis of them, as many as ``6 L - rank`` of the network
+    matrix (the statics dual of Davies 1981: the loop equations' left null space), each
+    balanced on every link and idle on every freedom; the particular reactions plus any
+    combination still balance the links.  The planar four-bar has 3 (its out-of-plane
+    force and moments), the Delta link by link 3 per parallelogram.  The checker rejects
+    a wrench perturbed in one joint."""
+    from screwsym.core.wrench import Wrench
+
+    mech = fourbar()
+    g = [0, Rational(-981, 100), 0]
+    w, basis = mech.joint_reactions([0], [Rational(3, 2)], [Rational(-2, 3)], g, self_stress=True)
+    mob = mech.mobility()
+    assert len(basis) == 6 * mob.loops - mob.rank == 3
+    assert w == mech.joint_reactions([0], [Rational(3, 2)], [Rational(-2, 3)], g)
+    assert all(is_self_stress(mech, b) for b in basis)
+    shaken = tuple(Wrench(*(r.matrix + 3 * b0.matrix - 2 * b2.matrix).reshape(2, 3).tolist())
+                   for r, b0, b2 in zip(w, basis[0], basis[2], strict=True))
+    difference = [Wrench(*(x.matrix - y.matrix).reshape(2, 3).tolist())
+                  for x, y in zip(shaken, w, strict=True)]
+    assert is_self_stress(mech, difference)
+    wrong = list(basis[1])
+    wrong[2] = Wrench(wrong[2].matrix[:3, 0], wrong[2].matrix[3:, 0] + Matrix([0, 0, 1]))
+    assert not is_self_stress(mech, wrong)
+    # the Delta link by link: five loops, three parallelograms
+    delta = Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
+                      base="base", inertias={"platform": SpatialInertia(3, [0, 0, -3], diag(1, 1, 2))})
+    _, basis = delta.joint_reactions([0, 7, 14], [1, -2, 0], [0, 0, 0], [0, 0, -10],
+                                     self_stress=True)
+    mob = delta.mobility()
+    assert len(basis) == 6 * mob.loops - mob.rank
+    assert all(is_self_stress(delta, b) for b in basis)
+
+
+def test_joint_reactions_piecewise_with_symbols():
+    """``conds="piecewise"``: the reactions of the four-bar whose coupler joint is at
+    ``(x, y)`` hold where the crank drives it (``nan`` where coupler and rocker are in line),
+    as columns in ray order; numbers put in give the numeric four-bar's wrenches."""
+    x, y = symbols("x y", real=True)
+    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
+    mech = Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
+                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
+                     base="ground", inertias=inert)
+    pw = mech.joint_reactions([0], [0], [0], [0, -10, 0], conds="piecewise")
+    assert all(c.shape == (6, 1) for c in pw)
+    assert any(isinstance(e, Piecewise) for e in pw[0])
+    assert all(e.subs({x: Rational(5, 2), y: 1}) is nan for e in pw[0] if isinstance(e, Piecewise))
+    numeric = mech.subs({x: 3, y: 3}).joint_reactions([0], [0], [0], [0, -10, 0])
+    assert [c.subs({x: 3, y: 3}) for c in pw] == [r.matrix for r in numeric]
+    # numbers: the condition is True and the wrenches come as without it
+    assert mech.subs({x: 3, y: 3}).joint_reactions([0], [0], [0], [0, -10, 0],
+                                                    conds="piecewise") == numeric
+    with pytest.raises(TypeError, match="self_stress: expected True or False"):
+        mech.joint_reactions([0], [0], [0], self_stress=1)
+
+
 def test_a_rod_between_two_spherical_joints_is_refused_clearly():
     """An R-S-S-R linkage: the rod spins idly about its own axis (mobility 2, one idle
     freedom); whether one or two joints are actuated, the error names the idle freedom.
