@@ -360,7 +360,11 @@ def _tidy(e: Any) -> Any:
 
 def _rates(value: Any, name: str, k: int) -> Matrix:
     """The ``k`` actuated rates (or accelerations) given, checked; floats kept (see :func:`_exact`)."""
-    items = check_sequence(value, name, "actuated rates", k)
+    items = check_sequence(value, name, "actuated rates")
+    if len(items) != k:
+        raise ValueError(
+            f"{name}: expected {k} actuated rates (one per joint of actuated, in its order; "
+            f"the other joints' follow from the loop closure, exactly), got {len(items)}")
     return Matrix([check_scalar(x, f"{name}[{i}]") for i, x in enumerate(items)])
 
 

@@ -941,6 +941,10 @@ def test_bad_input_is_refused_clearly():
         mech.mass_matrix(["a"])
     with pytest.raises(ValueError, match="expected 1 actuated rates"):
         mech.inverse_dynamics([0], [1, 2], [0])
+    # all the joints' rates (rounded, they would not close the loops): what to pass instead
+    with pytest.raises(ValueError, match=r"rates: expected 1 actuated rates \(one per joint of "
+                                         r"actuated, in its order; the other joints' follow"):
+        mech.inverse_dynamics([0], [1.0, -2.0, 0.5, 0.25], [0])
     with pytest.raises(ValueError, match="conds"):
         mech.mass_matrix([0], conds="maybe")
 
