@@ -126,7 +126,7 @@ from ..core.checks import (
     check_vector,
 )
 from ..core.conditions import CONDS, piecewise
-from ..core.decide import is_zero
+from ..core.decide import float_tau, is_zero, is_zero_scaled
 from ..core.formulas import bracket
 from ..core.inertia import SpatialInertia
 from ..core.tidy import tidy
@@ -137,7 +137,7 @@ from .topology import bare_network, check_link, link_label, path_matrix, spannin
 if TYPE_CHECKING:
     from .linkage import Mechanism
 
-__all__ = ["PlatformDynamics"]  # the rest serves Mechanism's methods; users reach it there
+__all__ = ["PlatformDynamics", "RedundantForces"]  # the rest serves Mechanism's methods; users reach it there
 
 #: the default gravitational acceleration, ``(0, 0, -g)``: the same as
 #: :data:`screwsym.motion.dynamics.GRAVITY` (systems does not import motion)
@@ -801,3 +801,71 @@ def platform_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations:
 
     return PlatformDynamics(tuple(COMPONENTS[r] for r in rows), out(J), out(Lam), out(forces),
                             out(tau))
+
+
+# ------------------------------------------------------------------ redundant actuation
+class RedundantForces(NamedTuple):
+    """The actuator forces of a redundantly actuated mechanism
+    (:meth:`Mechanism.redundant_inverse_dynamics
+    <screwsym.systems.linkage.Mechanism.redundant_inverse_dynamics>`)."""
+
+    #: the minimum-norm actuator forces (k x 1, in the order of ``actuated``)
+    forces: ImmutableMatrix
+    #: a basis of the internal forces (k x 1 columns, ``k - M`` of them): actuator forces
+    #: doing no work on any motion the loops allow, which load the mechanism and move nothing
+    internal: tuple
+    #: the ``M`` joints of ``actuated`` (numbers into the joints) whose rates determine the
+    #: motion: the first independent ones in the order given
+    primary: tuple
+
+
+def _consistent(given: Matrix, implied: Matrix, name: str, tau: Any) -> None:
+    """Refuse ``given`` unless it equals ``implied`` exactly (floats: to the float policy's
+    relative tolerance ``tau``, on their exact values); symbols undecided are accepted."""
+    for i, (a, b) in enumerate(zip(given, implied, strict=True)):
+        scale = abs(a) + abs(b) if tau is not None else S.One
+        if is_zero_scaled(expand(a - b), scale, tau) is False:
+            raise ValueError(
+                f"{name}[{i}]: the actuated joints' {name} must be consistent, as the loops "
+                f"allow: expected {b} (from the primary joints'), got {a}; give {name} that "
+                "close the loops, or the mobility's count of them to inverse_dynamics")
+
+
+def redundant_inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                               gravity: Any = None) -> RedundantForces:
+    offsets = _check_actuated(mech, actuated)
+    joints = [int(a) for a in check_sequence(actuated, "actuated", "joint numbers")]
+    net = bare_network(mech)
+    A = net.A
+    M = A.cols - field_rank(A)
+    k = len(offsets)
+    if k < M:
+        _check_count(A, k, mech)
+    basis = mech.mobility().rates  # F x M, the joint rates the loops allow
+    Bfull = basis.extract(list(offsets), list(range(basis.cols)))
+    _charge_matrix(Bfull, 3)
+    _, pivots = field_matrix(Bfull.T).rref()
+    if len(pivots) < M:
+        raise ValueError(
+            f"actuated: an actuation singularity: the actuated joints' rates span {len(pivots)} "
+            f"of the mobility's {M} (the mechanism moves with all of them locked)")
+    primary = tuple(pivots[:M])
+    act = _actuation(mech, tuple(offsets[i] for i in primary))
+    B = act.G.extract(list(offsets), list(range(M)))  # each actuated rate per primary rate
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+    digits = _digits(qa, qa2, g, *_inertias(mech))
+    tau_rates, tau_accels = float_tau(*qa), float_tau(*qa2)
+    qa, qa2, g = _exact(qa), _exact(qa2), _exact(g)
+    qd = act.G * qa.extract(list(primary), [0])
+    _consistent(qa, qd.extract(list(offsets), [0]), "rates", tau_rates)
+    qdd = _accelerations(mech, act, qd, qa2.extract(list(primary), [0]))
+    _consistent(qa2, qdd.extract(list(offsets), [0]), "accelerations", tau_accels)
+    Q = _forces(act, _balances(mech, act, qd, qdd, g))
+    charge(STEP_UNITS * k * M)
+    # the least-norm tau with B^T tau = Q (virtual power on every allowed motion)
+    tau = (B * _solve(B.T * B, Q)).applyfunc(_tidy)
+    internal = tuple(ImmutableMatrix(v.applyfunc(_tidy)) for v in B.T.nullspace())
+    return RedundantForces(_rounded(ImmutableMatrix(tau), digits), internal,
+                           tuple(joints[i] for i in primary))
+

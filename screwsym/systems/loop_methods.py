@@ -16,6 +16,7 @@ from ..algebra.budget import BUDGET
 from ..core.twist import Twist
 from .loop_dynamics import (
     PlatformDynamics,
+    RedundantForces,
     actuation_condition,
     bounded_call,
     inverse_dynamics,
@@ -26,6 +27,7 @@ from .loop_dynamics import (
     link_twist,
     mass_matrix,
     platform_dynamics,
+    redundant_inverse_dynamics,
 )
 
 if TYPE_CHECKING:
@@ -409,3 +411,70 @@ class LoopDynamicsMixin:
         with bounded_call(budget, "joint_reactions"):
             return joint_reactions(cast("Mechanism", self), actuated, rates, accelerations,
                                    gravity, conds, self_stress)
+
+    def redundant_inverse_dynamics(self, actuated: Any, rates: Any, accelerations: Any,
+                                   gravity: Any = None, *,
+                                   budget: int = BUDGET) -> RedundantForces:
+        r"""The minimum-norm forces of more actuated joints than the mobility, with the
+        internal forces they leave free.
+
+        Explanation
+        ===========
+
+        With ``k`` actuated joints and mobility ``M < k`` the actuated rates are not
+        independent: ``qa' = B u'`` for the rates ``u'`` of ``M`` of them (``primary``,
+        the first whose rates determine the motion), and virtual power fixes only
+        ``B^T tau = Q``, ``Q`` the forces :meth:`inverse_dynamics` gives those ``M``
+        joints alone.  The result's ``forces`` is the least-squares choice,
+        ``tau = B (B^T B)^-1 Q``, the one of least Euclidean norm (each entry in its
+        joint's units: torques and forces mixed as given; scale the rates to weigh
+        them); ``internal`` is a basis of the null space of ``B^T`` (``k - M`` actuator
+        force sets that do no work on any allowed motion), so every solution is
+        ``forces + sum c_i internal[i]``.  ``k = M`` gives :meth:`inverse_dynamics`'s forces
+        and no internal force.
+
+        ``rates`` and ``accelerations`` are the ``k`` actuated joints', which must be
+        those the loops allow: exactly for exact input (a ``ValueError`` names the first
+        inconsistent one), for floats within the float policy's relative tolerance
+        (``2**-40`` for double precision: the rates rounded once from a consistent
+        motion), computed on their exact binary values from the primary ones.  Exact;
+        generic with symbols (where :meth:`actuation_condition` holds for the primary
+        joints and the rates given are consistent).
+
+        Examples
+        ========
+
+        The four-bar of :meth:`mass_matrix` at rest under gravity ``-10`` along y,
+        driven at the crank and at the rocker's pivot, joint 3 (the ground's turn
+        relative to the rocker, ``-3/7`` per unit crank rate: :meth:`joint_rates`).  Alone
+        the crank holds ``10/7``; shared, ``B = (1, -3/7)`` and ``tau = B * (10/7) /
+        (1 + 9/49) = (35/29, -15/29)`` (its power ``35/29 + 3/7 * 15/29 = 10/7``); the
+        internal force ``(3/7, 1)`` holds the linkage against itself.
+
+        >>> from screwsym.core.inertia import SpatialInertia
+        >>> from screwsym.systems.linkage import Mechanism
+        >>> from screwsym.systems.joints import R
+        >>> z = [0, 0, 1]
+        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+        ...                      ("crank", "coupler", R([1, 2, 0], z)),
+        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
+        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
+        >>> r = fourbar.redundant_inverse_dynamics([0, 3], [0, 0], [0, 0], [0, -10, 0])
+        >>> r.forces.T, r.internal, r.primary
+        (Matrix([[35/29, -15/29]]), (Matrix([
+        [3/7],
+        [  1]]),), (0,))
+
+        References
+        ==========
+
+        H. Cheng, Y.-K. Yiu, Z. Li, "Dynamics and control of redundantly actuated parallel
+        manipulators", IEEE/ASME Trans. Mechatronics 8(4) (2003) 483-491 (the least-norm
+        actuator forces and their null space).
+        """
+        with bounded_call(budget, "redundant_inverse_dynamics"):
+            return redundant_inverse_dynamics(cast("Mechanism", self), actuated, rates,
+                                              accelerations, gravity)
+

@@ -1,5 +1,6 @@
 """The dynamics of closed loops (issue 35): ``Mechanism(..., inertias=)``, ``joint_rates``,
-``joint_accelerations``, ``mass_matrix``, ``inverse_dynamics``.
+``joint_accelerations``, ``mass_matrix``, ``inverse_dynamics``, ``joint_reactions``,
+``platform_dynamics``, ``redundant_inverse_dynamics``.
 
 Ground truth is computed inside each test, independently of screwsym's screw algebra:
 the Lagrangian of the linkage in its actuated angles (Lagrange's equations,
@@ -363,6 +364,56 @@ def test_delta_with_floats_everywhere_matches_the_exact_delta():
     scale = max(abs(float(x)) for r in wx for x in r.matrix)
     assert all(abs(float(a - b)) <= 1e-14 * scale
                for r, rx in zip(w, wx, strict=True) for a, b in zip(r.matrix, rx.matrix, strict=True))
+
+
+def rocker_ratio():
+    """d(rocker angle)/d(crank angle) of the four-bar at its configuration, from the closure
+    by two circles differentiated by mpmath (independent of screwsym)."""
+    o, a0, b0, d = (vec(p) for p in (O, A0, B0, D))
+    a, b, c = dist(o, a0), dist(a0, b0), dist(d, b0)
+    sign = side(a0, d, b0)
+
+    def rocker(t):
+        B = circles([a * mp.cos(t), a * mp.sin(t)], b, d, c, sign)
+        return mp.atan2(B[1] - d[1], B[0] - d[0])
+
+    return mp.diff(rocker, mp.atan2(a0[1], a0[0]))
+
+
+def test_redundant_actuation_gives_the_least_norm_forces_and_the_internal_ones():
+    """The four-bar driven at its crank and at its rocker pivot (joint 3, written rocker ->
+    ground: its rate is minus the rocker's), at a moving state: virtual power fixes only
+    ``B^T tau = Q``, ``B = (1, -r)`` (``r`` the rocker's rate per crank rate) and ``Q`` the
+    crank torque of the Lagrangian; the least-norm forces are ``B Q / |B|^2`` (Cheng, Yiu &
+    Li 2003), and ``(r, 1)`` spans the internal forces.  Against the Lagrangian and the
+    closure by two circles; the checker rejects a perturbed force.  Inconsistent rates are
+    refused; float rates rounded from a consistent motion are read to the float policy."""
+    mech = fourbar()
+    qd, qdd, g = Rational(3, 2), Rational(-2, 3), [0, Rational(-981, 100), 0]
+    rates = list(mech.joint_rates([0], [qd]))
+    accels = list(mech.joint_accelerations([0], [qd], [qdd]))
+    red = mech.redundant_inverse_dynamics([0, 3], [rates[0], rates[3]], [accels[0], accels[3]], g)
+    assert red.primary == (0,)
+    Q, r = fourbar_truth(qd, qdd, g)[0], rocker_ratio()
+    truth = [Q / (1 + r**2), -r * Q / (1 + r**2)]
+    assert agrees(list(red.forces), truth)
+    assert not agrees([red.forces[0] + Rational(1, 10**12), red.forces[1]], truth)
+    (v,) = red.internal
+    assert agrees([v[0] / v[1]], [r])  # (r, 1): no work on the allowed motion (1, -r)
+    # k = M: inverse_dynamics' forces, no internal force
+    alone = mech.redundant_inverse_dynamics([0], [qd], [qdd], g)
+    assert alone.forces == mech.inverse_dynamics([0], [qd], [qdd], g) and alone.internal == ()
+    with pytest.raises(ValueError, match=r"rates\[1\]: the actuated joints' rates must be "
+                                         "consistent"):
+        mech.redundant_inverse_dynamics([0, 3], [rates[0], rates[3] + 1], [0, 0], g)
+    with pytest.raises(ValueError, match=r"accelerations\[1\]: .* must be consistent"):
+        mech.redundant_inverse_dynamics([0, 3], [rates[0], rates[3]], [accels[0], 0], g)
+    # floats: rates and accelerations rounded once are accepted; off by 1e-9 they are not
+    f = [float(x) for x in (rates[0], rates[3], accels[0], accels[3])]
+    floats = mech.redundant_inverse_dynamics([0, 3], f[:2], f[2:], [0, -9.81, 0])
+    assert agrees(list(floats.forces), truth, 1e-12)
+    with pytest.raises(ValueError, match="rates\\[1\\]"):
+        mech.redundant_inverse_dynamics([0, 3], [f[0], f[1] * (1 + 1e-9)], f[2:], [0, -9.81, 0])
 
 
 def test_fourbar_mass_matrix_and_joint_rates():
