@@ -52,7 +52,18 @@ solves, with the actuator forces ``tau`` above, each moving link's balance
 ``sum_j ±w_j = M_l dV_l/dt + [V_l, M_l V_l] - W_l`` and each freedom's reciprocity
 ``$^T Delta w_j = 0`` (``tau`` on an actuated freedom) (:meth:`Mechanism.joint_reactions
 <screwsym.systems.linkage.Mechanism.joint_reactions>`); an overconstrained loop leaves a
-self-stress free, set to zero there.
+self-stress free, set to zero there, and given as a basis on request (``self_stress=True``:
+``6 L - rank`` of them, the statics dual of the network matrix).
+
+Platform coordinates.  In ``k`` components ``x'`` of a platform's twist at a reference point
+(:meth:`Mechanism.platform_dynamics <screwsym.systems.linkage.Mechanism.platform_dynamics>`),
+``qa' = J x'``, ``Lambda = J^T H J`` and ``tau = J^-T F``: the form of Tsai's virtual-work
+model and of Codourey's model of the Delta.
+
+Redundant actuation.  With more actuated joints than the mobility the forces are fixed only
+up to internal forces that do no work; :meth:`Mechanism.redundant_inverse_dynamics
+<screwsym.systems.linkage.Mechanism.redundant_inverse_dynamics>` gives the least-norm ones
+and a basis of the others.
 
 Exact for exact input.  With symbols in the geometry the results are the generic
 ones: they hold where ``det A_p[R] != 0`` (:func:`actuation_condition`;
@@ -528,7 +539,11 @@ def _bodies(mech: Mechanism) -> list[tuple[int, Matrix, SpatialInertia]]:
     for p in mech.inertia_pairs:
         I = p.args[1]
         point = SpatialInertia.point_mass(_exact(I.mass), _exact(I.com))  # the weight's source
-        out.append((int(g.index[p.args[0]]), Matrix(_exact(I.matrix)), point))
+        # the body's matrix from its exact parts (its own .matrix of floats is rounded): the
+        # point mass's, plus the rotational inertia about the centre in I_O's block
+        M = Matrix(point.matrix)
+        M[3:, :3] += _exact(I.inertia)
+        out.append((int(g.index[p.args[0]]), M, point))
     return out
 
 

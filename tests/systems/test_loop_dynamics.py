@@ -681,6 +681,16 @@ def test_3rpr_in_the_platforms_coordinates_is_tsais_virtual_work_model():
     tsai = mech(m).platform_dynamics([1, 4, 7], [xd[1], xd[2], xd[0]], [xdd[1], xdd[2], xdd[0]],
                                      g, point=c, coordinates=("vx", "vy", "wz"))
     assert tsai.mass_matrix == diag(m, m, Izz) and tsai.actuator_forces == pd.actuator_forces
+    # floats (mass, rates, g = -9.81): the exact model on their binary values, rounded once
+    fl = Mechanism.from_parallel(pm, inertias={"platform": SpatialInertia(3.1, c, diag(1, 1.5, 2.5))})
+    ex = Mechanism.from_parallel(pm, inertias={"platform": SpatialInertia(Rational(3.1), c,
+                                                                          diag(1, 1.5, 2.5))})
+    xf, xfd = [0.1, -0.2, 0.3], [0.7, 0.0, -1.1]
+    got = fl.platform_dynamics([1, 4, 7], xf, xfd, [0, -9.81, 0], point=c)
+    want = ex.platform_dynamics([1, 4, 7], [Rational(x) for x in xf], [Rational(x) for x in xfd],
+                                [0, Rational(-9.81), 0], point=c)
+    assert close(got.actuator_forces, want.actuator_forces) and close(got.forces, want.forces)
+    assert close(got.mass_matrix, want.mass_matrix)
 
 
 # ------------------------------------------------------------------ the Delta robot (spatial)
