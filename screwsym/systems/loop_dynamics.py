@@ -173,6 +173,9 @@ def bounded_call(budget: Any, name: str) -> Iterator[None]:
         yield
 
 
+_bounded = bounded_call  # its name before the methods moved to loop_methods
+
+
 def _charge_matrix(M: Matrix, power: int) -> None:
     """Charge an elimination on ``M`` before it runs: ``n**power`` times the largest entry's
     terms, times ``10**s`` for ``s`` symbols (an angle's sine and cosine count once).
