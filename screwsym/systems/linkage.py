@@ -86,7 +86,8 @@ from ..core.wrench import Wrench
 from ._cases import Leaf, Stage, merge_cases, split_mechanism
 from ._rank_cases import apply_subs, case_budget, swapped
 from .joints import Joint, Parallelogram, Spherical, Universal
-from .loop_dynamics import LoopDynamicsMixin, check_inertias
+from .loop_dynamics import check_inertias
+from .loop_methods import LoopDynamicsMixin
 from .motion_type import motion_of
 from .parallel import Degenerate, ParallelMechanism
 from .screw_system import ScrewSystem, basis_with

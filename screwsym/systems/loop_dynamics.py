@@ -52,7 +52,18 @@ solves, with the actuator forces ``tau`` above, each moving link's balance
 ``sum_j ±w_j = M_l dV_l/dt + [V_l, M_l V_l] - W_l`` and each freedom's reciprocity
 ``$^T Delta w_j = 0`` (``tau`` on an actuated freedom) (:meth:`Mechanism.joint_reactions
 <screwsym.systems.linkage.Mechanism.joint_reactions>`); an overconstrained loop leaves a
-self-stress free, set to zero there.
+self-stress free, set to zero there, and given as a basis on request (``self_stress=True``:
+``6 L - rank`` of them, the statics dual of the network matrix).
+
+Platform coordinates.  In ``k`` components ``x'`` of a platform's twist at a reference point
+(:meth:`Mechanism.platform_dynamics <screwsym.systems.linkage.Mechanism.platform_dynamics>`),
+``qa' = J x'``, ``Lambda = J^T H J`` and ``tau = J^-T F``: the form of Tsai's virtual-work
+model and of Codourey's model of the Delta.
+
+Redundant actuation.  With more actuated joints than the mobility the forces are fixed only
+up to internal forces that do no work; :meth:`Mechanism.redundant_inverse_dynamics
+<screwsym.systems.linkage.Mechanism.redundant_inverse_dynamics>` gives the least-norm ones
+and a basis of the others.
 
 Exact for exact input.  With symbols in the geometry the results are the generic
 ones: they hold where ``det A_p[R] != 0`` (:func:`actuation_condition`;
@@ -61,6 +72,15 @@ numbers an actuation singularity is a ``ValueError``; so is a configuration
 whose closure does not extend to second order along the rates given (a shaky
 one: no acceleration closes the loops).  With symbols the rows outside ``R`` are
 taken to close to second order as they do on a genuine configuration.
+
+Floats (the float policy, ``notebooks/float-policy.md``).  The joints are exact (a
+mechanism refuses floats in its geometry); floats in the inertias, the actuated rates
+and accelerations and the gravity (``-9.81``) are read as the exact rationals of their
+binary values (``Rational(0.1)``, not a decimal guess), the computation is exact, and
+the result is rounded once to the floats' precision and a guard digit, as
+:func:`~screwsym.core.line.common_normal` rounds.  So the passive joints' rates follow
+the actuated ones exactly and close the loops to second order (rates rounded joint by
+joint would not), and no elimination pivots on a rounding residue.
 
 References
 ==========
@@ -82,7 +102,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 from sympy import (
     Add,
@@ -102,14 +122,22 @@ from sympy import (
     true,
     zeros,
 )
+from sympy.core.evalf import prec_to_dps
 from sympy.polys.matrices import DomainMatrix
 
-from ..algebra.budget import BUDGET, bounded, charge
+from ..algebra.budget import bounded, charge
 from ..algebra.linalg import field_matrix, field_rank
 from ..algebra.rings import vanishes
-from ..core.checks import check_choice, check_count, check_scalar, check_sequence, check_vector
+from ..core.checks import (
+    check_choice,
+    check_count,
+    check_flag,
+    check_scalar,
+    check_sequence,
+    check_vector,
+)
 from ..core.conditions import CONDS, piecewise
-from ..core.decide import is_zero
+from ..core.decide import float_tau, is_zero, is_zero_scaled
 from ..core.formulas import bracket
 from ..core.inertia import SpatialInertia
 from ..core.tidy import tidy
@@ -120,7 +148,7 @@ from .topology import bare_network, check_link, link_label, path_matrix, spannin
 if TYPE_CHECKING:
     from .linkage import Mechanism
 
-__all__: list[str] = []  # its names serve Mechanism's methods; users reach them there
+__all__ = ["PlatformDynamics", "RedundantForces"]  # the rest serves Mechanism's methods; users reach it there
 
 #: the default gravitational acceleration, ``(0, 0, -g)``: the same as
 #: :data:`screwsym.motion.dynamics.GRAVITY` (systems does not import motion)
@@ -131,18 +159,21 @@ GRAVITY = (S.Zero, S.Zero, -Symbol("g", positive=True))
 STEP_UNITS = 1000
 
 
-#: the error past a closed loop's budget (:func:`_bounded`)
+#: the error past a closed loop's budget (:func:`bounded_call`)
 _MESSAGE = ("{name}: the exact arithmetic needs more than budget={budget} units (or its CPU "
             "time); give some symbols values (subs) or pass a larger budget")
 
 
 @contextmanager
-def _bounded(budget: Any, name: str) -> Iterator[None]:
+def bounded_call(budget: Any, name: str) -> Iterator[None]:
     """The exact arithmetic of ``name`` within ``budget`` units (about a microsecond each,
     and the CPU time ``SLACK`` times that: :mod:`screwsym.algebra.budget`); past it a
     ``ValueError`` naming ``name``.  Inside another budget the outer one holds."""
     with bounded(check_count(budget, "budget"), name, _MESSAGE):
         yield
+
+
+_bounded = bounded_call  # its name before the methods moved to loop_methods
 
 
 def _charge_matrix(M: Matrix, power: int) -> None:
@@ -342,8 +373,43 @@ def _tidy(e: Any) -> Any:
 
 
 def _rates(value: Any, name: str, k: int) -> Matrix:
-    items = check_sequence(value, name, "actuated rates", k)
+    """The ``k`` actuated rates (or accelerations) given, checked; floats kept (see :func:`_exact`)."""
+    items = check_sequence(value, name, "actuated rates")
+    if len(items) != k:
+        raise ValueError(
+            f"{name}: expected {k} actuated rates (one per joint of actuated, in its order; "
+            f"the other joints' follow from the loop closure, exactly), got {len(items)}")
     return Matrix([check_scalar(x, f"{name}[{i}]") for i, x in enumerate(items)])
+
+
+# ------------------------------------------------------------------ floats (the float policy)
+def _exact(value: Any) -> Any:
+    """``value`` with every float replaced by the exact rational of its binary value
+    (``Rational(0.1) == 3602879701896397/36028797018963968``; not ``nsimplify``'s guess)."""
+    floats = value.atoms(Float)
+    return value.xreplace({f: Rational(f) for f in floats}) if floats else value
+
+
+def _digits(*values: Any) -> int | None:
+    """The digits a result from floats among ``values`` is rounded to: those of the least
+    precise float and one guard digit (16 for double precision, as ``common_normal``
+    rounds), or ``None`` when no float is involved (then the result stays exact)."""
+    precs = [f._prec for v in values for f in v.atoms(Float)]
+    return max(15, prec_to_dps(min(precs)) + 1) if precs else None
+
+
+def _rounded(value: Any, digits: int | None) -> Any:
+    """``value`` (a matrix, or a tuple of wrenches) rounded once to ``digits``, or as it is."""
+    if digits is None:
+        return value
+    if isinstance(value, tuple):
+        return tuple(_rounded(v, digits) for v in value)
+    return value.evalf(n=digits)
+
+
+def _inertias(mech: Mechanism) -> list:
+    """The mechanism's inertias as given (for :func:`_digits`)."""
+    return [p.args[1] for p in mech.inertia_pairs]
 
 
 def actuation_condition(mech: Mechanism, actuated: Any) -> Any:
@@ -354,7 +420,7 @@ def actuation_condition(mech: Mechanism, actuated: Any) -> Any:
 def joint_rates(mech: Mechanism, actuated: Any, rates: Any) -> ImmutableMatrix:
     act = _actuation(mech, _check_actuated(mech, actuated))
     qa = _rates(rates, "rates", len(act.actuated))
-    return ImmutableMatrix((act.G * qa).applyfunc(_tidy))
+    return _rounded(ImmutableMatrix((act.G * _exact(qa)).applyfunc(_tidy)), _digits(qa))
 
 
 def _accelerations(mech: Mechanism, act: _Actuation, qd: Matrix, qa2: Matrix) -> Matrix:
@@ -428,7 +494,8 @@ def joint_accelerations(mech: Mechanism, actuated: Any, rates: Any,
     act = _actuation(mech, _check_actuated(mech, actuated))
     k = len(act.actuated)
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
-    return ImmutableMatrix(_accelerations(mech, act, act.G * qa, qa2))
+    qdd = _accelerations(mech, act, act.G * _exact(qa), _exact(qa2))
+    return _rounded(ImmutableMatrix(qdd), _digits(qa, qa2))
 
 
 def _link(mech: Mechanism, link: Any) -> int:
@@ -447,7 +514,8 @@ def _twist(V: Matrix) -> Twist:
 def link_twist(mech: Mechanism, link: Any, actuated: Any, rates: Any) -> Twist:
     act = _actuation(mech, _check_actuated(mech, actuated))
     qa = _rates(rates, "rates", len(act.actuated))
-    return _twist(path_matrix(act.net, _link(mech, link)) * act.G * qa)
+    return _rounded(_twist(path_matrix(act.net, _link(mech, link)) * act.G * _exact(qa)),
+                    _digits(qa))
 
 
 def _link_rate(act: _Actuation, n: int, qd: Matrix, qdd: Matrix) -> Matrix:
@@ -460,25 +528,37 @@ def link_acceleration(mech: Mechanism, link: Any, actuated: Any, rates: Any,
     act = _actuation(mech, _check_actuated(mech, actuated))
     k = len(act.actuated)
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
-    qd = Matrix(act.G * qa)
+    qd = Matrix(act.G * _exact(qa))
     n = _link(mech, link)
-    return _twist(_link_rate(act, n, qd, _accelerations(mech, act, qd, qa2)))
+    return _rounded(_twist(_link_rate(act, n, qd, _accelerations(mech, act, qd, _exact(qa2)))),
+                    _digits(qa, qa2))
 
 
-def _bodies(mech: Mechanism) -> list[tuple[int, SpatialInertia]]:
+def _bodies(mech: Mechanism) -> list[tuple[int, Matrix, SpatialInertia]]:
+    """Per body: its link number, its 6 x 6 inertia matrix and a point mass at its centre of
+    mass (for its weight), floats taken as their exact binary values (:func:`_exact`)."""
     g = spanning_tree(mech)
-    return [(int(g.index[p.args[0]]), p.args[1]) for p in mech.inertia_pairs]
+    out = []
+    for p in mech.inertia_pairs:
+        I = p.args[1]
+        point = SpatialInertia.point_mass(_exact(I.mass), _exact(I.com))  # the weight's source
+        # the body's matrix from its exact parts (its own .matrix of floats is rounded): the
+        # point mass's, plus the rotational inertia about the centre in I_O's block
+        M = Matrix(point.matrix)
+        M[3:, :3] += _exact(I.inertia)
+        out.append((int(g.index[p.args[0]]), M, point))
+    return out
 
 
-def _power_rows(mech: Mechanism, act: _Actuation) -> list[tuple[Matrix, Matrix, SpatialInertia]]:
-    """Per body: ``P_l``, ``A_l^T Delta`` (k x 6) and its inertia."""
+def _power_rows(mech: Mechanism, act: _Actuation) -> list[tuple[Matrix, Matrix, Matrix]]:
+    """Per body: ``P_l``, ``A_l^T Delta`` (k x 6) and its inertia matrix (exact)."""
     net = act.net
     out = []
-    for n, I in _bodies(mech):
+    for n, M, _ in _bodies(mech):
         P = path_matrix(net, n)
         Al = P * act.G
         swapped = Matrix.hstack(Al[3:, :].T, Al[:3, :].T)  # A_l^T Delta
-        out.append((P, swapped, I))
+        out.append((P, swapped, M))
     return out
 
 
@@ -492,22 +572,35 @@ def _conds(value: ImmutableMatrix, act: _Actuation, conds: str) -> ImmutableMatr
 def mass_matrix(mech: Mechanism, actuated: Any, conds: str = "none") -> ImmutableMatrix:
     conds = check_choice(conds, "conds", CONDS)
     act = _actuation(mech, _check_actuated(mech, actuated))
+    H = _rounded(ImmutableMatrix(_mass(mech, act)), _digits(*_inertias(mech)))
+    return _conds(H, act, conds)
+
+
+def _mass(mech: Mechanism, act: _Actuation) -> Matrix:
+    """``H = sum_l A_l^T Delta M_l A_l``, exact (floats read exactly), tidied."""
     k = len(act.actuated)
     H = zeros(k, k)
-    for P, swapped, I in _power_rows(mech, act):
+    for P, swapped, M in _power_rows(mech, act):
         charge(STEP_UNITS * k * k)
-        H += swapped * Matrix(I.matrix) * (P * act.G)
-    return _conds(ImmutableMatrix(H.applyfunc(_tidy)), act, conds)
+        H += swapped * M * (P * act.G)
+    return H.applyfunc(_tidy)
 
 
 def _motion(mech: Mechanism, act: _Actuation, rates: Any, accelerations: Any,
-            gravity: Any) -> tuple[Matrix, Matrix, Matrix]:
-    """All joints' rates and accelerations for the actuated ones, and the gravity vector."""
+            gravity: Any) -> tuple[Matrix, Matrix, Matrix, int | None]:
+    """All joints' rates and accelerations for the actuated ones, the gravity vector, and
+    the digits the results are rounded to (:func:`_digits`: ``None`` for exact input).
+
+    Floats in the actuated rates, accelerations, gravity and inertias are taken as their
+    exact binary values (:func:`_exact`) and the other joints' rates and accelerations
+    follow exactly, so they close the loops exactly (rates rounded joint by joint would
+    not, and the second-order check would refuse them)."""
     k = len(act.actuated)
     qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
     g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
-    qd = Matrix(act.G * qa)
-    return qd, _accelerations(mech, act, qd, qa2), g
+    digits = _digits(qa, qa2, g, *_inertias(mech))
+    qd = Matrix(act.G * _exact(qa))
+    return qd, _accelerations(mech, act, qd, _exact(qa2)), _exact(g), digits
 
 
 def _balances(mech: Mechanism, act: _Actuation, qd: Matrix, qdd: Matrix,
@@ -515,13 +608,12 @@ def _balances(mech: Mechanism, act: _Actuation, qd: Matrix, qdd: Matrix,
     """Per body: its link number, ``A_l^T Delta`` and the wrench its motion needs,
     ``M_l dV_l/dt + [V_l, M_l V_l] - W_l``."""
     out = []
-    for (P, swapped, I), (n, _) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
+    for (P, swapped, M), (n, _, point) in zip(_power_rows(mech, act), _bodies(mech), strict=True):
         charge(STEP_UNITS * len(act.actuated))
         V = P * qd
         Vdot = _link_rate(act, n, qd, qdd)
-        momentum = Matrix(I.matrix) * V
-        weight = I.gravity_wrench(g).matrix
-        out.append((n, swapped, Matrix(I.matrix) * Vdot + Matrix(bracket(V, momentum)) - weight))
+        weight = point.gravity_wrench(g).matrix
+        out.append((n, swapped, M * Vdot + Matrix(bracket(V, M * V)) - weight))
     return out
 
 
@@ -537,9 +629,9 @@ def inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: 
                      gravity: Any = None, conds: str = "none") -> ImmutableMatrix:
     conds = check_choice(conds, "conds", CONDS)
     act = _actuation(mech, _check_actuated(mech, actuated))
-    qd, qdd, g = _motion(mech, act, rates, accelerations, gravity)
+    qd, qdd, g, digits = _motion(mech, act, rates, accelerations, gravity)
     tau = _forces(act, _balances(mech, act, qd, qdd, g))
-    return _conds(ImmutableMatrix(tau.applyfunc(_tidy)), act, conds)
+    return _conds(_rounded(ImmutableMatrix(tau.applyfunc(_tidy)), digits), act, conds)
 
 
 def _reaction_system(act: _Actuation, tau: Matrix, balances: list) -> tuple[Matrix, Matrix]:
@@ -571,11 +663,13 @@ def _reaction_system(act: _Actuation, tau: Matrix, balances: list) -> tuple[Matr
 
 
 def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
-                    gravity: Any = None) -> tuple:
+                    gravity: Any = None, conds: str = "none", self_stress: bool = False) -> tuple:
     from ..core.wrench import Wrench
 
+    conds = check_choice(conds, "conds", CONDS)
+    self_stress = check_flag(self_stress, "self_stress")
     act = _actuation(mech, _check_actuated(mech, actuated))
-    qd, qdd, g = _motion(mech, act, rates, accelerations, gravity)
+    qd, qdd, g, digits = _motion(mech, act, rates, accelerations, gravity)
     balances = _balances(mech, act, qd, qdd, g)
     tau = _forces(act, balances).applyfunc(_tidy)
     K, r = _reaction_system(act, tau, balances)
@@ -590,281 +684,206 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     w = zeros(K.cols, 1)
     for i, p in enumerate(pivots):
         w[p, 0] = R[i, K.cols]  # the free unknowns (a self-stress) are zero
-    w = w.applyfunc(_tidy)
-    return tuple(Wrench(w[6 * e:6 * e + 3, 0], w[6 * e + 3:6 * e + 6, 0])
-                 for e in range(len(act.net.graph.edges)))
+    edges = range(len(act.net.graph.edges))
+
+    def wrenches(v: Matrix, digits: int | None) -> tuple:
+        v = v.applyfunc(_tidy)
+        if conds == "piecewise" and act.condition is not true:  # columns: a Wrench holds no nan
+            return tuple(_conds(_rounded(ImmutableMatrix(v[6 * e:6 * e + 6, 0]), digits), act,
+                                conds) for e in edges)
+        return _rounded(tuple(Wrench(v[6 * e:6 * e + 3, 0], v[6 * e + 3:6 * e + 6, 0])
+                              for e in edges), digits)
+
+    out = wrenches(w, digits)
+    if not self_stress:
+        return out
+    # the null space of the balances: one self-stress per free unknown (the geometry's alone)
+    basis = []
+    for f in (c for c in range(K.cols) if c not in pivots):
+        charge(STEP_UNITS * len(pivots))
+        v = zeros(K.cols, 1)
+        v[f, 0] = 1
+        for i, p in enumerate(pivots):
+            v[p, 0] = -R[i, f]
+        basis.append(wrenches(v, None))
+    return out, tuple(basis)
 
 
-class LoopDynamicsMixin:
-    """The closed-loop dynamics methods of :class:`~screwsym.systems.linkage.Mechanism`
-    (a module of their own: see the module docstring)."""
+# ------------------------------------------------------------------ the platform's coordinates
+#: the names of a platform twist's components at the reference point: ``(omega; v_P)``
+COMPONENTS = ("wx", "wy", "wz", "vx", "vy", "vz")
 
-    __slots__ = ()
 
-    def actuation_condition(self, actuated: Any, *, budget: int = BUDGET) -> Any:
-        """Where the joints ``actuated`` (numbers into :attr:`joints`) determine the motion.
+class PlatformDynamics(NamedTuple):
+    """The dynamics of a mechanism in its platform's coordinates
+    (:meth:`Mechanism.platform_dynamics <screwsym.systems.linkage.Mechanism.platform_dynamics>`)."""
 
-        ``True`` with numbers (an actuation singularity is a ``ValueError``); with
-        symbols ``Ne(det, 0)``, ``det`` the minor of the passive joints' columns of
-        the network matrix the results of :meth:`joint_rates`,
-        :meth:`mass_matrix` and :meth:`inverse_dynamics` are solved on (see :mod:`~screwsym.systems.loop_dynamics`).
+    #: the names of the ``k`` platform coordinates, from ``wx wy wz`` (the angular
+    #: velocity) and ``vx vy vz`` (the velocity of the platform's point at ``point``)
+    coordinates: tuple
+    #: ``J`` (k x k): the actuated rates per platform rate, ``qa' = J x'`` (Tsai's ``J``)
+    jacobian: ImmutableMatrix
+    #: ``Lambda = J^T H J`` (k x k): the kinetic energy is ``1/2 x'^T Lambda x'``
+    mass_matrix: ImmutableMatrix
+    #: ``F`` (k x 1): the generalised forces on the platform coordinates, ``J^T tau``
+    #: (``None`` without a state)
+    forces: ImmutableMatrix | None
+    #: ``tau = J^-T F`` (k x 1): the actuator forces (``None`` without a state)
+    actuator_forces: ImmutableMatrix | None
 
-        The four-bar whose coupler-rocker joint is at ``(x, y)``: the crank drives it
-        except where that joint lies on the line from the crank pin ``(1, 2)`` to the
-        rocker pivot ``(4, 0)`` (coupler and rocker in line: Gosselin & Angeles' second kind).
 
-        >>> from sympy import symbols
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> x, y = symbols("x y", real=True)
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([x, y, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
-        >>> fourbar.actuation_condition([0])
-        Ne(2*x + 3*y - 8, 0)
-        """
-        with _bounded(budget, "actuation_condition"):
-            return actuation_condition(cast("Mechanism", self), actuated)
+def _skew(p: Matrix) -> Matrix:
+    return Matrix([[0, -p[2], p[1]], [p[2], 0, -p[0]], [-p[1], p[0], 0]])
 
-    def joint_rates(self, actuated: Any, rates: Any, *, budget: int = BUDGET) -> ImmutableMatrix:
-        """All joint rates (F, the joints' freedoms in order) from the ``rates`` of the joints
-        ``actuated``: Davies' null space restricted to the actuated rates (see
-        :mod:`~screwsym.systems.loop_dynamics`).
 
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
-        >>> fourbar.joint_rates([0], [5]).T      # the coupler turns at 5 - 60/7 = -25/7
-        Matrix([[5, -60/7, 40/7, -15/7]])
+def _coordinates(value: Any, X: Matrix) -> tuple[int, ...]:
+    """The rows of ``X`` (6 x k, the platform twist at the point per actuated rate) named by
+    ``value``, or with ``None`` the first ``k`` independent ones in the order ``COMPONENTS``."""
+    k = X.cols
+    if value is None:
+        _charge_matrix(X, 3)
+        _, pivots = field_matrix(X.T).rref()
+        if len(pivots) < k:
+            raise ValueError(
+                f"platform: its twist has rank {len(pivots)} < {k} in the actuated rates, so "
+                "its motion does not determine the actuated joints' (name a link the "
+                "actuators all move)")
+        return tuple(pivots[:k])
+    names = check_sequence(value, "coordinates", "component names", k)
+    rows = []
+    for i, c in enumerate(names):
+        if c not in COMPONENTS:
+            raise ValueError(f"coordinates[{i}]: expected one of {', '.join(COMPONENTS)}, got {c!r}")
+        if COMPONENTS.index(c) in rows:
+            raise ValueError(f"coordinates: {c!r} given twice")
+        rows.append(COMPONENTS.index(c))
+    return tuple(rows)
 
-        Signs: a joint ``(a, b, joint)``'s rate is the coefficient of its twist as given,
-        the motion of ``b`` relative to ``a`` about the axis as directed.  The last joint
-        above is written ``("rocker", "ground", ...)``: its rate ``-15/7`` is the ground's
-        turn relative to the rocker, so the rocker turns at ``+15/7`` relative to the
-        ground.  Reversing a joint's pair or its axis reverses its rate, and an actuated
-        joint's force with it (:meth:`inverse_dynamics`).
 
-        >>> flipped = Mechanism(fourbar.joints[:3] + (("ground", "rocker", R([4, 0, 0], z)),),
-        ...                     base="ground")
-        >>> flipped.joint_rates([0], [5]).T
-        Matrix([[5, -60/7, 40/7, 15/7]])
-        """
-        with _bounded(budget, "joint_rates"):
-            return joint_rates(cast("Mechanism", self), actuated, rates)
+def platform_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                      gravity: Any, platform: Any, point: Any, coordinates: Any,
+                      conds: str) -> PlatformDynamics:
+    conds = check_choice(conds, "conds", CONDS)
+    act = _actuation(mech, _check_actuated(mech, actuated))
+    k = len(act.actuated)
+    n = _link(mech, platform)
+    c = _exact(check_vector([0, 0, 0] if point is None else point, "point"))
+    if (rates is None) != (accelerations is None):
+        raise ValueError("rates, accelerations: give both (a state) or neither (the mass "
+                         "matrix and the Jacobian alone)")
+    # the platform twist at the point per actuated rate: omega; v_P = v_O - c x omega
+    shift = Matrix.vstack(Matrix.hstack(Matrix.eye(3), zeros(3, 3)),
+                          Matrix.hstack(-_skew(c), Matrix.eye(3)))
+    X = (shift * path_matrix(act.net, n) * act.G).applyfunc(_tidy)
+    rows = _coordinates(coordinates, X)
+    B = X.extract(list(rows), list(range(k)))  # x' = B qa'
+    charge(STEP_UNITS * k**3)
+    det, condition = _determinant(B)
+    if det == 0 or not det.free_symbols and vanishes(det):
+        raise ValueError(
+            f"coordinates: the platform rates {', '.join(COMPONENTS[r] for r in rows)} do not "
+            "determine the actuated rates here (the actuators move with them held: a "
+            "singularity of the first kind, or coordinates that miss a freedom)")
+    J = _solve(B, Matrix.eye(k)).applyfunc(_tidy)
+    digits = _digits(*_inertias(mech))
+    Lam = (J.T * _mass(mech, act) * J).applyfunc(_tidy)
+    forces = tau = None
+    if rates is not None:
+        xd, xdd = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+        g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+        digits = _digits(xd, xdd, g, *_inertias(mech))
+        qa = J * _exact(xd)
+        qd = act.G * qa
+        # the platform's accelerations with the actuated ones zero: x'' = B qa'' + b
+        rest = _link_rate(act, n, qd, _accelerations(mech, act, qd, zeros(k, 1)))
+        V = path_matrix(act.net, n) * qd
+        w, v, wd, vd = V[:3, 0], V[3:, 0], rest[:3, 0], rest[3:, 0]
+        a = vd + wd.cross(c) + w.cross(v + w.cross(c))  # the point's acceleration
+        b = Matrix.vstack(wd, a).extract(list(rows), [0])
+        qa2 = (J * (_exact(xdd) - b)).applyfunc(_tidy)
+        qdd = _accelerations(mech, act, qd, qa2)
+        tau = _forces(act, _balances(mech, act, qd, qdd, _exact(g))).applyfunc(_tidy)
+        forces = (J.T * tau).applyfunc(_tidy)
+    if act.condition is not true or condition is not true:
+        condition = And(act.condition, condition)
+    else:
+        condition = true
 
-    def joint_accelerations(self, actuated: Any, rates: Any, accelerations: Any, *,
-                            budget: int = BUDGET) -> ImmutableMatrix:
-        """All joint accelerations from the actuated joints' ``rates`` and ``accelerations``:
-        the differentiated closure ``A qddot + quadratic_terms(qdot) = 0`` solved for the
-        passive ones (see :mod:`~screwsym.systems.loop_dynamics`).  A configuration whose
-        closure does not extend to second order along the rates is a ``ValueError``.
+    def out(M: Any) -> Any:
+        if M is None:
+            return None
+        M = _rounded(ImmutableMatrix(M), digits)
+        if conds == "none" or condition is true:
+            return M
+        return ImmutableMatrix(piecewise([(M, condition)], M.applyfunc(lambda _: nan)))
 
-        A crank turning steadily at 5 still accelerates the other joints:
+    return PlatformDynamics(tuple(COMPONENTS[r] for r in rows), out(J), out(Lam), out(forces),
+                            out(tau))
 
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
-        >>> fourbar.joint_accelerations([0], [5], [0]).T
-        Matrix([[0, 4500/343, 3300/343, -7800/343]])
-        """
-        with _bounded(budget, "joint_accelerations"):
-            return joint_accelerations(cast("Mechanism", self), actuated, rates, accelerations)
 
-    def link_twist(self, link: Any, actuated: Any, rates: Any, *, budget: int = BUDGET) -> Twist:
-        """The twist of ``link`` (space frame, ray order) for the actuated joints' ``rates``.
+# ------------------------------------------------------------------ redundant actuation
+class RedundantForces(NamedTuple):
+    """The actuator forces of a redundantly actuated mechanism
+    (:meth:`Mechanism.redundant_inverse_dynamics
+    <screwsym.systems.linkage.Mechanism.redundant_inverse_dynamics>`)."""
 
-        The coupler turns about its instant centre ``(12/5, 24/5)``:
+    #: the minimum-norm actuator forces (k x 1, in the order of ``actuated``)
+    forces: ImmutableMatrix
+    #: a basis of the internal forces (k x 1 columns, ``k - M`` of them): actuator forces
+    #: doing no work on any motion the loops allow, which load the mechanism and move nothing
+    internal: tuple
+    #: the ``M`` joints of ``actuated`` (numbers into the joints) whose rates determine the
+    #: motion: the first independent ones in the order given
+    primary: tuple
 
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
-        >>> fourbar.link_twist("coupler", [0], [7])
-        Twist([0, 0, -5], [-24, 12, 0])
-        """
-        with _bounded(budget, "link_twist"):
-            return link_twist(cast("Mechanism", self), link, actuated, rates)
 
-    def link_acceleration(self, link: Any, actuated: Any, rates: Any, accelerations: Any, *,
-                          budget: int = BUDGET) -> Twist:
-        """The twist rate ``dV/dt`` of ``link`` (its spatial acceleration, space frame, ray
-        order) for the actuated joints' ``rates`` and ``accelerations``.
+def _consistent(given: Matrix, implied: Matrix, name: str, tau: Any) -> None:
+    """Refuse ``given`` unless it equals ``implied`` exactly (floats: to the float policy's
+    relative tolerance ``tau``, on their exact values); symbols undecided are accepted."""
+    for i, (a, b) in enumerate(zip(given, implied, strict=True)):
+        scale = abs(a) + abs(b) if tau is not None else S.One
+        if is_zero_scaled(expand(a - b), scale, tau) is False:
+            raise ValueError(
+                f"{name}[{i}]: the actuated joints' {name} must be consistent, as the loops "
+                f"allow: expected {b} (from the primary joints'), got {a}; give {name} that "
+                "close the loops, or the mobility's count of them to inverse_dynamics")
 
-        The rate of change of the twist ``(omega; v_O)``, not a point's acceleration: a
-        crank turning steadily about a fixed axis has a constant twist.
 
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground")
-        >>> fourbar.link_acceleration("crank", [0], [1], [0])
-        Twist([0, 0, 0], [0, 0, 0])
-        >>> fourbar.link_acceleration("coupler", [0], [7], [0])
-        Twist([0, 0, 180/7], [-228/7, -1356/7, 0])
-        """
-        with _bounded(budget, "link_acceleration"):
-            return link_acceleration(cast("Mechanism", self), link, actuated, rates, accelerations)
+def redundant_inverse_dynamics(mech: Mechanism, actuated: Any, rates: Any, accelerations: Any,
+                               gravity: Any = None) -> RedundantForces:
+    offsets = _check_actuated(mech, actuated)
+    joints = [int(a) for a in check_sequence(actuated, "actuated", "joint numbers")]
+    net = bare_network(mech)
+    A = net.A
+    M = A.cols - field_rank(A)
+    k = len(offsets)
+    if k < M:
+        _check_count(A, k, mech)
+    basis = mech.mobility().rates  # F x M, the joint rates the loops allow
+    Bfull = basis.extract(list(offsets), list(range(basis.cols)))
+    _charge_matrix(Bfull, 3)
+    _, pivots = field_matrix(Bfull.T).rref()
+    if len(pivots) < M:
+        raise ValueError(
+            f"actuated: an actuation singularity: the actuated joints' rates span {len(pivots)} "
+            f"of the mobility's {M} (the mechanism moves with all of them locked)")
+    primary = tuple(pivots[:M])
+    act = _actuation(mech, tuple(offsets[i] for i in primary))
+    B = act.G.extract(list(offsets), list(range(M)))  # each actuated rate per primary rate
+    qa, qa2 = _rates(rates, "rates", k), _rates(accelerations, "accelerations", k)
+    g = check_vector(GRAVITY if gravity is None else gravity, "gravity")
+    digits = _digits(qa, qa2, g, *_inertias(mech))
+    tau_rates, tau_accels = float_tau(*qa), float_tau(*qa2)
+    qa, qa2, g = _exact(qa), _exact(qa2), _exact(g)
+    qd = act.G * qa.extract(list(primary), [0])
+    _consistent(qa, qd.extract(list(offsets), [0]), "rates", tau_rates)
+    qdd = _accelerations(mech, act, qd, qa2.extract(list(primary), [0]))
+    _consistent(qa2, qdd.extract(list(offsets), [0]), "accelerations", tau_accels)
+    Q = _forces(act, _balances(mech, act, qd, qdd, g))
+    charge(STEP_UNITS * k * M)
+    # the least-norm tau with B^T tau = Q (virtual power on every allowed motion)
+    tau = (B * _solve(B.T * B, Q)).applyfunc(_tidy)
+    internal = tuple(ImmutableMatrix(v.applyfunc(_tidy)) for v in B.T.nullspace())
+    return RedundantForces(_rounded(ImmutableMatrix(tau), digits), internal,
+                           tuple(joints[i] for i in primary))
 
-    def mass_matrix(self, actuated: Any, *, conds: str = "none",
-                    budget: int = BUDGET) -> ImmutableMatrix:
-        r"""The k x k mass matrix in the rates of the joints ``actuated`` (k, the mobility).
-
-        Explanation
-        ===========
-
-        ``H = sum_l A_l^T Delta M_l A_l``, ``A_l`` link ``l``'s twist per actuated
-        rate and ``M_l`` its inertia (``inertias=``): the kinetic energy of the
-        mechanism is ``1/2 qa^T H qa``.  A joint's rate is the coefficient of its twist
-        as given (a unit axis: radians or lengths per unit time).  Exact; generic with symbols, holding where
-        :meth:`actuation_condition` does (``conds="piecewise"``: each entry a
-        ``Piecewise`` with that condition, ``nan`` elsewhere).  An actuation
-        singularity (the passive joints move with the actuated ones locked) is a
-        ``ValueError``.  ``budget`` bounds the exact arithmetic (units of about a
-        microsecond, and the CPU time: :mod:`screwsym.algebra.budget`; every method here
-        takes it).  See :mod:`~screwsym.systems.loop_dynamics`.
-
-        Examples
-        ========
-
-        A four-bar driven by its crank, a point mass of 1 at the coupler joint
-        ``(1, 2, 0)`` on the crank and one of 2 at ``(3, 3, 0)`` on the rocker
-        (about ``(4, 0, 0)``, at distance ``sqrt(10)``).  Per unit crank rate the
-        first moves at speed ``sqrt(5)`` and the rocker turns at ``3/7``
-        (:meth:`joint_rates <screwsym.systems.linkage.Mechanism.joint_rates>`), so ``H = 1 * 5 + 2 * (3/7)**2 * 10 = 425/49``.
-
-        >>> from screwsym.core.inertia import SpatialInertia
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
-        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
-        >>> fourbar.mass_matrix([0])
-        Matrix([[425/49]])
-        """
-        with _bounded(budget, "mass_matrix"):
-            return mass_matrix(cast("Mechanism", self), actuated, conds)
-
-    def inverse_dynamics(self, actuated: Any, rates: Any, accelerations: Any,
-                         gravity: Any = None, *, conds: str = "none",
-                         budget: int = BUDGET) -> ImmutableMatrix:
-        r"""The forces or torques of the joints ``actuated`` for their ``rates`` and
-        ``accelerations``, every other joint passive and frictionless.
-
-        Explanation
-        ===========
-
-        By virtual power (Jourdain's principle):
-        ``tau = sum_l A_l^T Delta (M_l dV_l/dt + [V_l, M_l V_l] - W_l)``, ``V_l``
-        link ``l``'s twist, ``dV_l/dt`` its twist rate (:meth:`link_acceleration`),
-        ``W_l`` its weight under ``gravity`` (default ``(0, 0, -g)``, ``g`` a
-        positive symbol).  Exact; generic with symbols as :meth:`mass_matrix`.
-
-        Signs: each force is the one that does positive work on its joint's rate as
-        :meth:`joint_rates` counts it, the motion of the joint's second link relative
-        to its first about the axis as given.  Reversing an actuated joint's pair
-        ``(a, b)`` or its axis reverses its rate and its force: ask for the rates in the
-        orientation the joints were written in.  The wrench each joint transmits, the
-        actuator's included, is :meth:`joint_reactions`.
-
-        Examples
-        ========
-
-        The four-bar of :meth:`mass_matrix` at rest, gravity ``-10`` along y.  Per
-        unit crank rate the first mass rises at ``1`` and the second at ``-3/7``
-        (it moves with ``3/7 * (-3, -1)``), so by virtual work the crank holds
-        ``1 * 10 * 1 + 2 * 10 * (-3/7) = 10/7``.
-
-        >>> from screwsym.core.inertia import SpatialInertia
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
-        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
-        >>> fourbar.inverse_dynamics([0], [0], [0], [0, -10, 0])
-        Matrix([[10/7]])
-        """
-        with _bounded(budget, "inverse_dynamics"):
-            return inverse_dynamics(cast("Mechanism", self), actuated, rates, accelerations, gravity, conds)
-
-    def joint_reactions(self, actuated: Any, rates: Any, accelerations: Any,
-                        gravity: Any = None, *, budget: int = BUDGET) -> tuple:
-        r"""The wrench each joint transmits, for the actuated joints' ``rates`` and
-        ``accelerations`` driven by the forces of :meth:`inverse_dynamics`.
-
-        Explanation
-        ===========
-
-        One :class:`~screwsym.core.wrench.Wrench` per joint, in the order of
-        :attr:`joints`: the wrench the joint ``(a, b, joint)`` exerts on ``b`` (``a``
-        bears its opposite), in the space frame, ray order ``(f; C_O)``.  The links'
-        Newton–Euler balances, ``sum of the joint wrenches on l = M_l dV_l/dt +
-        [V_l, M_l V_l] - W_l``, with each joint's wrench reciprocal to its twists
-        (``$^T Delta w = 0``: no power on a passive freedom), except an actuated
-        joint's, whose power on its unit twist is the actuator force: the reaction
-        includes the actuator.  Exact for exact input; generic with symbols, holding
-        where :meth:`actuation_condition` does.
-
-        Where the loops are overconstrained (a planar linkage of revolutes: its forces
-        along the axes and its moments about lines in the plane) the balances
-        determine the reactions only up to a *self-stress*, a set of joint wrenches
-        in equilibrium on every link by themselves; the solution returned sets the
-        undetermined unknowns (the free columns of the reduced echelon form, the last
-        joints' last components first) to zero.  For a planar linkage loaded in its
-        plane that is the planar solution: the in-plane forces are the unique ones.
-
-        Examples
-        ========
-
-        The four-bar of :meth:`mass_matrix` at rest under gravity ``-10`` along y.
-        The crank, a point mass of 1 at its pin ``(1, 2, 0)`` held by the torque
-        ``10/7``: the ground pin's wrench on it has moment ``10/7`` about z at ``O``,
-        and its power on the crank's unit twist is that torque; the coupler's pin
-        does no work on its joint.
-
-        >>> from screwsym.core.inertia import SpatialInertia
-        >>> from screwsym.core.twist import Twist
-        >>> from screwsym.systems.linkage import Mechanism
-        >>> from screwsym.systems.joints import R
-        >>> z = [0, 0, 1]
-        >>> fourbar = Mechanism([("ground", "crank", R([0, 0, 0], z)),
-        ...                      ("crank", "coupler", R([1, 2, 0], z)),
-        ...                      ("coupler", "rocker", R([3, 3, 0], z)),
-        ...                      ("rocker", "ground", R([4, 0, 0], z))], base="ground",
-        ...                     inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-        ...                               "rocker": SpatialInertia.point_mass(2, [3, 3, 0])})
-        >>> w = fourbar.joint_reactions([0], [0], [0], [0, -10, 0])
-        >>> w[0]
-        Wrench([40/7, 90/7, 0], [0, 0, 10/7])
-        >>> w[1]                    # along the massless coupler, (2, 1)
-        Wrench([40/7, 20/7, 0], [0, 0, -60/7])
-        >>> from screwsym.core.wrench import power
-        >>> [power(j.twists.screws[0], r) for (_, _, j), r in zip(fourbar.joints, w)]
-        [10/7, 0, 0, 0]
-        """
-        with _bounded(budget, "joint_reactions"):
-            return joint_reactions(cast("Mechanism", self), actuated, rates, accelerations,
-                                   gravity)

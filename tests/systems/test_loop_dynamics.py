@@ -1,5 +1,6 @@
 """The dynamics of closed loops (issue 35): ``Mechanism(..., inertias=)``, ``joint_rates``,
-``joint_accelerations``, ``mass_matrix``, ``inverse_dynamics``.
+``joint_accelerations``, ``mass_matrix``, ``inverse_dynamics``, ``joint_reactions``,
+``platform_dynamics``, ``redundant_inverse_dynamics``.
 
 Ground truth is computed inside each test, independently of screwsym's screw algebra:
 the Lagrangian of the linkage in its actuated angles (Lagrange's equations,
@@ -20,6 +21,7 @@ import pytest
 from _linkages import DELTA_RADIAL, bennett, delta_joints, shaky_4r
 from mpmath import mp, mpf
 from sympy import (
+    Float,
     ImmutableMatrix,
     Matrix,
     Ne,
@@ -285,6 +287,135 @@ def test_decimal_rates_and_inertias_give_the_exact_answer_rounded():
     assert abs(float(floats[0]) - float(exact[0]) * (1 + 1e-9)) > 1e-12 * abs(float(exact[0]))
 
 
+def _float_fourbar():
+    """The four-bar of :func:`fourbar` with every inertia in floats (masses, centres of mass,
+    tensors: ``1/3``, ``1/7``, ... rounded), and its exact twin: the same floats read as
+    their exact binary values (``Rational(float)``), which is what the float policy
+    computes with."""
+    def bodies(convert):
+        return {name: SpatialInertia(convert(m), [convert(c[0]), convert(c[1]), 0],
+                                     I.applyfunc(convert))
+                for name, m, c, I in FOURBAR_BODIES}
+
+    pt = [list(p) + [0] for p in (O, A0, B0, D)]
+    joints = [("ground", "crank", R(pt[0], Z)), ("crank", "coupler", R(pt[1], Z)),
+              ("coupler", "rocker", R(pt[2], Z)), ("rocker", "ground", R(pt[3], Z))]
+    return (Mechanism(joints, base="ground", inertias=bodies(float)),
+            Mechanism(joints, base="ground", inertias=bodies(lambda x: Rational(float(x)))))
+
+
+def close(ours, exact, rtol=1e-15):
+    """Each float entry within ``rtol`` of the exact value, relative to the largest."""
+    ours, exact = [complex(x) for x in ours], [complex(x) for x in exact]
+    scale = max(abs(x) for x in exact)
+    return all(abs(a - b) <= rtol * scale for a, b in zip(ours, exact, strict=True))
+
+
+def test_float_inertias_rates_and_gravity_give_the_exact_answer_rounded_once():
+    """The float policy (notebooks/float-policy.md): floats in the inertias, rates,
+    accelerations and gravity (``-9.81``) are read as their exact binary values and the
+    result is rounded once, so it agrees with the exact computation on those values to
+    float precision: mass matrix, inverse dynamics and every joint reaction (the float
+    elimination of the reactions used to find a spurious pivot, "inconsistent input")."""
+    floats, exact = _float_fourbar()
+    qd, qdd, g = [1.5], [-0.3], [0, -9.81, 0]
+    qx, qddx, gx = [Rational(1.5)], [Rational(-0.3)], [0, Rational(-9.81), 0]
+    H, Hx = floats.mass_matrix([0]), exact.mass_matrix([0])
+    assert H.atoms(Rational) <= {0} and close(H, Hx)
+    tau, taux = floats.inverse_dynamics([0], qd, qdd, g), exact.inverse_dynamics([0], qx, qddx, gx)
+    assert close(tau, taux) and not close(tau * (1 + 1e-12), taux)
+    w = floats.joint_reactions([0], qd, qdd, g)
+    wx = exact.joint_reactions([0], qx, qddx, gx)
+    assert all(close(a.matrix, b.matrix, 1e-14) for a, b in zip(w, wx, strict=True))
+    assert close(floats.joint_rates([0], qd), exact.joint_rates([0], qx))
+    assert close(floats.joint_accelerations([0], qd, qdd), exact.joint_accelerations([0], qx, qddx))
+    # the Lagrangian agrees too (the inertias differ from the rationals by the rounding only)
+    assert abs(float(tau[0]) - float(fourbar_truth(qx[0], qddx[0], gx)[0])) < 1e-12 * abs(float(tau[0]))
+    # exact input stays exact
+    assert exact.inverse_dynamics([0], qx, qddx, gx).atoms(Float) == set()
+
+
+def test_delta_with_floats_everywhere_matches_the_exact_delta():
+    """The Delta link by link with float masses and inertias, decimal rates and
+    accelerations that no rational joint rates match exactly in floats (``0.1``, ``-0.2``,
+    ...) and ``g = -9.81``: no refusal (the passive rates follow the actuated ones
+    exactly, so the closure holds to second order), and the torques, mass matrix and
+    reactions agree with the exact Delta on the floats' binary values."""
+    def mech(convert):
+        inertias = {f"arm{i + 1}": SpatialInertia(convert(Rational(21, 10)),
+                                                  [convert(Rational(5, 2) * e[0]),
+                                                   convert(Rational(5, 2) * e[1]), convert(Rational(-1, 2))],
+                                                  diag(1, 1, 1).applyfunc(lambda x: convert(x / 3)))
+                    for i, e in enumerate(DELTA_RADIAL)}
+        inertias["platform"] = SpatialInertia(convert(Rational(33, 10)), [0, 0, -3],
+                                              diag(convert(Rational(3, 10)), convert(Rational(3, 10)),
+                                                   convert(Rational(1, 2))))
+        return Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
+                         base="base", inertias=inertias)
+
+    floats, exact = mech(float), mech(lambda x: Rational(float(x)))
+    qd, qdd, g = [0.1, -0.2, 0.3], [0.7, 0.0, -1.1], [0, 0, -9.81]
+    ex = [[Rational(x) for x in v] for v in (qd, qdd, g)]
+    act = [0, 7, 14]
+    tau, taux = floats.inverse_dynamics(act, qd, qdd, g), exact.inverse_dynamics(act, *ex)
+    assert close(tau, taux) and not close(tau.applyfunc(lambda x: x * (1 + 1e-12)), taux)
+    assert close(floats.mass_matrix(act), exact.mass_matrix(act))
+    w, wx = floats.joint_reactions(act, qd, qdd, g), exact.joint_reactions(act, *ex)
+    scale = max(abs(float(x)) for r in wx for x in r.matrix)
+    assert all(abs(float(a - b)) <= 1e-14 * scale
+               for r, rx in zip(w, wx, strict=True) for a, b in zip(r.matrix, rx.matrix, strict=True))
+
+
+def rocker_ratio():
+    """d(rocker angle)/d(crank angle) of the four-bar at its configuration, from the closure
+    by two circles differentiated by mpmath (independent of screwsym)."""
+    o, a0, b0, d = (vec(p) for p in (O, A0, B0, D))
+    a, b, c = dist(o, a0), dist(a0, b0), dist(d, b0)
+    sign = side(a0, d, b0)
+
+    def rocker(t):
+        B = circles([a * mp.cos(t), a * mp.sin(t)], b, d, c, sign)
+        return mp.atan2(B[1] - d[1], B[0] - d[0])
+
+    return mp.diff(rocker, mp.atan2(a0[1], a0[0]))
+
+
+def test_redundant_actuation_gives_the_least_norm_forces_and_the_internal_ones():
+    """The four-bar driven at its crank and at its rocker pivot (joint 3, written rocker ->
+    ground: its rate is minus the rocker's), at a moving state: virtual power fixes only
+    ``B^T tau = Q``, ``B = (1, -r)`` (``r`` the rocker's rate per crank rate) and ``Q`` the
+    crank torque of the Lagrangian; the least-norm forces are ``B Q / |B|^2`` (Cheng, Yiu &
+    Li 2003), and ``(r, 1)`` spans the internal forces.  Against the Lagrangian and the
+    closure by two circles; the checker rejects a perturbed force.  Inconsistent rates are
+    refused; float rates rounded from a consistent motion are read to the float policy."""
+    mech = fourbar()
+    qd, qdd, g = Rational(3, 2), Rational(-2, 3), [0, Rational(-981, 100), 0]
+    rates = list(mech.joint_rates([0], [qd]))
+    accels = list(mech.joint_accelerations([0], [qd], [qdd]))
+    red = mech.redundant_inverse_dynamics([0, 3], [rates[0], rates[3]], [accels[0], accels[3]], g)
+    assert red.primary == (0,)
+    Q, r = fourbar_truth(qd, qdd, g)[0], rocker_ratio()
+    truth = [Q / (1 + r**2), -r * Q / (1 + r**2)]
+    assert agrees(list(red.forces), truth)
+    assert not agrees([red.forces[0] + Rational(1, 10**12), red.forces[1]], truth)
+    (v,) = red.internal
+    assert agrees([v[0] / v[1]], [r])  # (r, 1): no work on the allowed motion (1, -r)
+    # k = M: inverse_dynamics' forces, no internal force
+    alone = mech.redundant_inverse_dynamics([0], [qd], [qdd], g)
+    assert alone.forces == mech.inverse_dynamics([0], [qd], [qdd], g) and alone.internal == ()
+    with pytest.raises(ValueError, match=r"rates\[1\]: the actuated joints' rates must be "
+                                         "consistent"):
+        mech.redundant_inverse_dynamics([0, 3], [rates[0], rates[3] + 1], [0, 0], g)
+    with pytest.raises(ValueError, match=r"accelerations\[1\]: .* must be consistent"):
+        mech.redundant_inverse_dynamics([0, 3], [rates[0], rates[3]], [accels[0], 0], g)
+    # floats: rates and accelerations rounded once are accepted; off by 1e-9 they are not
+    f = [float(x) for x in (rates[0], rates[3], accels[0], accels[3])]
+    floats = mech.redundant_inverse_dynamics([0, 3], f[:2], f[2:], [0, -9.81, 0])
+    assert agrees(list(floats.forces), truth, 1e-12)
+    with pytest.raises(ValueError, match="rates\\[1\\]"):
+        mech.redundant_inverse_dynamics([0, 3], [f[0], f[1] * (1 + 1e-9)], f[2:], [0, -9.81, 0])
+
+
 def test_fourbar_mass_matrix_and_joint_rates():
     """H = dT/dqd^2 of the Lagrangian (rates only), and the joint rates by instant centres."""
     mech = fourbar()
@@ -502,17 +633,77 @@ def test_3rpr_platform_dynamics_matches_tsais_virtual_work_model():
     assert heavier.inverse_dynamics(actuated, [0, 0, 0], [0, 0, 0], [0, -10, 0]) != -J.T * wg
 
 
+def test_3rpr_in_the_platforms_coordinates_is_tsais_virtual_work_model():
+    """The 3-RPR of the test above in its platform's coordinates at its centre of mass,
+    ``(wz, vx, vy)``, at a moving state: the legs massless, Tsai's virtual-work model (Tsai
+    2000, J. Mech. Design 122; *Robot Analysis* §9.6) is the platform's own Newton-Euler
+    balance, ``F = (Izz wz', m (a - g))`` with ``Lambda = diag(Izz, m, m)``, and ``tau =
+    J^-T F``, ``J`` from :meth:`ParallelMechanism.jacobian`'s ``Jx t = Jq qa'`` (``t`` the
+    platform twist in these coordinates).  The platform form agrees with the actuated form
+    (``Lambda = J^T H J``); the checker rejects a perturbed platform mass."""
+    from screwsym.systems.joints import P
+    from screwsym.systems.parallel import Limb, ParallelMechanism
+
+    base = [Matrix([0, 0]), Matrix([10, 0]), Matrix([5, 12])]
+    pivots = [Matrix([3, 4]), Matrix([6, 3]), Matrix([5, 7])]
+    u = [(p - b) / 5 for b, p in zip(base, pivots, strict=True)]
+    pm = ParallelMechanism(*(Limb(R(list(b) + [0], Z), P(list(d) + [0]), R(list(p) + [0], Z),
+                                  actuated=1)
+                             for b, d, p in zip(base, u, pivots, strict=True)))
+    c, Izz = [Rational(14, 3), Rational(14, 3), 0], Rational(5, 2)
+
+    def mech(m):
+        platform = SpatialInertia(m, c, diag(1, Rational(3, 2), Izz))
+        return Mechanism.from_parallel(pm, inertias={"platform": platform})
+
+    m, g = 3, [0, -10, 0]
+    xd, xdd = [Rational(1, 2), -1, 2], [Rational(-1, 3), Rational(3, 2), 1]  # (wz, vx, vy) at c
+    pd = mech(m).platform_dynamics([1, 4, 7], xd, xdd, g, point=c)
+    assert pd.coordinates == ("wz", "vx", "vy")
+    # the Jacobian through ParallelMechanism.jacobian: t = T x', Jx t = Jq qa'
+    Jx, Jq = pm.jacobian()
+    # v_O = v_c - omega x c
+    T = Matrix([[0, 0, 0], [0, 0, 0], [1, 0, 0], [c[1], 1, 0], [-c[0], 0, 1], [0, 0, 0]])
+    J = Jq[:3, :].inv() * Jx[:3, :] * T  # Jx's rows (C_O; f) times (omega; v_O)
+    assert pd.jacobian == J
+    Lam = diag(Izz, m, m)
+    F = Matrix([Izz * xdd[0], m * (xdd[1] - g[0]), m * (xdd[2] - g[1])])
+    assert pd.mass_matrix == Lam and pd.forces == F
+    assert pd.actuator_forces == J.inv().T * F
+    H = mech(m).mass_matrix([1, 4, 7])
+    assert H == J.inv().T * Lam * J.inv()
+    # at rest qa'' = J x'': the actuated form gives the same forces
+    rest = mech(m).platform_dynamics([1, 4, 7], [0, 0, 0], xdd, g, point=c).actuator_forces
+    assert rest == mech(m).inverse_dynamics([1, 4, 7], [0, 0, 0], list(J * Matrix(xdd)), g)
+    wrong = mech(m + Rational(1, 100)).platform_dynamics([1, 4, 7], xd, xdd, g, point=c)
+    assert wrong.forces != F and wrong.mass_matrix != Lam
+    # named coordinates, Tsai's order (vx, vy, wz): the same model permuted
+    tsai = mech(m).platform_dynamics([1, 4, 7], [xd[1], xd[2], xd[0]], [xdd[1], xdd[2], xdd[0]],
+                                     g, point=c, coordinates=("vx", "vy", "wz"))
+    assert tsai.mass_matrix == diag(m, m, Izz) and tsai.actuator_forces == pd.actuator_forces
+    # floats (mass, rates, g = -9.81): the exact model on their binary values, rounded once
+    fl = Mechanism.from_parallel(pm, inertias={"platform": SpatialInertia(3.1, c, diag(1, 1.5, 2.5))})
+    ex = Mechanism.from_parallel(pm, inertias={"platform": SpatialInertia(Rational(3.1), c,
+                                                                          diag(1, 1.5, 2.5))})
+    xf, xfd = [0.1, -0.2, 0.3], [0.7, 0.0, -1.1]
+    got = fl.platform_dynamics([1, 4, 7], xf, xfd, [0, -9.81, 0], point=c)
+    want = ex.platform_dynamics([1, 4, 7], [Rational(x) for x in xf], [Rational(x) for x in xfd],
+                                [0, Rational(-9.81), 0], point=c)
+    assert close(got.actuator_forces, want.actuator_forces) and close(got.forces, want.forces)
+    assert close(got.mass_matrix, want.mass_matrix)
+
+
 # ------------------------------------------------------------------ the Delta robot (spatial)
-def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
-    """Clavel's Delta built link by link (17 links, 21 revolutes, 5 loops; the parallelogram
-    forearms massless), its arms and platform with inertia, at a moving state: the
-    inverse dynamics against Codourey's model (Codourey 1998, IJRR 17(12): the arms
-    turning about fixed axes, the platform translating), computed here by vector
-    algebra: the rod constraints ``s_i . pdot = s_i . w_i`` (``s_i`` the rod, ``w_i``
-    the elbow's velocity) and, differentiated, ``s_i . pddot = s_i . a_i - |pdot - w_i|**2``.
-    Exact; the checker rejects a perturbed arm inertia."""
+def codourey(qd, qdd, g, m_arm=2, m_p=3):
+    """Clavel's Delta link by link (17 links, 21 revolutes, 5 loops; the parallelogram
+    forearms massless), its arms and platform with inertia, and Codourey's model of it
+    (Codourey 1998, IJRR 17(12): the arms turning about fixed axes, the platform
+    translating), computed here by vector algebra: the rod constraints ``s_i . pdot = s_i .
+    w_i`` (``s_i`` the rod, ``w_i`` the elbow's velocity) and, differentiated, ``s_i .
+    pddot = s_i . a_i - |pdot - w_i|**2``.  Returns the mechanism, the platform's velocity
+    and acceleration, ``Jp`` (``pdot = Jp qd``), the motor torques and Codourey's
+    Cartesian mass matrix ``m_p 1 + Jp^-T diag(I_axis) Jp^-1``."""
     joints = [t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)]
-    m_arm, m_p = 2, 3
     I_c = diag(Rational(1, 5), Rational(1, 4), Rational(1, 3))
     legs = []
     for e in DELTA_RADIAL:
@@ -522,15 +713,10 @@ def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
         elbow = b + e + Matrix([0, 0, -1])
         attach = Matrix([0, 0, -3]) + e
         legs.append((u, b, elbow, attach, (b + elbow) / 2))  # the arm's com at its middle
-
-    def mech(arm_mass=m_arm):
-        inertias = {f"arm{i + 1}": SpatialInertia(arm_mass, list(leg[4]), I_c)
-                    for i, leg in enumerate(legs)}
-        inertias["platform"] = SpatialInertia(m_p, [0, 0, -3], diag(1, 1, 2))
-        return Mechanism(joints, base="base", inertias=inertias)
-
-    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], Matrix([0, 0, -10])
-    # Codourey's model, independently
+    inertias = {f"arm{i + 1}": SpatialInertia(m_arm, list(leg[4]), I_c)
+                for i, leg in enumerate(legs)}
+    inertias["platform"] = SpatialInertia(m_p, [0, 0, -3], diag(1, 1, 2))
+    mech = Mechanism(joints, base="base", inertias=inertias)
     S = Matrix.hstack(*(attach - elbow for u, b, elbow, attach, _ in legs)).T
     w = [u.cross(elbow - b) * qd[i] for i, (u, b, elbow, attach, _) in enumerate(legs)]
     pd = S.solve(Matrix([S.row(i).dot(w[i]) for i in range(3)]))
@@ -539,18 +725,50 @@ def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
     pdd = S.solve(Matrix([S.row(i).dot(acc[i]) - (pd - w[i]).dot(pd - w[i]) for i in range(3)]))
     J = S.solve(Matrix.diag(*(S.row(i).dot(u.cross(elbow - b))
                               for i, (u, b, elbow, attach, _) in enumerate(legs))))
-    tau = []
+    tau, axial = [], []
     for i, (u, b, _, _, c) in enumerate(legs):
         r = c - b
-        axial = (u.T * I_c * u)[0] + m_arm * (r.dot(r) - r.dot(u) ** 2)  # about the arm's axis
+        axial.append((u.T * I_c * u)[0] + m_arm * (r.dot(r) - r.dot(u) ** 2))  # about the axis
         weight = m_arm * g.dot(u.cross(r))  # the weight's power per unit arm rate
-        tau.append(axial * qdd[i] - weight)
+        tau.append(axial[i] * qdd[i] - weight)
     truth = Matrix(tau) + J.T * (m_p * (pdd - g))
-    ours = mech().inverse_dynamics([0, 7, 14], qd, qdd, list(g))
+    Lam = m_p * Matrix.eye(3) + J.inv().T * diag(*axial) * J.inv()
+    return mech, pd, pdd, J, truth, Lam
+
+
+def test_delta_link_by_link_matches_codoureys_model_with_massless_forearms():
+    """The Delta link by link at a moving state: the inverse dynamics against Codourey's
+    model (:func:`codourey`).  Exact; the checker rejects a perturbed arm inertia."""
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], Matrix([0, 0, -10])
+    mech, _, _, _, truth, _ = codourey(qd, qdd, g)
+    ours = mech.inverse_dynamics([0, 7, 14], qd, qdd, list(g))
     assert ours == truth
-    assert mech(m_arm + Rational(1, 100)).inverse_dynamics([0, 7, 14], qd, qdd, list(g)) != truth
-    H = mech().mass_matrix([0, 7, 14])
+    heavier = codourey(qd, qdd, g, m_arm=2 + Rational(1, 100))[0]
+    assert heavier.inverse_dynamics([0, 7, 14], qd, qdd, list(g)) != truth
+    H = mech.mass_matrix([0, 7, 14])
     assert is_symmetric_positive_definite(H)
+
+
+def test_delta_in_the_platforms_coordinates_is_codoureys_model():
+    """Codourey's form of the Delta (1998, IJRR 17(12), massless forearms): in the
+    platform's coordinates ``(vx, vy, vz)`` the Jacobian is the inverse of his ``pdot = Jp
+    qd``, the Cartesian mass matrix ``m_p 1 + Jp^-T diag(I_axis) Jp^-1``, and the motor
+    torques from the platform's velocity and acceleration his; the platform form and the
+    actuated form agree (``Lambda = J^T H J``, ``tau = J^-T F``).  The checker rejects a
+    perturbed arm mass."""
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], Matrix([0, 0, -10])
+    mech, pd, pdd, Jp, truth, Lam = codourey(qd, qdd, g)
+    ours = mech.platform_dynamics([0, 7, 14], list(pd), list(pdd), list(g))
+    assert ours.coordinates == ("vx", "vy", "vz")
+    assert ours.jacobian == Jp.inv()
+    assert ours.mass_matrix == Lam
+    assert ours.actuator_forces == truth
+    assert ours.forces == Jp.inv().T * truth
+    H = mech.mass_matrix([0, 7, 14])
+    assert ours.mass_matrix == ours.jacobian.T * H * ours.jacobian
+    assert mech.platform_dynamics([0, 7, 14]).forces is None
+    heavier = codourey(qd, qdd, g, m_arm=2 + Rational(1, 100))[0]
+    assert heavier.platform_dynamics([0, 7, 14]).mass_matrix != Lam
 
 
 def delta_at(top):
@@ -692,6 +910,37 @@ def test_symbolic_configuration_gives_the_generic_result_and_its_condition():
         fresh.inverse_dynamics([0], [1], [0], budget=0)
 
 
+def test_platform_coordinates_symbolic_and_bad_input():
+    """The four-bar's coupler as a platform, its coupler joint at ``(x, y)``: the platform
+    form is generic, ``conds="piecewise"`` adds the actuation condition, and numbers put in
+    agree with the numeric four-bar of the docstring (``J = -7/5``, ``Lambda = 17``).
+    Coordinates that miss the motion, bad names and half a state are refused clearly."""
+    x, y = symbols("x y", real=True)
+    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
+    mech = Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
+                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
+                     base="ground", inertias=inert)
+    pd = mech.platform_dynamics([0], platform="coupler")
+    assert pd.coordinates == ("wz",)
+    assert pd.jacobian.subs({x: 3, y: 3}) == Matrix([[Rational(-7, 5)]])
+    assert pd.mass_matrix.subs({x: 3, y: 3}) == Matrix([[17]])
+    pw = mech.platform_dynamics([0], platform="coupler", conds="piecewise").mass_matrix
+    assert isinstance(pw[0], Piecewise) and pw[0].subs({x: Rational(5, 2), y: 1}) is nan
+    assert pw[0].subs({x: 3, y: 3}) == 17
+    numeric = mech.subs({x: 3, y: 3})
+    with pytest.raises(ValueError, match="coordinates: the platform rates wx do not determine"):
+        numeric.platform_dynamics([0], platform="coupler", coordinates=["wx"])
+    with pytest.raises(ValueError, match="coordinates\\[0\\]: expected one of wx, wy"):
+        numeric.platform_dynamics([0], platform="coupler", coordinates=["omega"])
+    with pytest.raises(ValueError, match="rates, accelerations: give both"):
+        numeric.platform_dynamics([0], [1], platform="coupler")
+    with pytest.raises(ValueError, match="link: 'platform' is not a link"):
+        numeric.platform_dynamics([0])
+    with pytest.raises(ValueError, match="platform: its twist has rank 0 < 1"):
+        numeric.platform_dynamics([0], platform="ground")
+
+
 def test_a_mechanism_with_inertias_substitutes_and_compares_as_a_value():
     """``subs`` rebuilds the mechanism with its inertias (the canonical pairs are accepted)."""
     x, y = symbols("x y", real=True)
@@ -753,6 +1002,10 @@ def test_bad_input_is_refused_clearly():
         mech.mass_matrix(["a"])
     with pytest.raises(ValueError, match="expected 1 actuated rates"):
         mech.inverse_dynamics([0], [1, 2], [0])
+    # all the joints' rates (rounded, they would not close the loops): what to pass instead
+    with pytest.raises(ValueError, match=r"rates: expected 1 actuated rates \(one per joint of "
+                                         r"actuated, in its order; the other joints' follow"):
+        mech.inverse_dynamics([0], [1.0, -2.0, 0.5, 0.25], [0])
     with pytest.raises(ValueError, match="conds"):
         mech.mass_matrix([0], conds="maybe")
 
@@ -930,6 +1183,79 @@ def test_joint_reactions_with_symbols_and_bad_input():
         mech.joint_reactions([0, 1], [1, 1], [0, 0])
     with pytest.raises(TypeError, match="rates"):
         mech.joint_reactions([0], 1, [0])
+
+
+def is_self_stress(mech, stress):
+    """Joint wrenches (one per joint, the wrench of ``(a, b, joint)`` on ``b``) in equilibrium
+    on every moving link and doing no work on any joint freedom: a self-stress."""
+    from screwsym.core.wrench import power
+
+    links = {}
+    for (a, b, _), w in zip(mech.joints, stress, strict=True):
+        links[b] = links.get(b, Matrix.zeros(6, 1)) + w.matrix
+        links[a] = links.get(a, Matrix.zeros(6, 1)) - w.matrix
+    balanced = all(v == Matrix.zeros(6, 1) for link, v in links.items() if link != mech.base)
+    idle = all(power(t, w) == 0 for (_, _, j), w in zip(mech.joints, stress, strict=True)
+               for t in j.twists.screws)
+    return balanced and idle
+
+
+def test_self_stresses_of_overconstrained_loops():
+    """The reactions of an overconstrained loop are determined up to its self-stresses:
+    ``self_stress=True`` gives a basis of them, as many as ``6 L - rank`` of the network
+    matrix (the statics dual of Davies 1981: the loop equations' left null space), each
+    balanced on every link and idle on every freedom; the particular reactions plus any
+    combination still balance the links.  The planar four-bar has 3 (its out-of-plane
+    force and moments), the Delta link by link 3 per parallelogram.  The checker rejects
+    a wrench perturbed in one joint."""
+    from screwsym.core.wrench import Wrench
+
+    mech = fourbar()
+    g = [0, Rational(-981, 100), 0]
+    w, basis = mech.joint_reactions([0], [Rational(3, 2)], [Rational(-2, 3)], g, self_stress=True)
+    mob = mech.mobility()
+    assert len(basis) == 6 * mob.loops - mob.rank == 3
+    assert w == mech.joint_reactions([0], [Rational(3, 2)], [Rational(-2, 3)], g)
+    assert all(is_self_stress(mech, b) for b in basis)
+    shaken = tuple(Wrench(*(r.matrix + 3 * b0.matrix - 2 * b2.matrix).reshape(2, 3).tolist())
+                   for r, b0, b2 in zip(w, basis[0], basis[2], strict=True))
+    difference = [Wrench(*(x.matrix - y.matrix).reshape(2, 3).tolist())
+                  for x, y in zip(shaken, w, strict=True)]
+    assert is_self_stress(mech, difference)
+    wrong = list(basis[1])
+    wrong[2] = Wrench(wrong[2].matrix[:3, 0], wrong[2].matrix[3:, 0] + Matrix([0, 0, 1]))
+    assert not is_self_stress(mech, wrong)
+    # the Delta link by link: five loops, three parallelograms
+    delta = Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)],
+                      base="base", inertias={"platform": SpatialInertia(3, [0, 0, -3], diag(1, 1, 2))})
+    _, basis = delta.joint_reactions([0, 7, 14], [1, -2, 0], [0, 0, 0], [0, 0, -10],
+                                     self_stress=True)
+    mob = delta.mobility()
+    assert len(basis) == 6 * mob.loops - mob.rank
+    assert all(is_self_stress(delta, b) for b in basis)
+
+
+def test_joint_reactions_piecewise_with_symbols():
+    """``conds="piecewise"``: the reactions of the four-bar whose coupler joint is at
+    ``(x, y)`` hold where the crank drives it (``nan`` where coupler and rocker are in line),
+    as columns in ray order; numbers put in give the numeric four-bar's wrenches."""
+    x, y = symbols("x y", real=True)
+    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
+    mech = Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
+                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
+                     base="ground", inertias=inert)
+    pw = mech.joint_reactions([0], [0], [0], [0, -10, 0], conds="piecewise")
+    assert all(c.shape == (6, 1) for c in pw)
+    assert any(isinstance(e, Piecewise) for e in pw[0])
+    assert all(e.subs({x: Rational(5, 2), y: 1}) is nan for e in pw[0] if isinstance(e, Piecewise))
+    numeric = mech.subs({x: 3, y: 3}).joint_reactions([0], [0], [0], [0, -10, 0])
+    assert [c.subs({x: 3, y: 3}) for c in pw] == [r.matrix for r in numeric]
+    # numbers: the condition is True and the wrenches come as without it
+    assert mech.subs({x: 3, y: 3}).joint_reactions([0], [0], [0], [0, -10, 0],
+                                                    conds="piecewise") == numeric
+    with pytest.raises(TypeError, match="self_stress: expected True or False"):
+        mech.joint_reactions([0], [0], [0], self_stress=1)
 
 
 def test_a_rod_between_two_spherical_joints_is_refused_clearly():
