@@ -10,16 +10,43 @@ twist system ``T_L`` contains ``T_M``; a mechanism of such limbs has the wanted
 motion iff the limbs' constraints together span ``W_M``.
 
 What is enumerated (:func:`limbs`) is a finite grammar of *limb types*: a
-sequence of ``kinds`` (R and P joints, at most ``max_joints``) with, for each
-joint, an axis direction label (joints with one label are parallel; a label may
-be one of the motion's own directions, the ``z`` of 3T1R; a prismatic joint's may
-be normal to it, "⊥z", kept only where the type with a generic direction there is
-not valid: the in-plane slides of planar chains) and, for each
+sequence of ``kinds`` (R and P joints and parallelograms Pa, at most ``max_joints``)
+with, for each joint, an axis direction label (joints with one label are parallel; a
+label may be one of the motion's own directions, the ``z`` of 3T1R; a prismatic joint's
+or a parallelogram's may be normal to it, "⊥z", kept only where the type with a generic
+direction there is not valid: the in-plane slides of planar chains) and, for each
 revolute, where its axis passes: anywhere, through the motion's centre (3R), or
-through the previous revolute's point (two such axes make a U joint).  Two types
+through the previous revolute's point (two such axes make a U joint).  With
+``perpendicular=True``, a sequence that fails with generic directions is tried again
+with one or two pairs of its labels made perpendicular ("4⟂1": joint 4's axis normal
+to joint 1's; "3⟂1, 3⟂2": joint 3's axis normal to the plane of joints 1 and 2; "2⟂z"),
+and kept with the fewest pairs that make it pass, so that a relation is named only
+where the motion needs it (the slides of Kong & Gosselin's spherical legs, normal to
+the axes of a planar sub-chain).  Two types
 are the same when a relabelling, the reversal of the limb (the same twists read
-from the platform), or a reordering of adjacent prismatic joints (translations
-commute) maps one to the other.  Every candidate is **checked**, not looked up:
+from the platform), or a reordering of adjacent prismatic joints and parallelograms
+(translations commute) maps one to the other.
+
+**Parallelograms.**  A planar parallelogram loop (four hinges along ``h``, two equal
+rods) moves its output bar on a *circular translation*: its orientation is kept and
+each point runs on a circle in the plane normal to ``h`` (Kong & Gosselin, *Type
+Synthesis of Parallel Mechanisms*, Springer 2007, who list the Pa among the joints of
+their limbs; the forearms of Clavel's Delta, "DELTA, a fast robot with parallel geometry",
+18th ISIR 1988, and of the H4, Pierrot & Company, "H4: a new family of 4-dof parallel
+robots", AIM 1999).  So a Pa is modelled as the library's compound pair
+:class:`~screwsym.systems.joints.Parallelogram`: one freedom, its twist at the instance
+the translation ``v = n x rod`` normal to ``h`` and to the rods, and a label that is the
+hinges' direction ``h``.  At first order it is the prismatic joint along ``v``; unlike
+one, ``v`` turns with the angle (``dv = n x v`` per unit angle), and that term enters
+the second-order check below (and :meth:`Mechanism.second_order`), so a Pa is accepted
+only where the turning of its translation stays inside the wanted motion.  The finite
+argument is the classical one: the output's orientation never changes, so a limb with
+a Pa has at every pose the twist system of the same type (shown in the tests by a
+parallelogram closed numerically a finite step away, its coupler's rotation the
+identity).  The Delta's (SS)² rod pairs are this Pa with the two rods' spins, idle
+freedoms that move no link but the rods.
+
+Every candidate is **checked**, not looked up:
 it is instantiated at a random integer (generic) geometry and kept iff, exactly,
 
 1. its twists are independent (no passive freedom) and contain ``T_M``;
@@ -27,9 +54,10 @@ it is instantiated at a random integer (generic) geometry and kept iff, exactly,
    is active iff ``T_M`` with the other joints' twists has the limb's rank);
 3. the motion extends to second order within ``T_M``: for every joint rate
    ``qdot`` with ``J qdot`` in ``T_M`` and every constraint wrench ``w`` of the
-   limb, ``sum_{i<j} w o [$_i, $_j] qdot_i qdot_j = 0`` (the derivative of the
-   spatial twist of a serial chain is ``J qddot + sum_{i<j} [$_i, $_j] qdot_i
-   qdot_j``, and a path in the subgroup has its derivative in ``T_M``).  This
+   limb, ``sum_{i<j} w o [$_i, $_j] qdot_i qdot_j + sum_k w o dv_k qdot_k^2 = 0``
+   (the derivative of the spatial twist of a serial chain is ``J qddot +
+   sum_{i<j} [$_i, $_j] qdot_i qdot_j``, plus ``dv_k qdot_k^2`` for a parallelogram
+   ``k``, and a path in the subgroup has its derivative in ``T_M``).  This
    rejects arrangements that have the motion only at the configuration drawn
    (an R_a R_b R_a R_b chain is 3T there and not a finite step away).
 
@@ -49,11 +77,11 @@ same in every limb, the one nearest the base that works) for which the
 Jacobian of :func:`~screwsym.systems.actuation.jacobian` is invertible at the
 instance (no actuation singularity there).
 
-What is not in the grammar: perpendicular relations between revolute axes and other
-angles, lines through two joints' points (a P along the line of two U centres), helical
-joints, parallelograms and other closed sub-chains (the Delta's), virtual
-chains for motions that are not subgroups (2R1T, 1T2R, 3T2R); see the notes of
-the functions.
+What is not in the grammar: angles other than parallel and perpendicular, three
+mutually perpendicular directions (at most two pairs are tried), lines through two
+joints' points (a P along the line of two U centres), helical joints, closed sub-chains
+other than the parallelogram, virtual chains for motions that are not subgroups (2R1T,
+1T2R, 3T2R); see the notes of the functions.
 
 References
 ==========
@@ -849,6 +877,9 @@ class Design(NamedTuple):
     #: its motions to second order (:meth:`Mechanism.second_order`): all of
     #: ``mobility.mobility``, one branch
     second_order: SecondOrder
+    #: every joint index that, actuated in every limb, makes the Jacobian invertible at the
+    #: instance (``mechanisms(..., every_actuation=True)``; otherwise ``actuated`` alone)
+    actuations: tuple = ()
 
     @property
     def name(self) -> str:
@@ -913,6 +944,7 @@ def _actuation_ok(mech: ParallelMechanism) -> bool:
 
 def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = ("R", "P"),
                max_joints: int = 5, seed: int = 0, actuate: bool = True,
+               perpendicular: bool = False, every_actuation: bool = False,
                budget: int = BUDGET) -> tuple[Design, ...]:
     """Symmetrical mechanisms of ``limbs`` equal limbs that give the motion ``mo``, certified.
 
@@ -923,7 +955,9 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     motions extend to second order in one branch
     (:meth:`~screwsym.systems.linkage.Mechanism.second_order`, Müller 2016).  With
     ``actuate``, the first joint index (from the base) that, actuated in every limb,
-    makes the Jacobian invertible at the instance is named (``None`` if none does).
+    makes the Jacobian invertible at the instance is named (``None`` if none does); with
+    ``every_actuation``, every such index is tried and listed in ``Design.actuations``.
+    ``perpendicular`` is passed to :func:`limbs`.
     At most ``budget`` units (a ``ValueError`` naming ``mechanisms`` beyond); each design is
     charged 200,000 units (its analysis takes about 0.1 s), so the default covers about a
     hundred limb types: the 152 of 3T1R with five joints need ``budget=10**8``.
@@ -941,6 +975,7 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     out = []
     with bounded(budget, "mechanisms", _MSG):
         pool = types if types is not None else _limbs(mo, kinds, max_joints, seed=seed,
+                                                          perpendicular=perpendicular,
                                                           budget=budget)
         for t in pool:
             if not isinstance(t, LimbType) or t.motion != mo:
@@ -953,15 +988,17 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
             so = Mechanism.from_parallel(mech).second_order()
             if _second_order_refusals(so, mo):
                 continue
-            act = None
-            if actuate and limbs * 1 + (6 - mo.dimension) == 6:
+            works: list[int] = []
+            if actuate and limbs == mo.dimension:  # one actuated joint per limb
                 for k in range(t.freedom):
                     charge(100_000)
                     if _actuation_ok(_mechanism(t, limbs, seed, k)):
-                        act = k
-                        break
+                        works.append(k)
+                        if not every_actuation:
+                            break
+            act = works[0] if works else None
             final = _mechanism(t, limbs, seed, act) if act is not None else mech
-            out.append(Design(t, final, mob, act, so))
+            out.append(Design(t, final, mob, act, so, tuple(works)))
     return tuple(out)
 
 
