@@ -103,6 +103,7 @@ from __future__ import annotations
 
 import random
 from fractions import Fraction
+from itertools import combinations_with_replacement
 from math import gcd
 from typing import Any, NamedTuple
 
@@ -880,11 +881,20 @@ class Design(NamedTuple):
     #: every joint index that, actuated in every limb, makes the Jacobian invertible at the
     #: instance (``mechanisms(..., every_actuation=True)``; otherwise ``actuated`` alone)
     actuations: tuple = ()
+    #: the limb types, base limb first, of a design of unequal limbs
+    #: (``mechanisms(..., mixed=True)``); ``()`` when every limb is ``limb``
+    limb_types: tuple = ()
 
     @property
     def name(self) -> str:
-        """``"3-UPU (1∥5, 2∥4)"``: the number of limbs and the limb type."""
-        return f"{len(self.mechanism.limbs)}-{self.limb.name}"
+        """``"3-UPU (1∥5, 2∥4)"``: the number of limbs and the limb type; for unequal limbs,
+        each type with its number, ``"2-PPP + 1-CRR (1∥2∥3∥4)"``."""
+        if not self.limb_types:
+            return f"{len(self.mechanism.limbs)}-{self.limb.name}"
+        counts: dict = {}
+        for t in self.limb_types:
+            counts[t.name] = counts.get(t.name, 0) + 1
+        return " + ".join(f"{k}-{n}" for n, k in counts.items())
 
     def __repr__(self) -> str:
         return f"Design({self.name}, actuated={self.actuated})"
@@ -925,11 +935,14 @@ def _placed(leg: Limb, Rm: ImmutableMatrix, shift: ImmutableMatrix, actuated: An
     return Limb(*joints, actuated=actuated)
 
 
-def _mechanism(t: LimbType, count: int, seed: int, actuated: Any) -> ParallelMechanism:
+def _mechanism(t: LimbType | tuple, count: int, seed: int, actuated: Any) -> ParallelMechanism:
+    """``count`` copies of ``t``, or the limbs of the types ``t`` (a tuple), each after the
+    first carried by a random placement that keeps the motion."""
+    kinds = t if isinstance(t, tuple) and not isinstance(t, LimbType) else (t,) * count
     rnd = random.Random(seed)
-    leg = t.instance(seed)
-    legs = [leg if i == 0 else _placed(leg, *_placement(t.motion, rnd), None)
-            for i in range(count)]
+    first = {k: k.instance(seed) for k in set(kinds)}
+    legs = [first[k] if i == 0 else _placed(first[k], *_placement(k.motion, rnd), None)
+            for i, k in enumerate(kinds)]
     if actuated is not None:
         legs = [Limb(*x.joints, actuated=actuated) for x in legs]
     return ParallelMechanism(*legs)
@@ -945,7 +958,7 @@ def _actuation_ok(mech: ParallelMechanism) -> bool:
 def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = ("R", "P"),
                max_joints: int = 5, seed: int = 0, actuate: bool = True,
                perpendicular: bool = False, every_actuation: bool = False,
-               budget: int = BUDGET) -> tuple[Design, ...]:
+               mixed: bool = False, budget: int = BUDGET) -> tuple[Design, ...]:
     """Symmetrical mechanisms of ``limbs`` equal limbs that give the motion ``mo``, certified.
 
     ``types`` are the limb types to try (default: :func:`limbs` of ``mo``, ``kinds`` and
@@ -957,7 +970,9 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     ``actuate``, the first joint index (from the base) that, actuated in every limb,
     makes the Jacobian invertible at the instance is named (``None`` if none does); with
     ``every_actuation``, every such index is tried and listed in ``Design.actuations``.
-    ``perpendicular`` is passed to :func:`limbs`.
+    ``perpendicular`` is passed to :func:`limbs`.  With ``mixed``, the designs are the
+    asymmetric ones instead: every multiset of ``limbs`` of the types, not all equal
+    (``Design.limb_types``; the actuated joint, the same index in every limb).
     At most ``budget`` units (a ``ValueError`` naming ``mechanisms`` beyond); each design is
     charged 200,000 units (its analysis takes about 0.1 s), so the default covers about a
     hundred limb types: the 152 of 3T1R with five joints need ``budget=10**8``.
@@ -977,11 +992,17 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
         pool = types if types is not None else _limbs(mo, kinds, max_joints, seed=seed,
                                                           perpendicular=perpendicular,
                                                           budget=budget)
+        pool = tuple(pool)
         for t in pool:
             if not isinstance(t, LimbType) or t.motion != mo:
                 raise TypeError(f"types: expected limb types of the motion {mo.name}, got {t!r}")
+        combos: Any = pool
+        if mixed:
+            combos = [c for c in combinations_with_replacement(pool, limbs) if len(set(c)) > 1]
+        for combo in combos:
+            t = combo[0] if mixed else combo
             charge(200_000)
-            mech = _mechanism(t, limbs, seed, None)
+            mech = _mechanism(combo, limbs, seed, None)
             mob = mech.mobility()
             if _mechanism_refusals(mob, mo):
                 continue
@@ -990,15 +1011,15 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
                 continue
             works: list[int] = []
             if actuate and limbs == mo.dimension:  # one actuated joint per limb
-                for k in range(t.freedom):
+                for k in range(min(x.freedom for x in combo) if mixed else t.freedom):
                     charge(100_000)
-                    if _actuation_ok(_mechanism(t, limbs, seed, k)):
+                    if _actuation_ok(_mechanism(combo, limbs, seed, k)):
                         works.append(k)
                         if not every_actuation:
                             break
             act = works[0] if works else None
-            final = _mechanism(t, limbs, seed, act) if act is not None else mech
-            out.append(Design(t, final, mob, act, so, tuple(works)))
+            final = _mechanism(combo, limbs, seed, act) if act is not None else mech
+            out.append(Design(t, final, mob, act, so, tuple(works), combo if mixed else ()))
     return tuple(out)
 
 

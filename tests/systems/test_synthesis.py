@@ -443,3 +443,21 @@ def test_perpendicular_relations_are_named_only_where_needed():
         names(limbs(motion("2T1R"), max_joints=3))
     assert names(limbs(motion("3T"), max_joints=4, perpendicular=True)) == \
         names(limbs(motion("3T"), max_joints=4))
+
+
+# ------------------------------------------------------------ asymmetric designs
+def test_mixed_designs_of_unequal_limbs_are_certified_too():
+    # the 3T limbs combine freely: each supplies couples only, and three limbs in general
+    # position span all three (Kong & Gosselin 2004); so every multiset of three of PPP,
+    # the 3-CRR's limb and the Delta-type limb, not all equal, is a 3T design: 10 - 3 = 7
+    mo = motion("3T")
+    pool = [t for t in limbs(mo, kinds=("R", "P", "Pa"), max_joints=4)
+            if t.name in ("PPP", "CRR (1∥2∥3∥4)", "RPaRR (1∥3∥4)")]
+    designs = mechanisms(mo, types=pool, mixed=True)
+    assert len(pool) == 3 and len(designs) == 7
+    assert "1-PPP + 1-CRR (1∥2∥3∥4) + 1-RPaRR (1∥3∥4)" in {d.name for d in designs}
+    for d in designs:
+        assert len(set(d.limb_types)) > 1 and len(d.mechanism.limbs) == 3
+        assert (d.mobility.mobility, d.mobility.motion, d.mobility.passive) == (3, "3T", 0)
+        assert d.actuated is not None
+    assert refusals(designs[-1].mechanism, mo) == ()
