@@ -516,6 +516,20 @@ class LimbType(NamedTuple):
         >>> leg = t.instance(seed=3)
         >>> t.name, leg.freedom, leg.constraints.rank
         ('PRRR (2∥3∥4)', 4, 2)
+
+        A parallelogram is built as the compound pair
+        :class:`~screwsym.systems.joints.Parallelogram` (its hinges along its label's
+        direction, its twist the translation of its output bar); a perpendicular relation
+        is kept:
+
+        >>> delta = LimbType(motion("3T"), (("R", 0, "g"), ("Pa", 1, "-"), ("R", 0, "g"),
+        ...                                 ("R", 0, "g")), ((0, 1),))
+        >>> leg = delta.instance()
+        >>> delta.name, [type(j).__name__ for j in leg.joints]
+        ('RPaRR (1∥3∥4, 2⟂1)', ['Revolute', 'Parallelogram', 'Revolute', 'Revolute'])
+        >>> pa, u = leg.joints[1], leg.joints[0].args[1]
+        >>> pa.normal.dot(u)     # the Delta's hinges, normal to the arm's axis
+        0
         """
         geom = self._generic(seed)
         joints: list[Joint] = []
