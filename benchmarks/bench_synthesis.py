@@ -45,14 +45,25 @@ ROWS = [
 ]
 
 
+#: the families the literature names, looked for in each row of their motion
+FAMILIES = {
+    "3T": ["PPP", "PRRR (2∥3∥4)", "CRR (1∥2∥3∥4)", "UPU (1∥5, 2∥4)", "RRRRR (1∥2∥3, 4∥5)",
+           "RPaRR (1∥3∥4)"],
+    "3R": ["RRR (1,2,3 through O)", "RRPRR (2∥4, 3⟂2, 1,5 through O)"],
+    "3T1R": ["PRRR (2∥3∥4∥z)", "URU (1∥5∥z, 2∥3∥4)", "RPaRR (1∥3∥4∥z)",
+             "RRPaRR (1∥z, 2∥4∥5)"],
+    "2T1R": ["RRR (1∥2∥3∥z)", "RPR (1∥3∥z, 2⊥z)"],
+}
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true", help="only the rows of at most 4 joints")
     ap.add_argument("--no-mechanisms", action="store_true", help="count limb types only")
     args = ap.parse_args()
     print("| motion | kinds | joints | ⟂ | limb types (by length) | CPU s | mechanisms "
-          "| actuated | CPU s |")
-    print("|---|---|---|---|---|---|---|---|---|")
+          "| actuated | CPU s | named families found |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for name, kinds, n, perp, count in ROWS:
         if args.quick and n > 4:
             continue
@@ -69,9 +80,11 @@ def main() -> None:
             t_mech = time.process_time() - t0
             mech = str(len(designs))
             act = str(sum(d.actuated is not None for d in designs))
+        have = {t.name for t in found}
+        named = [f for f in FAMILIES[name] if f in have]
         print(f"| {name} | {','.join(kinds)} | ≤{n} | {'yes' if perp else 'no'} | {len(found)} "
-              f"({'+'.join(map(str, by))}) | {t_limbs:.1f} | {mech} | {act} | {t_mech:.1f} |",
-              flush=True)
+              f"({'+'.join(map(str, by))}) | {t_limbs:.1f} | {mech} | {act} | {t_mech:.1f} | "
+              f"{'; '.join(named) or '-'} |", flush=True)
 
 
 if __name__ == "__main__":
