@@ -75,7 +75,9 @@ rotations about the centre for 3R, rotations about ``z`` and translations for
 twist system with no passive freedom; it names an actuated joint per limb (the
 same in every limb, the one nearest the base that works) for which the
 Jacobian of :func:`~screwsym.systems.actuation.jacobian` is invertible at the
-instance (no actuation singularity there).
+instance (no actuation singularity there), or every such joint
+(``every_actuation=True``).  With ``mixed=True`` it assembles unequal limbs instead
+(every multiset of the limb types, not all equal), certified the same way.
 
 What is not in the grammar: angles other than parallel and perpendicular, three
 mutually perpendicular directions (at most two pairs are tried), lines through two
