@@ -393,7 +393,9 @@ def test_the_h4_type_limb_with_the_plate_revolute_folded_in():
     assert h4.name == "RRPaRR (1∥z, 2∥4∥5)"
     (d,) = mechanisms(mo, 4, types=[h4], every_actuation=True)
     assert (d.mobility.mobility, d.mobility.motion, d.mobility.passive) == (4, "3T1R", 0)
-    assert d.actuations == (1, 2, 3, 4)  # the revolute about z alone cannot drive it
+    # every joint but the revolute about z drives it; 4 is the H4's motor (the arm's revolute,
+    # on the base side of the leg: the type is read from the platform)
+    assert d.actuations == (1, 2, 3, 4)
     # and a Pa in a planar chain about z: the 4-joint Schoenflies limb R_z Pa R_z R_z
     found = limbs(mo, kinds=("R", "Pa"), max_joints=4)
     assert "RPaRR (1∥3∥4∥z)" in names(found) and len(found) == 29
