@@ -547,6 +547,12 @@ class LimbType(NamedTuple):
         return Limb(*joints, actuated=actuated)
 
     def _generic(self, seed: int) -> list:
+        own = {d for _, d, _ in self.joints if d >= 0}
+        for pair in self.perpendicular:
+            if (len(pair) != 2 or not set(pair) <= own | set(range(len(self.motion.directions)))
+                    or not set(pair) & own or pair[0] == pair[1]):
+                raise ValueError(f"perpendicular: expected pairs of two direction labels of the "
+                                 f"joints (or of the motion's), got {pair!r}")
         G = _motion_rows(self.motion)
         for attempt in range(20):  # a random point is generic but on a proper subset
             geom = _geometry(self.joints, self.motion, 7919 * seed + attempt, self.perpendicular)

@@ -445,6 +445,8 @@ def test_spherical_legs_with_a_slide_need_a_perpendicular_relation():
                           ("R", 4, "c")), ((0, 2), (1, 2)))
     assert plane.name == "PPRRR (3⟂1, 3⟂2, 4,5 through O)"
     assert refusals(plane.instance(), mo) == ()
+    with pytest.raises(ValueError, match="perpendicular: expected pairs of two direction"):
+        LimbType(mo, seq, ((1, 7),)).instance()  # no joint has the label 7
 
 
 def test_perpendicular_relations_are_named_only_where_needed():
