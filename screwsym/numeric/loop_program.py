@@ -1,0 +1,687 @@
+r"""A closed loop's mass matrix and inverse dynamics as straight-line programs.
+
+:func:`loop_dynamics_program` writes the dynamics of
+:meth:`Mechanism.mass_matrix <screwsym.systems.linkage.Mechanism.mass_matrix>` and
+:meth:`Mechanism.inverse_dynamics <screwsym.systems.linkage.Mechanism.inverse_dynamics>`
+(see :mod:`screwsym.systems.loop_dynamics` for the formulas) at a configuration given
+by symbols, not as closed forms but as a :class:`~screwsym.motion.newton_euler.Program`:
+an ordered list of assignments ``t = expr``, one per intermediate quantity, as the
+customised Newton–Euler programs of a serial chain are
+(:mod:`screwsym.motion.newton_euler`; Khalil & Kleinfinger 1987).  Nothing is expanded
+and no expression is simplified, so a symbolic pose costs what a numeric one does: the
+program is written in time linear in its length.
+
+The program, in order:
+
+1. the joints' twists at the configuration (each non-constant entry assigned once) and
+   Davies' network matrix ``A`` (Davies 1981), in the loops of a spanning tree;
+2. an LU factorisation, sparse, of the passive joints' columns ``A_p`` (Gaussian
+   elimination on the loops' rows, with the pivots chosen once, when the program is
+   written: a constant pivot first, else the one of least Markowitz cost, among those
+   that are non-zero at a random exact point of the configuration's symbols).  Each
+   loop's rows touch only its own joints, so the elimination stays within the loops as
+   long as it can; the rows left over are consequences of the others on a closed
+   configuration and are not computed;
+3. the passive rates from ``A_p qd_p = -A_a qd_a`` and the passive accelerations from
+   the differentiated closure ``A_p qdd_p = -A_a qdd_a - c(qd)``, ``c`` the loops'
+   brackets (Müller 2016), accumulated along each loop as
+   ``sum_v [V_{<v}, X_v] qd_v``, ``V_{<v}`` the partial twist before joint ``v``
+   (:func:`~screwsym.core.formulas.bracket`: one bracket per joint, not per pair);
+4. each link's twist and twist rate along the spanning tree from the base (a forward
+   Newton–Euler pass), and the Newton–Euler wrench ``M V' + [V, M V] - W`` of each link
+   with an inertia;
+5. the virtual power: the wrenches summed over each subtree (a backward pass) give the
+   tree joints' forces ``f``; then ``tau = G^T f = f_a - A_a^T lambda`` with
+   ``A_p^T lambda = f_p`` (one transposed solve with the same factors, ``lambda`` the
+   loops' multipliers), instead of the ``k`` solves of ``G``.  The mass matrix is
+   ``H = sum_l A_l^T Delta M_l A_l`` with ``A_l = P_l G`` (``k`` solves for ``G``).
+
+Where it divides.  Each pivot ``u`` the elimination divides by that is not a number is a
+condition of the program (:attr:`LoopProgram.conditions`, ``Ne(u, 0)``): their product is
+``± det A_p[R]``, the minor on which the actuated rates determine the motion
+(:meth:`Mechanism.actuation_condition
+<screwsym.systems.linkage.Mechanism.actuation_condition>`), and the others are the
+leading minors of the elimination order.  Every output is multiplied by ``ok``, ``1``
+where all of them hold and ``nan`` elsewhere, so the generated functions give ``nan``
+where a pivot vanishes, never a wrong number (a pivot near zero, off a singularity of
+the mechanism, loses accuracy: the order is fixed when the program is written).
+
+Exact: evaluated at exact values (:meth:`Program.evaluate
+<screwsym.motion.newton_euler.Program.evaluate>`) a program gives the exact
+``mass_matrix`` and ``inverse_dynamics`` of the mechanism at those values wherever its
+conditions hold and the values describe a closed configuration.
+
+References
+==========
+
+J. M. Davies, "Kirchhoff's circulation law applied to multi-loop kinematic chains",
+Mech. Mach. Theory 16 (1981) 171-183.  A. Müller, "Local kinematic analysis of
+closed-loop linkages", J. Mechanisms Robotics 8(4) (2016) 041013.  W. Khalil,
+J.-F. Kleinfinger, "Minimum operations and minimum parameters of the dynamic models of
+tree structure robots", IEEE J. Robotics and Automation 3(6) (1987).  H. M. Markowitz,
+"The elimination form of the inverse and its application to linear programming",
+Management Science 3 (1957) 255-269.  L.-W. Tsai, *Robot Analysis*, Wiley 1999, Chapter 9.
+"""
+
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+from fractions import Fraction
+from functools import lru_cache
+from typing import Any
+
+import mpmath
+from sympy import (
+    Add,
+    Expr,
+    ImmutableMatrix,
+    Mul,
+    Ne,
+    Piecewise,
+    S,
+    Symbol,
+    nan,
+    sympify,
+)
+
+from ..algebra.budget import BUDGET, bounded, charge
+from ..core.checks import check_choice, check_count, check_sequence, check_vector
+from ..core.formulas import bracket
+from ..motion.newton_euler import Program
+from ..systems.topology import bare_network, spanning_tree
+
+__all__ = ["LoopProgram", "loop_dynamics_program"]
+
+#: what :func:`loop_dynamics_program` writes
+WHATS = ("inverse_dynamics", "mass_matrix")
+
+#: the digits of the sample point where it is not rational (an angle's sine, a root)
+DIGITS = 60
+
+_MESSAGE = ("{name}: writing the program needs more than budget={budget} units; pass a "
+            "larger budget")
+
+
+@dataclass(frozen=True)
+class LoopProgram(Program):
+    r"""A closed loop's straight-line :class:`~screwsym.motion.newton_euler.Program`, with
+    the conditions it assumes.
+
+    ``conditions``: ``Ne(u, 0)`` for each pivot ``u`` (a symbol of the program) the
+    elimination divides by; where one fails, the outputs are ``nan`` (see
+    :mod:`~screwsym.numeric.loop_program`).  ``pivots`` the pivots themselves, in order.
+
+    >>> from screwsym.systems.joints import R
+    >>> from screwsym.systems.linkage import Mechanism
+    >>> from screwsym.core.inertia import SpatialInertia
+    >>> from sympy import symbols
+    >>> x, y = symbols("x y", real=True)
+    >>> z = [0, 0, 1]
+    >>> four = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+    ...                   ("crank", "coupler", R([1, 2, 0], z)),
+    ...                   ("coupler", "rocker", R([x, y, 0], z)),
+    ...                   ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+    ...                  inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0])})
+    >>> p = loop_dynamics_program(four, [0], [x, y], "mass_matrix")
+    >>> len(p.conditions), p.evaluate([3, 3])
+    (1, Matrix([[5]]))
+    >>> p.evaluate([1, 2])             # coupler and rocker in line: nan, not a number
+    Matrix([[nan]])
+    """
+
+    conditions: tuple = ()
+    pivots: tuple = ()
+
+    def condition_values(self, *values: Any) -> tuple:
+        """The pivots' values at ``values`` (as for :meth:`evaluate`): the program holds
+        where none is zero."""
+        env = dict(zip([x for a in self.arguments for x in a],
+                       [sympify(v) for vs in values for v in vs], strict=True))
+        for t, e in self.assignments:
+            env[t] = e.xreplace(env)
+        return tuple(env.get(u, u) for u in self.pivots)
+
+
+# ---------------------------------------------------------------- writing
+class _Writer:
+    """Appends assignments; a number, a symbol, its negative or a right-hand side seen before
+    is not assigned again."""
+
+    def __init__(self, taken: set[str]) -> None:
+        self.assigns: list[tuple[Symbol, Expr]] = []
+        self.seen: dict[Expr, Symbol] = {}
+        self.taken = set(taken)
+
+    def let(self, expr: Any, name: str) -> Expr:
+        e = sympify(expr)
+        if not e.free_symbols or not e.args or (
+                isinstance(e, Mul) and len(e.args) == 2 and e.args[0].is_Number
+                and not e.args[1].args):
+            return e
+        if e in self.seen:
+            return self.seen[e]
+        if -e in self.seen:
+            return -self.seen[-e]
+        charge(10)
+        base, k = name, 1
+        while name in self.taken:
+            k += 1
+            name = f"{base}_{k}"
+        self.taken.add(name)
+        t = Symbol(name, real=True)
+        self.assigns.append((t, e))
+        self.seen[e] = t
+        return t
+
+    def vec(self, v: Any, name: str, parts: str = "abcdef") -> list:
+        return [self.let(x, f"{name}{c}") for x, c in zip(v, parts, strict=False)]
+
+
+_SIX = ("wx", "wy", "wz", "vx", "vy", "vz")
+_SIX_W = ("fx", "fy", "fz", "cx", "cy", "cz")
+
+
+def _six(W: _Writer, v: Any, name: str, parts: tuple = _SIX) -> list:
+    return [W.let(x, name + c) for x, c in zip(v, parts, strict=True)]
+
+
+def _power(t: list, w: list) -> Expr:
+    """``t^T Delta w``: the power of the wrench ``w`` on the twist ``t`` (1.45)."""
+    return Add(*(t[i] * w[3 + i] + t[3 + i] * w[i] for i in range(3)))
+
+
+def _live(assigns: list, outputs: list) -> tuple:
+    """The assignments the outputs need, in order (dead code removed)."""
+    need = set().union(*(sympify(e).free_symbols for e in outputs))
+    keep = []
+    for t, e in reversed(assigns):
+        if t in need:
+            keep.append((t, e))
+            need |= e.free_symbols
+    return tuple(reversed(keep))
+
+
+# ---------------------------------------------------------------- the sample point
+def _sample(symbols: tuple, at: Any) -> dict:
+    """A point of the configuration's symbols: ``at`` (a dict) or random rationals."""
+    if at is not None:
+        if not isinstance(at, dict):
+            raise TypeError(f"at: expected a dict {{symbol: value}}, got {type(at).__name__}")
+        out = {sympify(k): sympify(v) for k, v in at.items()}
+        missing = [s for s in symbols if s not in out]
+        if missing:
+            raise ValueError(f"at: no value for {sorted(map(str, missing))}")
+        return out
+    rng = random.Random(35)
+    return {s: S(rng.randint(-997, 997)) / rng.randint(211, 997) for s in symbols}
+
+
+class _Values:
+    """Exact rationals where every sampled entry is one, else ``DIGITS``-digit floats."""
+
+    def __init__(self, exprs: list, point: dict) -> None:
+        vals = [e.xreplace(point) if hasattr(e, "xreplace") else sympify(e) for e in exprs]
+        self.exact = all(v.is_Rational for v in vals)
+        self.table: dict = {}
+        for e, v in zip(exprs, vals, strict=True):
+            self.table[e] = self.number(v)
+
+    def number(self, v: Any) -> Any:
+        if self.exact:
+            return Fraction(int(v.p), int(v.q))
+        with mpmath.workdps(DIGITS + 10):
+            return mpmath.mpf(str(sympify(v).evalf(DIGITS + 10)))
+
+    def zero(self, v: Any) -> bool:
+        if self.exact:
+            return bool(v == 0)
+        return bool(abs(v) < mpmath.mpf(10) ** (-DIGITS // 2))
+
+
+# ---------------------------------------------------------------- the elimination
+class _LU:
+    """The sparse LU factors of the passive columns (module docstring, step 2)."""
+
+    def __init__(self, W: _Writer, rows: dict, n: int, values: _Values) -> None:
+        # rows: r -> {c: (expr, value)} over the passive columns 0..n-1
+        rows = {r: dict(v) for r, v in rows.items() if v}
+        self.prow: list[int] = []  # pivot row of step t
+        self.pcol: list[int] = []  # pivot column of step t
+        self.U: list[dict] = []  # step t: {column: expr} of the pivot row (after t)
+        self.inv: list[Expr] = []
+        self.pivots: list[Expr] = []  # the non-constant pivots
+        self.mult: dict[int, dict[int, Expr]] = {}  # row -> {step: multiplier}
+        free_cols = set(range(n))
+        with mpmath.workdps(DIGITS + 10):
+            for t in range(n):
+                colcount = {c: 0 for c in free_cols}
+                for row in rows.values():
+                    for c in row:
+                        colcount[c] += 1
+                best = None
+                for r, row in rows.items():
+                    for c, (e, v) in row.items():
+                        if values.zero(v):
+                            continue
+                        key = (bool(e.free_symbols), (len(row) - 1) * (colcount[c] - 1), r, c)
+                        if best is None or key < best[0]:
+                            best = (key, r, c)
+                if best is None:
+                    raise ValueError(
+                        "mech: an actuation singularity at the sample point of the symbols: the "
+                        f"passive joints' columns of the network matrix have rank {t} < {n} "
+                        "there (pass at= a point of the symbols where the actuated joints "
+                        "determine the motion)")
+                _, r, c = best
+                prow = rows.pop(r)
+                free_cols.discard(c)
+                u, uv = prow.pop(c)
+                if u.free_symbols:
+                    inv = W.let(1 / u, f"inv{t + 1}")
+                    self.pivots.append(u)
+                else:
+                    inv = 1 / u
+                invv = 1 / uv
+                self.prow.append(r)
+                self.pcol.append(c)
+                self.inv.append(inv)
+                self.U.append({j: e for j, (e, _) in prow.items()})
+                for i, row in rows.items():
+                    if c not in row:
+                        continue
+                    a, av = row.pop(c)
+                    m = W.let(a * inv, f"m{i + 1}_{t + 1}")
+                    mv = av * invv
+                    self.mult.setdefault(i, {})[t] = m
+                    for j, (b, bv) in prow.items():
+                        old, oldv = row.get(j, (S.Zero, 0))
+                        new = W.let(old - m * b, f"a{i + 1}_{j + 1}")
+                        if new == 0:
+                            row.pop(j, None)
+                        else:
+                            row[j] = (new, oldv - mv * bv)
+                charge(100 * len(rows))
+        self.n = n
+
+    def solve(self, W: _Writer, b: dict, name: str, labels: list) -> dict:
+        """``A_p x = b`` (``b`` over the rows): ``x`` over the passive columns (named
+        ``name`` and ``labels[column]``)."""
+        y: list[Expr] = []
+        for t, r in enumerate(self.prow):
+            m = self.mult.get(r, {})
+            y.append(W.let(b.get(r, S.Zero) - Add(*(m[s] * y[s] for s in m)), f"{name}y{t + 1}"))
+        x: dict[int, Expr] = {}
+        for t in reversed(range(self.n)):
+            rest = Add(*(e * x[j] for j, e in self.U[t].items()))
+            x[self.pcol[t]] = W.let((y[t] - rest) * self.inv[t], f"{name}{labels[self.pcol[t]]}")
+        return x
+
+    def solve_transposed(self, W: _Writer, g: dict, name: str) -> dict:
+        """``A_p^T z = g`` (``g`` over the passive columns): ``z`` over the pivot rows."""
+        w: list[Expr] = []
+        for t in range(self.n):
+            c = self.pcol[t]
+            rest = Add(*(self.U[s].get(c, S.Zero) * w[s] for s in range(t)))
+            w.append(W.let((g.get(c, S.Zero) - rest) * self.inv[t], f"{name}w{t + 1}"))
+        z: list[Expr] = [S.Zero] * self.n
+        below: dict[int, list] = {}
+        for s, r in enumerate(self.prow):
+            for t, m in self.mult.get(r, {}).items():
+                below.setdefault(t, []).append((s, m))
+        for t in reversed(range(self.n)):
+            z[t] = W.let(w[t] - Add(*(m * z[s] for s, m in below.get(t, []))),
+                         f"{name}{self.prow[t] + 1}")
+        return {r: z[t] for t, r in enumerate(self.prow)}
+
+
+# ---------------------------------------------------------------- the program
+def _seq(net: Any, tw: list, acc: list, e: int, s: int) -> list:
+    """Joint ``e``'s freedoms along a chain in direction ``s``: (freedom, X, Y or None)."""
+    g = net.graph
+    idx = list(range(len(tw[e])))
+    if s < 0:
+        idx.reverse()
+    out = []
+    for k in idx:
+        X = [s * x for x in tw[e][k]]
+        Y = None if acc[e][k] is None else [s * x for x in acc[e][k]]
+        out.append((g.offsets[e] + k, X, Y))
+    return out
+
+
+def _rate_step(W: _Writer, V: list, Vd: list | None, X: list, Y: list | None, qd: Expr,
+               qdd: Expr | None, name: str) -> tuple[list, list | None]:
+    """One freedom along a chain: ``V' = V + X qd`` and
+    ``V'd = Vd + X qdd + [V, X] qd + Y qd**2`` (``Vd`` None: rates only)."""
+    Vn = _six(W, [a + b * qd for a, b in zip(V, X, strict=True)], name + "V")
+    if Vd is None:
+        return Vn, None
+    br = bracket(V, X) if any(x != 0 for x in V) else [S.Zero] * 6
+    br = _six(W, list(br), name + "B")
+    new = [a + (b * qdd if qdd is not None else 0) + c * qd for a, b, c in zip(Vd, X, br, strict=True)]
+    if Y is not None:
+        new = [a + y * qd**2 for a, y in zip(new, Y, strict=True)]
+    return Vn, _six(W, new, name + "A")
+
+
+def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any,
+             at: Any) -> LoopProgram:
+    net = bare_network(mech)
+    graph = net.graph
+    F = net.A.cols
+    k = len(actuated)
+    offsets = graph.offsets
+    act_f = []
+    for a in actuated:
+        if graph.edges[a][2].freedom != 1:
+            raise ValueError(f"actuated: joint {a} has {graph.edges[a][2].freedom} freedoms; "
+                             "an actuated joint has one")
+        act_f.append(offsets[a])
+    if len(set(act_f)) != k:
+        raise ValueError("actuated: a joint is given twice")
+    passive = [f for f in range(F) if f not in act_f]
+    n = len(passive)
+    pindex = {f: i for i, f in enumerate(passive)}
+    labels = [f + 1 for f in passive]  # the passive joints' rates are named by freedom
+    taken = {s.name for s in symbols}
+    names = []
+    for base in ("qd", "qdd"):
+        row = []
+        for i in range(k):
+            nm = f"{base}{i + 1}"
+            while nm in taken:
+                nm += "'"
+            row.append(Symbol(nm, real=True))
+        names.append(row)
+    qda, qdda = names
+    W = _Writer(taken | {s.name for s in qda + qdda})
+
+    # 1. the twists, and the network matrix on them
+    tw = [[_six(W, t, f"S{offsets[e] + k_ + 1}") for k_, t in enumerate(ts)]
+          for e, ts in enumerate(net.twists)]
+    acc = [[None if y is None else _six(W, y, f"Y{offsets[e] + k_ + 1}")
+            for k_, y in enumerate(ys)] for e, ys in enumerate(net.accel)]
+    entries: dict[int, dict[int, Expr]] = {}
+    for i, loop in enumerate(graph.loops):
+        for e, s in loop:
+            for k_, t in enumerate(tw[e]):
+                for r in range(6):
+                    if t[r] != 0:
+                        row = entries.setdefault(6 * i + r, {})
+                        row[offsets[e] + k_] = row.get(offsets[e] + k_, S.Zero) + s * t[r]
+    # the values at the sample point of the entries of A_p
+    point = _sample(symbols, at)
+    base_exprs = {e for row in entries.values() for e in row.values()}
+    subs = dict(W.assigns)
+    raw = {e: e.xreplace(subs) for e in base_exprs}
+    vals = _Values(list(raw.values()), point)
+    Ap = {r: {pindex[c]: (e, vals.table[raw[e]]) for c, e in row.items()
+              if c in pindex and e != 0} for r, row in entries.items()}
+    lu = _LU(W, Ap, n, vals)
+    Aa = {r: [entries.get(r, {}).get(f, S.Zero) for f in act_f] for r in lu.prow}
+
+    bodies = [(graph_index(graph, p.args[0]), p.args[1]) for p in mech.inertia_pairs]
+    parent: dict[int, tuple] = {}
+    for link, path in enumerate(graph.paths):
+        if path:
+            e, s = path[-1]
+            a, b, _ = graph.edges[e]
+            parent[link] = ((a if s > 0 else b), e, s)
+
+    if what == "mass_matrix":
+        # G: the passive rates per actuated rate (k solves)
+        G: dict[int, list] = {f: [S.One if f == af else S.Zero for af in act_f] for f in act_f}
+        cols = [lu.solve(W, {r: -Aa[r][c] for r in lu.prow}, f"G{c + 1}_", labels)
+                for c in range(k)]
+        for f in passive:
+            G[f] = [cols[c][pindex[f]] for c in range(k)]
+        Al: dict[int, list] = {0: [[S.Zero] * 6 for _ in range(k)]}
+
+        def twist_per_rate(link: int) -> list:
+            if link in Al:
+                return Al[link]
+            p, e, s = parent[link]
+            cur = [list(v) for v in twist_per_rate(p)]
+            for f, X, _ in _seq(net, tw, acc, e, s):
+                for c in range(k):
+                    if G[f][c] != 0:
+                        cur[c] = [a + x * G[f][c] for a, x in zip(cur[c], X, strict=True)]
+            Al[link] = [_six(W, cur[c], f"J{link}_{c + 1}") for c in range(k)]
+            return Al[link]
+
+        H: list[list[Any]] = [[S.Zero] * k for _ in range(k)]
+        for link, I in bodies:
+            J = twist_per_rate(link)
+            M = [[W.let(I.matrix[i, j], f"M{link}_{i + 1}{j + 1}") for j in range(6)]
+                 for i in range(6)]
+            MJ = [_six(W, [Add(*(M[i][j] * J[c][j] for j in range(6))) for i in range(6)],
+                       f"MJ{link}_{c + 1}", _SIX_W) for c in range(k)]
+            for i in range(k):
+                for j in range(i, k):
+                    H[i][j] += _power(J[i], MJ[j])
+        out = [[None] * k for _ in range(k)]
+        for i in range(k):
+            for j in range(i, k):
+                out[i][j] = out[j][i] = W.let(H[i][j], f"H{i + 1}{j + 1}")
+        flat = [x for row in out for x in row]
+        shape = (k, k)
+    else:
+        g = check_vector(gravity, "gravity")
+        # 3. the passive rates and accelerations
+        xs = lu.solve(W, {r: -Add(*(Aa[r][c] * qda[c] for c in range(k))) for r in lu.prow},
+                      "dq", labels)
+        qd: list[Any] = [S.Zero] * F
+        for c, f in enumerate(act_f):
+            qd[f] = qda[c]
+        for f in passive:
+            qd[f] = xs[pindex[f]]
+        crow: dict[int, Expr] = {}
+        for i, loop in enumerate(graph.loops):
+            if not any(6 * i + r in lu.prow for r in range(6)):
+                continue
+            V, Vd = [S.Zero] * 6, [S.Zero] * 6
+            for e, s in loop:
+                for f, X, Y in _seq(net, tw, acc, e, s):
+                    V, Vd = _rate_step(W, V, Vd, X, Y, qd[f], None, f"L{i + 1}_{f + 1}")
+            for r in range(6):
+                crow[6 * i + r] = Vd[r]
+        ys = lu.solve(W, {r: -Add(*(Aa[r][c] * qdda[c] for c in range(k))) - crow[r]
+                          for r in lu.prow}, "ddq", labels)
+        qdd: list[Any] = [S.Zero] * F
+        for c, f in enumerate(act_f):
+            qdd[f] = qdda[c]
+        for f in passive:
+            qdd[f] = ys[pindex[f]]
+        # 4. the links' twists and twist rates, and the wrenches of the bodies
+        state: dict[int, tuple] = {0: ([S.Zero] * 6, [S.Zero] * 6)}
+
+        def motion(link: int) -> tuple:
+            if link in state:
+                return state[link]
+            p, e, s = parent[link]
+            V, Vd = motion(p)
+            for f, X, Y in _seq(net, tw, acc, e, s):
+                V, Vd = _rate_step(W, V, Vd, X, Y, qd[f], qdd[f], f"l{link}_{f + 1}")
+            state[link] = (V, Vd)
+            return state[link]
+
+        wrench: dict[int, list] = {}
+        for link, I in bodies:
+            V, Vd = motion(link)
+            M = [[W.let(I.matrix[i, j], f"M{link}_{i + 1}{j + 1}") for j in range(6)]
+                 for i in range(6)]
+            mom = _six(W, [Add(*(M[i][j] * V[j] for j in range(6))) for i in range(6)],
+                       f"h{link}", _SIX_W)
+            br = bracket(V, mom)
+            weight = list(I.gravity_wrench(g).matrix)
+            D = [Add(*(M[i][j] * Vd[j] for j in range(6))) + br[i] - weight[i]
+                 for i in range(6)]
+            wrench[link] = _six(W, D, f"D{link}", _SIX_W)
+        # 5. the subtree wrenches, the tree joints' forces and the virtual power
+        children: dict[int, list] = {}
+        for link, (p, _, _) in parent.items():
+            children.setdefault(p, []).append(link)
+        sub: dict[int, list | None] = {}
+
+        def subtree(link: int) -> list | None:
+            if link in sub:
+                return sub[link]
+            parts = [wrench[link]] if link in wrench else []
+            parts += [w for c in children.get(link, []) if (w := subtree(c)) is not None]
+            sub[link] = (None if not parts else
+                         _six(W, [Add(*(w[i] for w in parts)) for i in range(6)],
+                              f"W{link}", _SIX_W))
+            return sub[link]
+
+        force: dict[int, Expr] = {}
+        for link, (_, e, s) in parent.items():
+            w = subtree(link)
+            if w is None:
+                continue
+            for f, X, _ in _seq(net, tw, acc, e, s):
+                force[f] = W.let(_power(X, w), f"f{f + 1}")
+        lam = lu.solve_transposed(W, {pindex[f]: v for f, v in force.items() if f in pindex},
+                                  "lam")
+        flat = [W.let(force.get(f, S.Zero) - Add(*(Aa[r][c] * lam[r] for r in lu.prow)),
+                      f"tau{c + 1}") for c, f in enumerate(act_f)]
+        shape = (k, 1)
+    # where a pivot vanishes: nan, in every output
+    conditions = tuple(Ne(u, 0) for u in lu.pivots)
+    if conditions:
+        ok = Symbol("ok", real=True)
+        cond = conditions[0] if len(conditions) == 1 else _all(conditions)
+        W.assigns.append((ok, Piecewise((S.One, cond), (nan, True))))
+        flat = [ok * x for x in flat]
+    outputs = ImmutableMatrix(*shape, flat)
+    arguments: tuple = (ImmutableMatrix(list(symbols)),)
+    if what == "inverse_dynamics":
+        arguments += (ImmutableMatrix(qda), ImmutableMatrix(qdda))
+    return LoopProgram(arguments, _live(W.assigns, flat), outputs,
+                       "tau" if what == "inverse_dynamics" else "H", conditions,
+                       tuple(lu.pivots))
+
+
+def _all(conditions: tuple) -> Any:
+    from sympy import And
+
+    return And(*conditions)
+
+
+def graph_index(graph: Any, link: Any) -> int:
+    return int(graph.index[link])
+
+
+@lru_cache(maxsize=32)
+def _cached(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any,
+            budget: int) -> LoopProgram:
+    with bounded(budget, "loop_dynamics_program", _MESSAGE):
+        return _program(mech, actuated, symbols, what, gravity, None)
+
+
+def loop_dynamics_program(mech: Any, actuated: Any, symbols: Any,
+                          what: str = "inverse_dynamics", gravity: Any = None, *,
+                          at: Any = None, budget: int = BUDGET) -> LoopProgram:
+    r"""The closed loop's inverse dynamics or mass matrix as a straight-line program.
+
+    Explanation
+    ===========
+
+    ``mech`` a :class:`~screwsym.systems.linkage.Mechanism` with inertias, ``actuated``
+    the actuated joints' numbers (one freedom each, as many as the mobility),
+    ``symbols`` the symbols its configuration is given in (the program's first
+    argument ``p``).  ``what="inverse_dynamics"`` (arguments ``p, qd, qdd``, the
+    actuated rates and accelerations; output ``tau``, ``k x 1``) or ``"mass_matrix"``
+    (argument ``p``; output ``H``, ``k x k``).  ``gravity`` numbers or expressions in
+    ``symbols`` (default ``(0, 0, -9.81)``, exactly ``-981/100``).  The pivots are chosen at
+    ``at`` (a dict ``{symbol: value}`` of a configuration where the actuated joints
+    determine the motion; default a seeded random rational point).  See
+    :mod:`~screwsym.numeric.loop_program` for the program's steps and its
+    :attr:`~LoopProgram.conditions`.  Cached per mechanism, actuation, symbols, ``what``
+    and gravity (not with ``at``).  :func:`screwsym.lambdify` compiles it;
+    :func:`~screwsym.numeric.loop_dynamics.loop_dynamics_functions` with
+    ``form="program"`` does so for every back end.
+
+    Examples
+    ========
+
+    The four-bar of :meth:`Mechanism.inverse_dynamics
+    <screwsym.systems.linkage.Mechanism.inverse_dynamics>` with its coupler-rocker joint
+    at ``(x, y)``: at ``(3, 3)`` the program gives that method's ``10/7``, exactly.
+
+    >>> from sympy import symbols
+    >>> from screwsym.core.inertia import SpatialInertia
+    >>> from screwsym.systems.joints import R
+    >>> from screwsym.systems.linkage import Mechanism
+    >>> x, y = symbols("x y", real=True)
+    >>> z = [0, 0, 1]
+    >>> four = Mechanism([("ground", "crank", R([0, 0, 0], z)),
+    ...                   ("crank", "coupler", R([1, 2, 0], z)),
+    ...                   ("coupler", "rocker", R([x, y, 0], z)),
+    ...                   ("rocker", "ground", R([4, 0, 0], z))], base="ground",
+    ...                  inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+    ...                            "rocker": SpatialInertia.point_mass(2, [x, y, 0])})
+    >>> tau = loop_dynamics_program(four, [0], [x, y], gravity=[0, -10, 0])
+    >>> tau.evaluate([3, 3], [0], [0])
+    Matrix([[10/7]])
+    >>> tau.conditions
+    (Ne(a4_3, 0),)
+    >>> tau.operations()
+    Operations(multiplications=..., additions=..., functions=0)
+
+    Parameters
+    ==========
+
+    mech : Mechanism
+    actuated : sequence of int
+    symbols : sequence of Symbol
+    what : {"inverse_dynamics", "mass_matrix"}
+    gravity : 3 numbers or expressions in ``symbols``
+    at : dict, optional
+    budget : int
+
+    See Also
+    ========
+
+    screwsym.motion.newton_euler.dynamics_program : the same for a serial chain
+    """
+    from ..systems.linkage import Mechanism
+
+    if not isinstance(mech, Mechanism):
+        raise TypeError(f"mech: expected a Mechanism, got {type(mech).__name__}")
+    if not mech.inertia_pairs:
+        raise ValueError("mech: the mechanism has no inertias; build it with "
+                         "Mechanism(..., inertias={link: SpatialInertia(...)})")
+    what = check_choice(what, "what", WHATS)
+    acts = check_sequence(actuated, "actuated", "joint numbers")
+    out = []
+    for i, a in enumerate(acts):
+        if isinstance(a, bool) or not (isinstance(a, int) or getattr(a, "is_Integer", False)):
+            raise TypeError(f"actuated[{i}]: expected a joint number (an int), got {a!r}")
+        if not 0 <= int(a) < len(mech.joints):
+            raise ValueError(f"actuated[{i}]: expected a joint number 0..{len(mech.joints) - 1}, "
+                             f"got {a}")
+        out.append(int(a))
+    syms = check_sequence(symbols, "symbols", "symbols")
+    for i, s in enumerate(syms):
+        if not isinstance(s, Symbol):
+            raise TypeError(f"symbols[{i}]: expected a Symbol, got {s!r}")
+    if len(set(syms)) != len(syms):
+        raise ValueError("symbols: a symbol is given twice")
+    g = check_vector((0, 0, -S(981) / 100) if gravity is None else gravity, "gravity")
+    free: set = set()
+    for _, _, j in mech.joints:
+        free |= j.free_symbols
+    for p in mech.inertia_pairs:
+        free |= p.args[1].free_symbols
+    free |= g.free_symbols
+    missing = free - set(syms)
+    if missing:
+        raise ValueError("symbols: the mechanism's configuration has the symbols "
+                         f"{sorted(map(str, missing))} not among them")
+    budget = check_count(budget, "budget")
+    spanning_tree(mech)  # a disconnected mechanism is refused here, with its message
+    if at is not None:
+        with bounded(budget, "loop_dynamics_program", _MESSAGE):
+            return _program(mech, tuple(out), tuple(syms), what, ImmutableMatrix(g), at)
+    return _cached(mech, tuple(out), tuple(syms), what, ImmutableMatrix(g), budget)
