@@ -683,7 +683,7 @@ def loop_dynamics_program(mech: Any, actuated: Any, symbols: Any,
     See Also
     ========
 
-    screwsym.motion.newton_euler.dynamics_program : the same for a serial chain
+    screwsym.motion.newton_euler.dynamics_program, screwsym.numeric.loop_dynamics_functions
     """
     from ..systems.linkage import Mechanism
 
