@@ -72,7 +72,7 @@ from functools import lru_cache
 from itertools import count
 from typing import Any
 
-import mpmath
+import mpmath  # type: ignore[import-untyped]  # SymPy's own dependency
 from sympy import (
     Add,
     Expr,
@@ -387,7 +387,7 @@ class _Geometry:
         names = (f"k{i}" for i in count(1))
         fresh = (Symbol(nm, real=True) for nm in names if nm not in W.taken)
         pairs, reduced = cse([sympify(e) for e in flat], symbols=fresh)
-        rename = {}
+        rename: dict = {}
         for t, e in pairs:
             rename[t] = W.let(e.xreplace(rename), t.name)
         it = iter([e.xreplace(rename) for e in reduced])
@@ -450,8 +450,8 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
             for k_, t in enumerate(tw[e]):
                 for r in range(6):
                     if t[r] != 0:
-                        row = entries.setdefault(6 * i + r, {})
-                        row[offsets[e] + k_] = row.get(offsets[e] + k_, S.Zero) + s * t[r]
+                        line = entries.setdefault(6 * i + r, {})
+                        line[offsets[e] + k_] = line.get(offsets[e] + k_, S.Zero) + s * t[r]
     # the values at the sample point of the entries of A_p
     point = _sample(symbols, at)
     base_exprs = {e for row in entries.values() for e in row.values()}
@@ -522,10 +522,12 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
         for i, loop in enumerate(graph.loops):
             if not any(6 * i + r in lu.prow for r in range(6)):
                 continue
-            V, Vd = [S.Zero] * 6, [S.Zero] * 6
+            V: list = [S.Zero] * 6
+            Vd: list | None = [S.Zero] * 6
             for e, s in loop:
                 for f, X, Y in _seq(net, tw, acc, e, s):
                     V, Vd = _rate_step(W, V, Vd, X, Y, qd[f], None, f"L{i + 1}_{f + 1}")
+            assert Vd is not None
             for r in range(6):
                 crow[6 * i + r] = Vd[r]
         ys = lu.solve(W, {r: -Add(*(Aa[r][c] * qdda[c] for c in range(k))) - crow[r]
