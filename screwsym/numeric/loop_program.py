@@ -88,7 +88,7 @@ from sympy import (
 )
 
 from ..algebra.budget import BUDGET, bounded, charge
-from ..core.checks import check_choice, check_count, check_sequence, check_vector
+from ..core.checks import check_choice, check_count, check_scalar, check_sequence, check_vector
 from ..core.formulas import bracket
 from ..motion.newton_euler import Program
 from ..systems.topology import bare_network, spanning_tree
@@ -139,7 +139,7 @@ class LoopProgram(Program):
         """The pivots' values at ``values`` (as for :meth:`evaluate`): the program holds
         where none is zero."""
         env = dict(zip([x for a in self.arguments for x in a],
-                       [sympify(v) for vs in values for v in vs], strict=True))
+                       [check_scalar(v, "values") for vs in values for v in vs], strict=True))
         for t, e in self.assignments:
             env[t] = e.xreplace(env)
         return tuple(env.get(u, u) for u in self.pivots)
@@ -156,7 +156,7 @@ class _Writer:
         self.taken = set(taken)
 
     def let(self, expr: Any, name: str) -> Expr:
-        e = sympify(expr)
+        e = sympify(expr, strict=True)
         if not e.free_symbols or not e.args or (
                 isinstance(e, Mul) and len(e.args) == 2 and e.args[0].is_Number
                 and not e.args[1].args):
@@ -195,7 +195,7 @@ def _power(t: list, w: list) -> Expr:
 
 def _live(assigns: list, outputs: list) -> tuple:
     """The assignments the outputs need, in order (dead code removed)."""
-    need = set().union(*(sympify(e).free_symbols for e in outputs))
+    need = set().union(*(sympify(e, strict=True).free_symbols for e in outputs))
     keep = []
     for t, e in reversed(assigns):
         if t in need:
@@ -210,7 +210,7 @@ def _sample(symbols: tuple, at: Any) -> dict:
     if at is not None:
         if not isinstance(at, dict):
             raise TypeError(f"at: expected a dict {{symbol: value}}, got {type(at).__name__}")
-        out = {sympify(k): sympify(v) for k, v in at.items()}
+        out = {k: check_scalar(v, f"at[{k}]") for k, v in at.items()}
         missing = [s for s in symbols if s not in out]
         if missing:
             raise ValueError(f"at: no value for {sorted(map(str, missing))}")
@@ -223,7 +223,7 @@ class _Values:
     """Exact rationals where every sampled entry is one, else ``DIGITS``-digit floats."""
 
     def __init__(self, exprs: list, point: dict) -> None:
-        vals = [e.xreplace(point) if hasattr(e, "xreplace") else sympify(e) for e in exprs]
+        vals = [e.xreplace(point) if hasattr(e, "xreplace") else sympify(e, strict=True) for e in exprs]
         self.exact = all(v.is_Rational for v in vals)
         self.table: dict = {}
         for e, v in zip(exprs, vals, strict=True):
@@ -233,7 +233,7 @@ class _Values:
         if self.exact:
             return Fraction(int(v.p), int(v.q))
         with mpmath.workdps(DIGITS + 10):
-            return mpmath.mpf(str(sympify(v).evalf(DIGITS + 10)))
+            return mpmath.mpf(str(sympify(v, strict=True).evalf(DIGITS + 10)))
 
     def zero(self, v: Any) -> bool:
         if self.exact:
@@ -386,7 +386,7 @@ class _Geometry:
         charge(10 * len(flat))
         names = (f"k{i}" for i in count(1))
         fresh = (Symbol(nm, real=True) for nm in names if nm not in W.taken)
-        pairs, reduced = cse([sympify(e) for e in flat], symbols=fresh)
+        pairs, reduced = cse([sympify(e, strict=True) for e in flat], symbols=fresh)
         rename: dict = {}
         for t, e in pairs:
             rename[t] = W.let(e.xreplace(rename), t.name)
