@@ -46,6 +46,14 @@ where all of them hold and ``nan`` elsewhere, so the generated functions give ``
 where a pivot vanishes, never a wrong number (a pivot near zero, off a singularity of
 the mechanism, loses accuracy: the order is fixed when the program is written).
 
+Why not fraction-free.  Fraction-free elimination (Bareiss) keeps a closed form
+polynomial; a program needs no such thing: a division is one operation, each quotient is
+a new symbol, and at exact values the quotients are exact rationals.  The pivots are
+chosen at the sample point exactly where the configuration's entries are rational there
+(a platform's coordinates), else at ``DIGITS`` digits with a value below ``10**-30``
+taken as zero: that decides only which pivots are tried, never a result (a pivot that
+vanished identically would make every output ``nan``, not wrong).
+
 Exact: evaluated at exact values (:meth:`Program.evaluate
 <screwsym.motion.newton_euler.Program.evaluate>`) a program gives the exact
 ``mass_matrix`` and ``inverse_dynamics`` of the mechanism at those values wherever its
