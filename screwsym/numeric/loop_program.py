@@ -83,6 +83,7 @@ from typing import Any
 import mpmath  # type: ignore[import-untyped]  # SymPy's own dependency
 from sympy import (
     Add,
+    And,
     Expr,
     ImmutableMatrix,
     Mul,
@@ -601,8 +602,11 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
     # where a pivot vanishes: nan, in every output
     conditions = tuple(Ne(u, 0) for u in lu.pivots)
     if conditions:
-        ok = Symbol("ok", real=True)
-        cond = conditions[0] if len(conditions) == 1 else _all(conditions)
+        name = "ok"
+        while name in W.taken:
+            name += "'"
+        ok = Symbol(name, real=True)
+        cond = conditions[0] if len(conditions) == 1 else And(*conditions)
         W.assigns.append((ok, Piecewise((S.One, cond), (nan, True))))
         flat = [ok * x for x in flat]
     outputs = ImmutableMatrix(*shape, flat)
@@ -612,12 +616,6 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
     return LoopProgram(arguments, _live(W.assigns, flat), outputs,
                        "tau" if what == "inverse_dynamics" else "H", conditions,
                        tuple(lu.pivots))
-
-
-def _all(conditions: tuple) -> Any:
-    from sympy import And
-
-    return And(*conditions)
 
 
 @lru_cache(maxsize=32)
