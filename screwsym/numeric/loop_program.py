@@ -22,14 +22,17 @@ The program, in order:
    loop's rows touch only its own joints, so the elimination stays within the loops as
    long as it can; the rows left over are consequences of the others on a closed
    configuration and are not computed;
-3. the passive rates from ``A_p qd_p = -A_a qd_a`` and the passive accelerations from
-   the differentiated closure ``A_p qdd_p = -A_a qdd_a - c(qd)``, ``c`` the loops'
-   brackets (Müller 2016), accumulated along each loop as
-   ``sum_v [V_{<v}, X_v] qd_v``, ``V_{<v}`` the partial twist before joint ``v``
-   (:func:`~screwsym.core.formulas.bracket`: one bracket per joint, not per pair);
-4. each link's twist and twist rate along the spanning tree from the base (a forward
-   Newton–Euler pass), and the Newton–Euler wrench ``M V' + [V, M V] - W`` of each link
-   with an inertia;
+3. the passive rates from ``A_p qd_p = -A_a qd_a``; each link's twist ``V`` and bias
+   rate ``B`` (its twist rate at zero accelerations) along the spanning tree from the
+   base, ``B_child = B_parent + [V, X] qd`` joint by joint
+   (:func:`~screwsym.core.formulas.bracket`: one bracket per joint, not one per pair as
+   in the loop-order sum of Müller 2016); the passive accelerations from the
+   differentiated closure ``A_p qdd_p = -A_a qdd_a - c(qd)``, loop by loop from the
+   chord ``(a, b)`` that closes it: ``V_b - V_a = X qd`` gives
+   ``(P_b - P_a - X) qdd + B_b - B_a - [V_a, X] qd = 0`` (a chord of several
+   freedoms: the loop-order sum ``sum_v [V_{<v}, X_v] qd_v``);
+4. each body's twist rate ``B + P qdd`` (a forward Newton–Euler pass) and its
+   Newton–Euler wrench ``M V' + [V, M V] - W``;
 5. the virtual power: the wrenches summed over each subtree (a backward pass) give the
    tree joints' forces ``f``; then ``tau = G^T f = f_a - A_a^T lambda`` with
    ``A_p^T lambda = f_p`` (one transposed solve with the same factors, ``lambda`` the
@@ -527,11 +530,40 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
             qd[f] = qda[c]
         for f in passive:
             qd[f] = xs[pindex[f]]
+        # 4a. each link's twist V and bias rate B (its twist rate at zero accelerations,
+        # the brackets along its tree path), shared by the loops and the bodies
+        bias: dict[int, tuple] = {0: ([S.Zero] * 6, [S.Zero] * 6)}
+
+        def biased(link: int) -> tuple:
+            if link in bias:
+                return bias[link]
+            p, e, s = parent[link]
+            V, B = biased(p)
+            for f, X, Y in _seq(net, tw, acc, e, s):
+                V, B = _rate_step(W, V, B, X, Y, qd[f], None, f"l{link}_{f + 1}")
+            bias[link] = (V, B)
+            return bias[link]
+
+        tree = {e for _, e, _ in parent.values()}
         crow: dict[int, Expr] = {}
         for i, loop in enumerate(graph.loops):
             if not any(6 * i + r in lu.prow for r in range(6)):
                 continue
-            V: list = [S.Zero] * 6
+            (e, s), = [(e, s) for e, s in loop if e not in tree]
+            a, b, j = graph.edges[e]
+            if j.freedom == 1 and acc[e][0] is None:
+                # the chord joins a to b: V_b - V_a = X qd, so, X moving with a,
+                # (P_b - P_a - X) qdd + B_b - B_a - [V_a, X] qd = 0; the loop's row of A is
+                # -s times (P_b - P_a - X) (the chord's coefficient there is s)
+                Va, Ba = biased(a)
+                _, Bb = biased(b)
+                X = tw[e][0]
+                br = bracket(Va, X) if any(v != 0 for v in Va) else [S.Zero] * 6
+                br = _six(W, list(br), f"C{i + 1}B")
+                for r in range(6):
+                    crow[6 * i + r] = -s * (Bb[r] - Ba[r] - br[r] * qd[offsets[e]])
+                continue
+            V: list = [S.Zero] * 6  # else along the loop, in its order
             Vd: list | None = [S.Zero] * 6
             for e, s in loop:
                 for f, X, Y in _seq(net, tw, acc, e, s):
@@ -546,18 +578,23 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
             qdd[f] = qdda[c]
         for f in passive:
             qdd[f] = ys[pindex[f]]
-        # 4. the links' twists and twist rates, and the wrenches of the bodies
-        state: dict[int, tuple] = {0: ([S.Zero] * 6, [S.Zero] * 6)}
+        # 4b. the bodies' twist rates: B plus the accelerations along the tree path
+        lin: dict[int, list] = {0: [S.Zero] * 6}
+
+        def linear(link: int) -> list:
+            if link in lin:
+                return lin[link]
+            p, e, s = parent[link]
+            cur = list(linear(p))
+            for f, X, _ in _seq(net, tw, acc, e, s):
+                cur = [c + x * qdd[f] for c, x in zip(cur, X, strict=True)]
+            lin[link] = _six(W, cur, f"a{link}_")
+            return lin[link]
 
         def motion(link: int) -> tuple:
-            if link in state:
-                return state[link]
-            p, e, s = parent[link]
-            V, Vd = motion(p)
-            for f, X, Y in _seq(net, tw, acc, e, s):
-                V, Vd = _rate_step(W, V, Vd, X, Y, qd[f], qdd[f], f"l{link}_{f + 1}")
-            state[link] = (V, Vd)
-            return state[link]
+            V, B = biased(link)
+            return V, _six(W, [a + b for a, b in zip(linear(link), B, strict=True)],
+                           f"l{link}_A")
 
         wrench: dict[int, list] = {}
         for link, _ in bodies:
@@ -675,7 +712,7 @@ def loop_dynamics_program(mech: Any, actuated: Any, symbols: Any,
     >>> tau.evaluate([1, 2], [0], [0])      # (1, 2): coupler and rocker in line
     Matrix([[nan]])
     >>> tau.operations()
-    Operations(multiplications=46, additions=31, functions=1)
+    Operations(multiplications=43, additions=26, functions=1)
 
     Parameters
     ==========

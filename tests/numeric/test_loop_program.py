@@ -22,7 +22,7 @@ from sympy import Rational, diag, nan, symbols
 from screwsym.codegen import lambdify
 from screwsym.core.inertia import SpatialInertia
 from screwsym.numeric import LoopProgram, loop_dynamics_program
-from screwsym.systems.joints import R
+from screwsym.systems.joints import R, Spherical, Universal
 from screwsym.systems.linkage import Mechanism
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
@@ -97,8 +97,8 @@ def test_the_check_rejects_a_wrong_program():
     H = loop_dynamics_program(mech, [0], [x, y], "mass_matrix")
     point = [Rational(3), Rational(3)]
     assert agrees(tau, H, lambda p: fourbar(*p), point, [0], random.Random(1))
-    # one assignment of the torque program altered: a bracket's sign flipped
-    i = next(i for i, (t, _) in enumerate(tau.assignments) if t.name.startswith("L1_"))
+    # one assignment of the torque program altered: the closing joint's bracket, sign flipped
+    i = next(i for i, (t, _) in enumerate(tau.assignments) if t.name.startswith("C1B"))
     t, e = tau.assignments[i]
     wrong = replace(tau, assignments=tau.assignments[:i] + ((t, -e),) + tau.assignments[i + 1:])
     assert not agrees(wrong, H, lambda p: fourbar(*p), point, [0], random.Random(1))
@@ -118,6 +118,28 @@ def test_delta_at_a_symbolic_pose_equals_the_exact_dynamics_at_numeric_poses():
     # the mass matrix is symmetric positive definite there
     Hp = H.evaluate(point)
     assert Hp == Hp.T and all(Hp[:i, :i].det() > 0 for i in (1, 2, 3))
+
+
+def rsur(h):
+    """A spatial RSUR four-bar (crank about z, rocker about x), the universal joint at height
+    ``h``; the spanning tree closes the loop at the universal joint (two freedoms), so the
+    program sums the loop's brackets in loop order there."""
+    return Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "rod", Spherical([1, 0, 0])),
+                      ("rocker", "rod", Universal([2, 1, h], [1, 0, 0], [0, 1, 0])),
+                      ("rocker", "ground", R([3, 1, 0], [1, 0, 0]))], base="ground",
+                     inertias={"crank": SpatialInertia(1, [Rational(1, 2), 0, 0], diag(1, 1, 1)),
+                               "rod": SpatialInertia(2, [Rational(3, 2), Rational(1, 2), h / 2],
+                                                     diag(1, 2, 2)),
+                               "rocker": SpatialInertia(1, [Rational(5, 2), 1, h / 2],
+                                                        diag(2, 1, 2))})
+
+
+def test_a_loop_closed_by_a_joint_of_several_freedoms():
+    mech = rsur(z)
+    tau = loop_dynamics_program(mech, [0], [z], gravity=GRAVITY)
+    H = loop_dynamics_program(mech, [0], [z], "mass_matrix")
+    assert any(t.name.startswith("L1_") for t, _ in tau.assignments)  # the loop-order sum
+    assert agrees(tau, H, lambda p: rsur(p[0]), [Rational(3, 2)], [0], random.Random(37))
 
 
 def test_bad_input_is_refused_clearly():
