@@ -156,5 +156,7 @@ def test_bad_input_is_refused_clearly():
         loop_dynamics_program(mech, [0], [x, y], at=[1, 2])
     with pytest.raises(ValueError, match="actuation singularity at the sample point"):
         loop_dynamics_program(mech, [0], [x, y], at={x: Rational(5, 2), y: 1})
+    with pytest.raises(ValueError, match="loop_dynamics_program: .*budget=10 units"):
+        loop_dynamics_program(mech, [0], [x, y], budget=10)
     with pytest.raises(ValueError, match="no inertias"):
         loop_dynamics_program(Mechanism(list(mech.joints), base="ground"), [0], [x, y])
