@@ -142,6 +142,8 @@ class LoopProgram(Program):
     (1, Matrix([[5]]))
     >>> p.evaluate([1, 2])             # coupler and rocker in line: nan, not a number
     Matrix([[nan]])
+    >>> p.condition_values([1, 2]), p.condition_values([3, 3])    # 4 - x - 3y/2
+    ((0,), (-7/2,))
     """
 
     conditions: tuple = ()
@@ -187,9 +189,6 @@ class _Writer:
         self.assigns.append((t, e))
         self.seen[e] = t
         return t
-
-    def vec(self, v: Any, name: str, parts: str = "abcdef") -> list:
-        return [self.let(x, f"{name}{c}") for x, c in zip(v, parts, strict=False)]
 
 
 _SIX = ("wx", "wy", "wz", "vx", "vy", "vz")
