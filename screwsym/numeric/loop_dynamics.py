@@ -66,9 +66,9 @@ def _functions(mech: Any, actuated: tuple, symbols: tuple, gravity: ImmutableMat
     p = Matrix(symbols)
     if form == "program":
         tau_p = loop_dynamics_program(mech, list(actuated), list(symbols), "inverse_dynamics",
-                                      gravity, budget=budget)
+                                      gravity, budget=budget).float_guarded()
         H_p = loop_dynamics_program(mech, list(actuated), list(symbols), "mass_matrix",
-                                    budget=budget)
+                                    budget=budget).float_guarded()
         return LoopDynamicsFunctions(
             shaped(lambdify(list(tau_p.arguments), tau_p, backend, names=["p", "qd", "qdd"]),
                    (k,)),
@@ -131,7 +131,7 @@ def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
     >>> f.mass_matrix(np.array([0.3]))
     array([[2.]])
     >>> f.tau.conditions        # the pivots it divides by: nan where one is zero
-    (Ne(k1, 0), Ne(a5_2_2, 0))
+    (Ne(N2_2, 0), Ne(N3_3_2, 0), Ne(N4_4_2, 0))
     >>> f.mass_matrix(np.array([0.0]))      # folded: the crank does not drive it
     array([[nan]])
     >>> fc = loop_dynamics_functions(four, [0], [t], gravity=(0, -10, 0), backend="numpy",

@@ -15,13 +15,15 @@ The program, in order:
 
 1. the joints' twists at the configuration (each non-constant entry assigned once) and
    Davies' network matrix ``A`` (Davies 1981), in the loops of a spanning tree;
-2. an LU factorisation, sparse, of the passive joints' columns ``A_p`` (Gaussian
-   elimination on the loops' rows, with the pivots chosen once, when the program is
-   written: a constant pivot first, else the one of least Markowitz cost, among those
-   that are non-zero at a random exact point of the configuration's symbols).  Each
-   loop's rows touch only its own joints, so the elimination stays within the loops as
-   long as it can; the rows left over are consequences of the others on a closed
-   configuration and are not computed;
+2. the normal equations of the passive joints' columns ``A_p``: ``N = A_p^T A_p``
+   (entry ``(c, d)`` the twists' dot product times the number of loops that hold both,
+   signed), factored ``L D L^T`` without roots in a minimum-degree order (chosen from the
+   sparsity alone: a joint couples only to the joints of its loops).  ``N`` is positive
+   definite exactly where ``A_p`` has full column rank, the actuated joints determining
+   the motion, so every pivot of every order is positive there: no pivot vanishes off an
+   actuation singularity (an LU of ``A_p`` itself, tried first, needs its pivots chosen at a
+   sample point, and for Clavel's Delta one of them vanished on the plane ``y = 0``
+   through the home pose);
 3. the passive rates from ``A_p qd_p = -A_a qd_a``; each link's twist ``V`` and bias
    rate ``B`` (its twist rate at zero accelerations) along the spanning tree from the
    base, ``B_child = B_parent + [V, X] qd`` joint by joint
@@ -39,23 +41,25 @@ The program, in order:
    loops' multipliers), instead of the ``k`` solves of ``G``.  The mass matrix is
    ``H = sum_l A_l^T Delta M_l A_l`` with ``A_l = P_l G`` (``k`` solves for ``G``).
 
-Where it divides.  Each pivot ``u`` the elimination divides by that is not a number is a
-condition of the program (:attr:`LoopProgram.conditions`, ``Ne(u, 0)``): their product is
-``± det A_p[R]``, the minor on which the actuated rates determine the motion
+Where it divides.  Each pivot ``d`` of ``D`` that is not a number is a condition of the
+program (:attr:`LoopProgram.conditions`, ``Ne(d, 0)``): their product is
+``det(A_p^T A_p)``, the sum of the squares of the minors ``det A_p[R]`` (Cauchy–Binet), so
+all of them hold exactly where the actuated rates determine the motion
 (:meth:`Mechanism.actuation_condition
-<screwsym.systems.linkage.Mechanism.actuation_condition>`), and the others are the
-leading minors of the elimination order.  Every output is multiplied by ``ok``, ``1``
-where all of them hold and ``nan`` elsewhere, so the generated functions give ``nan``
-where a pivot vanishes, never a wrong number (a pivot near zero, off a singularity of
-the mechanism, loses accuracy: the order is fixed when the program is written).
+<screwsym.systems.linkage.Mechanism.actuation_condition>` holds for some rows ``R``).
+Every output is multiplied by ``ok``, ``1`` where all of them hold and ``nan`` elsewhere,
+so the generated functions give ``nan`` at an actuation singularity, never a wrong number.
+The passive rates are the least-squares solution of a consistent system, which is its
+exact solution on a closed configuration; near a singularity the normal equations square
+the condition number (floats lose accuracy there first).
 
 Why not fraction-free.  Fraction-free elimination (Bareiss) keeps a closed form
 polynomial; a program needs no such thing: a division is one operation, each quotient is
-a new symbol, and at exact values the quotients are exact rationals.  The pivots are
-chosen at the sample point exactly where the configuration's entries are rational there
-(a platform's coordinates), else at ``DIGITS`` digits with a value below ``10**-30``
-taken as zero: that decides only which pivots are tried, never a result (a pivot that
-vanished identically would make every output ``nan``, not wrong).
+a new symbol, and at exact values the quotients are exact rationals.  The sample point
+(``at=``, default seeded random rationals) only serves to refuse a mechanism whose
+actuated joints never determine its motion: it is evaluated exactly where the
+configuration's entries are rational there (a platform's coordinates), else at
+``DIGITS`` digits with a value below ``10**-30`` taken as zero.
 
 Exact: evaluated at exact values (:meth:`Program.evaluate
 <screwsym.motion.newton_euler.Program.evaluate>`) a program gives the exact
@@ -69,15 +73,15 @@ J. M. Davies, "Kirchhoff's circulation law applied to multi-loop kinematic chain
 Mech. Mach. Theory 16 (1981) 171-183.  A. Müller, "Local kinematic analysis of
 closed-loop linkages", J. Mechanisms Robotics 8(4) (2016) 041013.  W. Khalil,
 J.-F. Kleinfinger, "Minimum operations and minimum parameters of the dynamic models of
-tree structure robots", IEEE J. Robotics and Automation 3(6) (1987).  H. M. Markowitz,
-"The elimination form of the inverse and its application to linear programming",
-Management Science 3 (1957) 255-269.  L.-W. Tsai, *Robot Analysis*, Wiley 1999, Chapter 9.
+tree structure robots", IEEE J. Robotics and Automation 3(6) (1987).  W. F. Tinney, J. W. Walker, "Direct solutions of sparse
+network equations by optimally ordered triangular factorization", Proc. IEEE 55 (1967)
+1801-1809 (the minimum-degree order).  L.-W. Tsai, *Robot Analysis*, Wiley 1999, Chapter 9.
 """
 
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from functools import lru_cache
 from itertools import count
@@ -92,6 +96,7 @@ from sympy import (
     Mul,
     Ne,
     Piecewise,
+    Rational,
     S,
     Symbol,
     cse,
@@ -106,6 +111,9 @@ from ..motion.newton_euler import Program
 from ..systems.topology import bare_network, spanning_tree
 
 __all__ = ["LoopProgram", "loop_dynamics_program"]
+
+#: the float policy's relative tolerance for double precision (:func:`screwsym.core.decide.float_tau`)
+FLOAT_TOLERANCE = Rational(1, 2**40)
 
 #: what :func:`loop_dynamics_program` writes
 WHATS = ("inverse_dynamics", "mass_matrix")
@@ -139,15 +147,31 @@ class LoopProgram(Program):
     ...                  inertias={"crank": SpatialInertia.point_mass(1, [1, 2, 0])})
     >>> p = loop_dynamics_program(four, [0], [x, y], "mass_matrix")
     >>> len(p.conditions), p.evaluate([3, 3])
-    (1, Matrix([[5]]))
+    (2, Matrix([[5]]))
     >>> p.evaluate([1, 2])             # coupler and rocker in line: nan, not a number
     Matrix([[nan]])
-    >>> p.condition_values([1, 2]), p.condition_values([3, 3])    # 4 - x - 3y/2
-    ((0,), (-7/2,))
+    >>> p.condition_values([1, 2]), p.condition_values([3, 3])
+    ((0, nan), (7/3, 7/2))
     """
 
     conditions: tuple = ()
     pivots: tuple = ()
+    scales: tuple = ()  # each pivot's size without cancellation (N's diagonal entry)
+    guard: Any = None  # the symbol ``ok`` the outputs are multiplied by
+
+    def float_guarded(self, tolerance: Any = FLOAT_TOLERANCE) -> LoopProgram:
+        """The program with the float policy's guard: in floats a pivot ``d`` counts as zero
+        when ``d <= tolerance * s``, ``s`` its size without cancellation (the diagonal
+        entry of ``A_p^T A_p`` it comes from), ``tolerance`` the library's ``2**-40``
+        (:mod:`screwsym.core.decide`); there the outputs are ``nan``.  What
+        :func:`~screwsym.numeric.loop_dynamics.loop_dynamics_functions` compiles; the
+        program itself decides exactly (``d != 0``)."""
+        if self.guard is None:
+            return self
+        cond = And(*(d > tolerance * s for d, s in zip(self.pivots, self.scales, strict=True)))
+        assigns = tuple((t, Piecewise((S.One, cond), (nan, True))) if t == self.guard else (t, e)
+                        for t, e in self.assignments)
+        return replace(self, assignments=assigns)
 
     def condition_values(self, *values: Any) -> tuple:
         """The pivots' values at ``values`` (as for :meth:`evaluate`): the program holds
@@ -156,7 +180,7 @@ class LoopProgram(Program):
                        [check_scalar(v, "values") for vs in values for v in vs], strict=True))
         for t, e in self.assignments:
             env[t] = e.xreplace(env)
-        return tuple(env.get(u, u) for u in self.pivots)
+        return tuple(sympify(u, strict=True).xreplace(env) for u in self.pivots)
 
 
 # ---------------------------------------------------------------- writing
@@ -253,99 +277,109 @@ class _Values:
 
 
 # ---------------------------------------------------------------- the elimination
-class _LU:
-    """The sparse LU factors of the passive columns (module docstring, step 2)."""
+class _Normal:
+    """The passive columns' normal equations ``N = A_p^T A_p``, factored ``L D L^T`` in a
+    minimum-degree order (module docstring, step 2)."""
 
-    def __init__(self, W: _Writer, rows: dict, n: int, values: _Values) -> None:
-        # rows: r -> {c: (expr, value)} over the passive columns 0..n-1
-        rows = {r: dict(v) for r, v in rows.items() if v}
-        self.prow: list[int] = []  # pivot row of step t
-        self.pcol: list[int] = []  # pivot column of step t
-        self.U: list[dict] = []  # step t: {column: expr} of the pivot row (after t)
-        self.inv: list[Expr] = []
-        self.pivots: list[Expr] = []  # the non-constant pivots
-        self.mult: dict[int, dict[int, Expr]] = {}  # row -> {step: multiplier}
-        free_cols = set(range(n))
+    def __init__(self, W: _Writer, rows: dict, n: int, values: _Values, labels: list,
+                 twists: list, loops: list) -> None:
+        # rows: r -> {c: (expr, value)} over the passive columns 0..n-1; twists[c] the
+        # column's twist (6 exprs) and its values; loops: per loop, its (column, sign)
+        self.rows = {r: {c: e for c, (e, _) in row.items()} for r, row in rows.items() if row}
+        self.prow = sorted(self.rows)
+        # N[c, d] = (sum over the loops holding both of s_c s_d) (twist_c . twist_d)
+        count_: dict[tuple, int] = {}
+        for loop in loops:
+            for a, (c, sc) in enumerate(loop):
+                for d, sd in loop[a:]:
+                    key = (min(c, d), max(c, d))
+                    count_[key] = count_.get(key, 0) + sc * sd
+        N: dict[tuple, tuple] = {}
+        adj: dict[int, set] = {c: set() for c in range(n)}
         with mpmath.workdps(DIGITS + 10):
-            for t in range(n):
-                colcount = {c: 0 for c in free_cols}
-                for row in rows.values():
-                    for c in row:
-                        colcount[c] += 1
-                best = None
-                for r, row in rows.items():
-                    for c, (e, v) in row.items():
-                        if values.zero(v):
-                            continue
-                        key = (bool(e.free_symbols), (len(row) - 1) * (colcount[c] - 1), r, c)
-                        if best is None or key < best[0]:
-                            best = (key, r, c)
-                if best is None:
+            for (i, j), m in sorted(count_.items()):
+                if m == 0:
+                    continue
+                (ti, vi), (tj, vj) = twists[i], twists[j]
+                dot = W.let(Add(*(a * b for a, b in zip(ti, tj, strict=True))),
+                            f"N{labels[i]}_{labels[j]}")
+                if dot == 0:
+                    continue
+                N[(i, j)] = (m * dot, m * sum((a * b for a, b in zip(vi, vj, strict=True)), 0))
+                adj[i].add(j)
+                adj[j].add(i)
+            diagonal = {t: e for (i, t), (e, _) in N.items() if i == t}
+            self.scales: list[Expr] = []  # each pivot's size without cancellation
+            charge(100 * len(N))
+            self.order: list[int] = []
+            self.inv: dict[int, Expr] = {}
+            self.mult: dict[int, dict[int, Expr]] = {}  # step column -> {later column: l}
+            self.pivots: list[Expr] = []
+            remaining = set(range(n))
+            while remaining:
+                t = min(remaining, key=lambda c: (len(adj[c] & remaining), c))
+                remaining.discard(t)
+                u, uv = N.get((t, t), (S.Zero, 0))
+                if u == 0 or values.zero(uv):
                     raise ValueError(
                         "mech: an actuation singularity at the sample point of the symbols: the "
-                        f"passive joints' columns of the network matrix have rank {t} < {n} "
-                        "there (pass at= a point of the symbols where the actuated joints "
-                        "determine the motion)")
-                _, r, c = best
-                prow = rows.pop(r)
-                free_cols.discard(c)
-                u, uv = prow.pop(c)
+                        f"passive joints' columns of the network matrix have rank < {n} there "
+                        "(pass at= a point of the symbols where the actuated joints determine "
+                        "the motion)")
+                self.order.append(t)
                 if u.free_symbols:
-                    inv = W.let(1 / u, f"inv{t + 1}")
+                    self.inv[t] = W.let(1 / u, f"inv{labels[t]}")
                     self.pivots.append(u)
+                    self.scales.append(diagonal[t])
                 else:
-                    inv = 1 / u
+                    self.inv[t] = 1 / u
                 invv = 1 / uv
-                self.prow.append(r)
-                self.pcol.append(c)
-                self.inv.append(inv)
-                self.U.append({j: e for j, (e, _) in prow.items()})
-                for i, row in rows.items():
-                    if c not in row:
-                        continue
-                    a, av = row.pop(c)
-                    m = W.let(a * inv, f"m{i + 1}_{t + 1}")
-                    mv = av * invv
-                    self.mult.setdefault(i, {})[t] = m
-                    for j, (b, bv) in prow.items():
-                        old, oldv = row.get(j, (S.Zero, 0))
-                        new = W.let(old - m * b, f"a{i + 1}_{j + 1}")
-                        if new == 0:
-                            row.pop(j, None)
-                        else:
-                            row[j] = (new, oldv - mv * bv)
-                charge(100 * len(rows))
-        self.n = n
+                near = sorted(adj[t] & remaining)
+                mult, multv = {}, {}
+                for i in near:
+                    e, v = N[(min(i, t), max(i, t))]
+                    mult[i] = W.let(e * self.inv[t], f"l{labels[i]}_{labels[t]}")
+                    multv[i] = v * invv
+                for a, i in enumerate(near):
+                    for j in near[a:]:
+                        e, v = N.get((i, j), (S.Zero, 0))
+                        b, bv = N[(min(t, j), max(t, j))]
+                        new = W.let(e - mult[i] * b, f"N{labels[i]}_{labels[j]}")
+                        N[(i, j)] = (new, v - multv[i] * bv)
+                        adj[i].add(j)
+                        adj[j].add(i)
+                self.mult[t] = mult
+                charge(100 * len(near) ** 2)
+        self.labels = labels
 
-    def solve(self, W: _Writer, b: dict, name: str, labels: list) -> dict:
-        """``A_p x = b`` (``b`` over the rows): ``x`` over the passive columns (named
-        ``name`` and ``labels[column]``)."""
-        y: list[Expr] = []
-        for t, r in enumerate(self.prow):
-            m = self.mult.get(r, {})
-            y.append(W.let(b.get(r, S.Zero) - Add(*(m[s] * y[s] for s in m)), f"{name}y{t + 1}"))
+    def _solve(self, W: _Writer, g: dict, name: str) -> dict:
+        """``N x = g`` over the passive columns."""
+        y: dict[int, Expr] = {}
+        for t in self.order:
+            rest = Add(*(m[t] * y[s] for s, m in self.mult.items() if t in m and s in y))
+            y[t] = W.let(g.get(t, S.Zero) - rest, f"{name}y{self.labels[t]}")
         x: dict[int, Expr] = {}
-        for t in reversed(range(self.n)):
-            rest = Add(*(e * x[j] for j, e in self.U[t].items()))
-            x[self.pcol[t]] = W.let((y[t] - rest) * self.inv[t], f"{name}{labels[self.pcol[t]]}")
+        for t in reversed(self.order):
+            rest = Add(*(m * x[i] for i, m in self.mult[t].items()))
+            x[t] = W.let(y[t] * self.inv[t] - rest, f"{name}{self.labels[t]}")
         return x
 
+    def solve(self, W: _Writer, b: dict, name: str, labels: list) -> dict:
+        """``A_p x = b`` (``b`` over the rows, consistent): ``x = N^-1 A_p^T b``."""
+        g: dict[int, Any] = {}
+        for r, row in self.rows.items():
+            if b.get(r, S.Zero) != 0:
+                br = W.let(b[r], f"{name}b{r + 1}")
+                for c, e in row.items():
+                    g.setdefault(c, []).append(e * br)
+        rhs = {c: W.let(Add(*ts), f"{name}g{self.labels[c]}") for c, ts in g.items()}
+        return self._solve(W, rhs, name)
+
     def solve_transposed(self, W: _Writer, g: dict, name: str) -> dict:
-        """``A_p^T z = g`` (``g`` over the passive columns): ``z`` over the pivot rows."""
-        w: list[Expr] = []
-        for t in range(self.n):
-            c = self.pcol[t]
-            rest = Add(*(self.U[s].get(c, S.Zero) * w[s] for s in range(t)))
-            w.append(W.let((g.get(c, S.Zero) - rest) * self.inv[t], f"{name}w{t + 1}"))
-        z: list[Expr] = [S.Zero] * self.n
-        below: dict[int, list] = {}
-        for s, r in enumerate(self.prow):
-            for t, m in self.mult.get(r, {}).items():
-                below.setdefault(t, []).append((s, m))
-        for t in reversed(range(self.n)):
-            z[t] = W.let(w[t] - Add(*(m * z[s] for s, m in below.get(t, []))),
-                         f"{name}{self.prow[t] + 1}")
-        return {r: z[t] for t, r in enumerate(self.prow)}
+        """The least-norm ``z`` over the rows with ``A_p^T z = g``: ``z = A_p N^-1 g``."""
+        w = self._solve(W, g, name + "w")
+        return {r: W.let(Add(*(e * w[c] for c, e in row.items())), f"{name}{r + 1}")
+                for r, row in self.rows.items()}
 
 
 # ---------------------------------------------------------------- the program
@@ -473,7 +507,17 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
     vals = _Values(list(raw.values()), {})
     Ap = {r: {pindex[c]: (e, vals.table[raw[e]]) for c, e in row.items()
               if c in pindex and e != 0} for r, row in entries.items()}
-    lu = _LU(W, Ap, n, vals)
+    env_t: dict = dict(point)
+    for t, rhs in W.assigns:
+        env_t[t] = rhs.xreplace(env_t)
+    columns = []
+    for f in passive:
+        e = next(e for e in range(len(graph.edges)) if offsets[e] <= f < offsets[e] + len(tw[e]))
+        t = tw[e][f - offsets[e]]
+        columns.append((t, [vals.number(sympify(x, strict=True).xreplace(env_t)) for x in t]))
+    loops = [[(pindex[offsets[e] + k_], s) for e, s in loop for k_ in range(len(tw[e]))
+              if offsets[e] + k_ in pindex] for loop in graph.loops]
+    lu = _Normal(W, Ap, n, vals, labels, columns, loops)
     Aa = {r: [entries.get(r, {}).get(f, S.Zero) for f in act_f] for r in lu.prow}
 
     parent: dict[int, tuple] = {}
@@ -637,6 +681,7 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
         shape = (k, 1)
     # where a pivot vanishes: nan, in every output
     conditions = tuple(Ne(u, 0) for u in lu.pivots)
+    ok: Any = None
     if conditions:
         name = "ok"
         while name in W.taken:
@@ -651,7 +696,7 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
         arguments += (ImmutableMatrix(qda), ImmutableMatrix(qdda))
     return LoopProgram(arguments, _live(W.assigns, flat), outputs,
                        "tau" if what == "inverse_dynamics" else "H", conditions,
-                       tuple(lu.pivots))
+                       tuple(lu.pivots), tuple(lu.scales), ok)
 
 
 @lru_cache(maxsize=32)
@@ -706,12 +751,12 @@ def loop_dynamics_program(mech: Any, actuated: Any, symbols: Any,
     >>> tau = loop_dynamics_program(four, [0], [x, y], gravity=[0, -10, 0])
     >>> tau.evaluate([3, 3], [0], [0])
     Matrix([[10/7]])
-    >>> tau.conditions             # 2x + 3y - 8 (actuation_condition) after a first pivot 1
-    (Ne(a5_2_2, 0),)
+    >>> tau.conditions       # their product: a constant times (2x + 3y - 8)**2
+    (Ne(N3_3_2, 0), Ne(N4_4, 0))
     >>> tau.evaluate([1, 2], [0], [0])      # (1, 2): coupler and rocker in line
     Matrix([[nan]])
     >>> tau.operations()
-    Operations(multiplications=43, additions=26, functions=1)
+    Operations(multiplications=63, additions=39, functions=1)
 
     Parameters
     ==========
