@@ -117,6 +117,11 @@ def test_delta_at_a_symbolic_pose_equals_the_exact_dynamics_at_numeric_poses():
     rng = random.Random(36)
     point = [rational(rng, -1, 1) / 3, rational(rng, -1, 1) / 3, rational(rng, -4, -2)]
     assert agrees(tau, H, delta, point, [0, 7, 14], rng)
+    # and at the home pose, on the plane y = 0 where a statically pivoted LU of the network
+    # matrix divided by zero: the normal equations' pivots stay positive
+    home = [0, 0, -3]
+    assert all(v > 0 for v in tau.condition_values(home, [1, 1, 1], [1, 1, 1]))
+    assert agrees(tau, H, delta, home, [0, 7, 14], rng)
     # the mass matrix is symmetric positive definite there
     Hp = H.evaluate(point)
     assert Hp == Hp.T and all(Hp[:i, :i].det() > 0 for i in (1, 2, 3))
