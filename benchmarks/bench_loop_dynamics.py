@@ -24,7 +24,8 @@ Measured side by side in one process, cold caches per case:
    ``z``; against pinocchio 3's ``constraintDynamics`` (the proximal constrained forward
    dynamics, Carpentier et al., RSS 2021) on the four-bar of the tests, called in a Python
    loop; the Delta at a symbolic pose ``(x, y, z)`` as programs on numba, C and NumPy
-   against pinocchio's Delta.  Not the same problem: pinocchio solves the forward dynamics (accelerations from
+   against pinocchio's Delta; Clavel's Delta over its workspace (``plot.models.delta()``,
+   placed by ``x, y, z`` and the arms' angles from its inverse kinematics) on numba.  Not the same problem: pinocchio solves the forward dynamics (accelerations from
    torques), ours the inverse; this is the comparison the issue's target names (at least
    10x faster per state).
 
@@ -104,6 +105,25 @@ def delta_compound(top):
 
     return Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)],
                      base="base", inertias=delta_inertias(top))
+
+
+def clavel_delta():
+    """plot.models.delta() with inertias: each arm a rod of mass 2 (centre at its middle,
+    moving with its angle), the platform of mass 3 at (x, y, z)."""
+    from sympy import sqrt
+
+    from screwsym.plot.models import delta
+
+    d = delta()
+    x, y, z, *thetas = d.variables
+    inertias = {}
+    for i, (e, th) in enumerate(zip(DELTA_RADIAL, thetas, strict=True)):
+        mid = [2 * e[0] + sqrt(2) / 2 * cos(th) * e[0], 2 * e[1] + sqrt(2) / 2 * cos(th) * e[1],
+               -sqrt(2) / 2 * sin(th)]
+        inertias[f"arm{i + 1}"] = SpatialInertia(2, mid, diag(1, 1, 1))
+    inertias["platform"] = SpatialInertia(3, [x, y, z], diag(1, 1, 2))
+    mech = Mechanism(list(d.mechanism.joints), base="base", inertias=inertias)
+    return type(d)(mech, d.variables, d.radius, d.arm, d.rod)
 
 
 def parallelogram(t):
@@ -329,6 +349,23 @@ def numeric_part(n, skip_z):
               f"on-disk caches may serve); inverse dynamics {best / n * 1e9:.0f} ns per "
               f"state batched -> {pin_delta / (best / n):.0f}x faster than pinocchio's Delta "
               f"per state (target 10x); mass matrix {bestH / n * 1e9:.0f} ns per state")
+    # one Delta over its workspace: plot.models.delta(), placed by x, y, z and the arms'
+    # angles theta1..3 (the rods keep their length where the angles come from
+    # Delta.configurations, the closed-form inverse kinematics)
+    d = clavel_delta()
+    c0 = time.process_time()
+    fw = loop_dynamics_functions(d.mechanism, ACT, list(d.variables), (0, 0, -9.81), "numba")
+    pts = np.column_stack([rng.uniform(-0.4, 0.4, n), rng.uniform(-0.4, 0.4, n),
+                           rng.uniform(-3.2, -2.8, n)])
+    p = d.configurations(pts)
+    qd, qdd = rng.normal(size=(n, 3)), rng.normal(size=(n, 3))
+    fw.inverse_dynamics(p[:10], qd[:10], qdd[:10])
+    built = time.process_time() - c0
+    best = min(timed(fw.inverse_dynamics, p, qd, qdd)[1] for _ in range(3))
+    print(f"   Clavel's Delta over its workspace (plot.models.delta: x, y, z, theta1..3), program "
+          f"form, numba: built and compiled in {built:.2f} s CPU ({fw.tau.operations()}); "
+          f"inverse dynamics {best / n * 1e9:.0f} ns per state batched -> "
+          f"{pin_delta / (best / n):.0f}x faster than pinocchio's Delta per state")
     if skip_z:
         return
     for form in ("closed", "program"):
