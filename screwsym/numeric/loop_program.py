@@ -507,14 +507,11 @@ def _program(mech: Any, actuated: tuple, symbols: tuple, what: str, gravity: Any
     vals = _Values(list(raw.values()), {})
     Ap = {r: {pindex[c]: (e, vals.table[raw[e]]) for c, e in row.items()
               if c in pindex and e != 0} for r, row in entries.items()}
-    env_t: dict = dict(point)
-    for t, rhs in W.assigns:
-        env_t[t] = rhs.xreplace(env_t)
-    columns = []
+    columns = []  # each passive column's twist, and its values there
     for f in passive:
         e = next(e for e in range(len(graph.edges)) if offsets[e] <= f < offsets[e] + len(tw[e]))
         t = tw[e][f - offsets[e]]
-        columns.append((t, [vals.number(sympify(x, strict=True).xreplace(env_t)) for x in t]))
+        columns.append((t, [vals.number(sympify(x, strict=True).xreplace(env)) for x in t]))
     loops = [[(pindex[offsets[e] + k_], s) for e, s in loop for k_ in range(len(tw[e]))
               if offsets[e] + k_ in pindex] for loop in graph.loops]
     lu = _Normal(W, Ap, n, vals, labels, columns, loops)
