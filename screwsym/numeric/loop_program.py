@@ -37,12 +37,13 @@ The program, in order:
    Newton–Euler wrench ``M V' + [V, M V] - W``;
 5. the virtual power: the wrenches summed over each subtree (a backward pass) give the
    tree joints' forces ``f``; then ``tau = G^T f = f_a - A_a^T lambda`` with
-   ``A_p^T lambda = f_p`` (one transposed solve with the same factors, ``lambda`` the
-   loops' multipliers), instead of the ``k`` solves of ``G``.  The mass matrix is
+   ``lambda = A_p (A_p^T A_p)^-1 f_p``, the loops' multipliers (the least-norm solution of
+   ``A_p^T lambda = f_p``: one more solve with the same factors, instead of the ``k``
+   solves of ``G``).  The mass matrix is
    ``H = sum_l A_l^T Delta M_l A_l`` with ``A_l = P_l G`` (``k`` solves for ``G``).
 
 Where it divides.  Each pivot ``d`` of ``D`` that is not a number is a condition of the
-program (:attr:`LoopProgram.conditions`, ``Ne(d, 0)``): their product is
+program (:attr:`LoopProgram.conditions`, ``Ne(d, 0)``): the product of all the pivots is
 ``det(A_p^T A_p)``, the sum of the squares of the minors ``det A_p[R]`` (Cauchy–Binet), so
 all of them hold exactly where the actuated rates determine the motion
 (:meth:`Mechanism.actuation_condition
