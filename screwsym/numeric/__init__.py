@@ -10,6 +10,8 @@ r"""Floats: the chapter's operations generated as vectorised functions, and nume
   :func:`forward_dynamics`;
 - :mod:`~screwsym.numeric.loop_dynamics`: a closed loop's inverse dynamics and mass
   matrix as generated functions of its configuration's symbols;
+- :mod:`~screwsym.numeric.loop_program`: the same as straight-line programs
+  (:func:`loop_dynamics_program`);
 - :mod:`~screwsym.numeric.ik`: :func:`inverse_kinematics_function`, every closed-form
   inverse kinematics branch at many poses.
 
@@ -24,6 +26,7 @@ from ._direct import recycle_results
 from .dynamics import DynamicsFunctions, dynamics_functions, forward_dynamics
 from .ik import inverse_kinematics_function
 from .loop_dynamics import LoopDynamicsFunctions, loop_dynamics_functions
+from .loop_program import LoopProgram, loop_dynamics_program
 from .mobility import MobilityMap, mobility_map
 from .screws import NAMES, functions_for
 from .transmission import TransmissionMap, jacobian_map, transmission_map
@@ -32,7 +35,8 @@ __all__ = [*NAMES, "functions_for", "NAMES", "MobilityMap", "mobility_map",
            "DynamicsFunctions", "dynamics_functions", "forward_dynamics",
            "TransmissionMap", "transmission_map", "jacobian_map",
            "recycle_results", "inverse_kinematics_function",
-           "LoopDynamicsFunctions", "loop_dynamics_functions"]
+           "LoopDynamicsFunctions", "loop_dynamics_functions",
+           "LoopProgram", "loop_dynamics_program"]
 
 
 def __getattr__(name: str) -> Callable:

@@ -1,19 +1,28 @@
 r"""A closed loop's dynamics as generated numeric functions of its configuration's symbols.
 
 :func:`loop_dynamics_functions` takes a :class:`~screwsym.systems.linkage.Mechanism` with
-inertias whose configuration is given by symbols (a crank angle, a platform's height, the
-parameters of a family of closed configurations), forms the closed-form inverse dynamics
-and mass matrix of :meth:`Mechanism.inverse_dynamics
-<screwsym.systems.linkage.Mechanism.inverse_dynamics>` and :meth:`Mechanism.mass_matrix
-<screwsym.systems.linkage.Mechanism.mass_matrix>` once, exactly, with the actuated rates
-and accelerations as symbols, and compiles them through :func:`screwsym.lambdify`
-(common subexpressions eliminated: one straight-line program per function) on any back
-end.  The result is ``tau(p, qd, qdd)`` and ``H(p)`` over batches of states.
+inertias whose configuration is given by symbols (a crank angle, a platform's pose, the
+parameters of a family of closed configurations) and compiles its inverse dynamics and
+mass matrix through :func:`screwsym.lambdify` on any back end: ``tau(p, qd, qdd)`` and
+``H(p)`` over batches of states.  Two forms:
 
-The functions hold where the closed forms do: off the actuation singularities of
-:meth:`Mechanism.actuation_condition
-<screwsym.systems.linkage.Mechanism.actuation_condition>` (there they divide by zero) and
-on configurations that close the loops (the symbols' values must describe one).
+- ``form="program"`` (the default): the straight-line programs of
+  :func:`~screwsym.numeric.loop_program.loop_dynamics_program` (the network matrix
+  factored, sparse, the passive rates and accelerations solved, the links' Newton–Euler
+  wrenches and the virtual power, one assignment per intermediate), written in a fraction
+  of a second also for a Delta robot at a symbolic pose ``(x, y, z)``, where the closed
+  forms are out of reach (``benchmarks/bench_loop_dynamics.py``);
+- ``form="closed"``: the exact closed forms of :meth:`Mechanism.inverse_dynamics
+  <screwsym.systems.linkage.Mechanism.inverse_dynamics>` and :meth:`Mechanism.mass_matrix
+  <screwsym.systems.linkage.Mechanism.mass_matrix>`, with the actuated rates and
+  accelerations as symbols, common subexpressions eliminated: dear with several
+  symbols, but a closed form to read.
+
+The functions hold on configurations that close the loops (the symbols' values must
+describe one) and off the actuation singularities of :meth:`Mechanism.actuation_condition
+<screwsym.systems.linkage.Mechanism.actuation_condition>`: there the programs give ``nan``
+(each of their :attr:`~screwsym.numeric.loop_program.LoopProgram.conditions` fails), the
+closed forms divide by zero.
 """
 
 from __future__ import annotations
@@ -25,8 +34,9 @@ from sympy import Dummy, ImmutableMatrix, Matrix, Symbol
 
 from ..algebra.budget import BUDGET
 from ..codegen import lambdify
-from ..core.checks import check_count, check_sequence, check_vector
+from ..core.checks import check_choice, check_count, check_sequence, check_vector
 from ._batch import shaped
+from .loop_program import loop_dynamics_program
 
 __all__ = ["LoopDynamicsFunctions", "loop_dynamics_functions"]
 
@@ -38,11 +48,12 @@ class LoopDynamicsFunctions(NamedTuple):
     inverse_dynamics: Any
     #: ``mass_matrix(p)``: ``(..., k, k)``
     mass_matrix: Any
-    #: the closed form of the actuator forces in ``symbols``, the rates ``qd`` and
-    #: accelerations ``qdd`` (a ``k x 1`` matrix)
-    tau: ImmutableMatrix
-    #: the closed-form mass matrix in ``symbols``
-    H: ImmutableMatrix
+    #: the actuator forces in ``symbols``, the rates ``qd`` and accelerations ``qdd``: a
+    #: :class:`~screwsym.numeric.loop_program.LoopProgram` (``form="program"``) or the
+    #: closed form, a ``k x 1`` matrix (``form="closed"``)
+    tau: Any
+    #: the mass matrix in ``symbols``: its program, or its closed form
+    H: Any
     #: the rate and acceleration symbols of ``tau``
     rates: tuple
     accelerations: tuple
@@ -50,14 +61,24 @@ class LoopDynamicsFunctions(NamedTuple):
 
 @lru_cache(maxsize=16)
 def _functions(mech: Any, actuated: tuple, symbols: tuple, gravity: ImmutableMatrix,
-               backend: str | None, budget: int) -> LoopDynamicsFunctions:
+               backend: str | None, budget: int, form: str) -> LoopDynamicsFunctions:
     k = len(actuated)
+    p = Matrix(symbols)
+    if form == "program":
+        tau_p = loop_dynamics_program(mech, list(actuated), list(symbols), "inverse_dynamics",
+                                      gravity, budget=budget).float_guarded()
+        H_p = loop_dynamics_program(mech, list(actuated), list(symbols), "mass_matrix",
+                                    budget=budget).float_guarded()
+        return LoopDynamicsFunctions(
+            shaped(lambdify(list(tau_p.arguments), tau_p, backend, names=["p", "qd", "qdd"]),
+                   (k,)),
+            shaped(lambdify(list(H_p.arguments), H_p, backend, names=["p"]), (k, k)),
+            tau_p, H_p, tuple(tau_p.arguments[1]), tuple(tau_p.arguments[2]))
     qd = tuple(Dummy(f"qd{i}", real=True) for i in range(k))
     qdd = tuple(Dummy(f"qdd{i}", real=True) for i in range(k))
     tau = mech.inverse_dynamics(list(actuated), list(qd), list(qdd), list(gravity),
                                 budget=budget)
     H = mech.mass_matrix(list(actuated), budget=budget)
-    p = Matrix(symbols)
     return LoopDynamicsFunctions(
         shaped(lambdify([p, Matrix(qd), Matrix(qdd)], tau, backend,
                          names=["p", "qd", "qdd"]), (k,)),
@@ -65,8 +86,13 @@ def _functions(mech: Any, actuated: tuple, symbols: tuple, gravity: ImmutableMat
         tau, H, qd, qdd)
 
 
+#: the forms :func:`loop_dynamics_functions` compiles
+FORMS = ("program", "closed")
+
+
 def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
                             gravity: Any = (0, 0, -9.81), backend: str | None = None, *,
+                            form: str = "program",
                             budget: int = BUDGET) -> LoopDynamicsFunctions:
     r"""The closed loop's inverse dynamics and mass matrix as batched numeric functions.
 
@@ -74,8 +100,12 @@ def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
     the actuated joints' numbers, ``symbols`` the symbols its configuration (joints and
     inertias) is given in, in the order of the argument ``p`` (``(..., m)``); ``gravity``
     numbers (default ``(0, 0, -9.81)``); ``backend`` as for :func:`screwsym.lambdify`.
-    ``budget`` bounds the exact closed forms (:mod:`screwsym.algebra.budget`; past it a
-    ``ValueError``).  Cached per mechanism, actuation, symbols, gravity and back end.
+    ``form`` ``"program"`` (default: the straight-line programs of
+    :func:`~screwsym.numeric.loop_program.loop_dynamics_program`, ``nan`` where one of
+    their pivots vanishes) or ``"closed"`` (the exact closed forms; see the module
+    docstring).  ``budget`` bounds the symbolic work (:mod:`screwsym.algebra.budget`; past
+    it a ``ValueError``).  Cached per mechanism, actuation, symbols, gravity, back end and
+    form.
 
     A parallelogram four-bar whose crank, at angle ``t``, carries a point mass of 2 at its
     pin: the coupler translates, the mass moves on the crank's circle, so the crank needs
@@ -94,12 +124,20 @@ def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
     ...                   ("rocker", "ground", R([2, 0, 0], z))], base="ground",
     ...                  inertias={"crank": SpatialInertia.point_mass(2, A)})
     >>> f = loop_dynamics_functions(four, [0], [t], gravity=(0, -10, 0), backend="numpy")
-    >>> f.inverse_dynamics(np.array([[0.0], [np.pi / 3]]), np.ones((2, 1)),
+    >>> f.inverse_dynamics(np.array([[np.pi / 3], [2 * np.pi / 3]]), np.ones((2, 1)),
     ...                    np.full((2, 1), 0.5)).round(12)
-    array([[21.],
-           [11.]])
+    array([[11.],
+           [-9.]])
     >>> f.mass_matrix(np.array([0.3]))
     array([[2.]])
+    >>> f.tau.conditions        # the pivots it divides by: nan where one is zero
+    (Ne(N2_2, 0), Ne(N3_3_2, 0), Ne(N4_4_2, 0))
+    >>> f.mass_matrix(np.array([0.0]))      # folded: the crank does not drive it
+    array([[nan]])
+    >>> fc = loop_dynamics_functions(four, [0], [t], gravity=(0, -10, 0), backend="numpy",
+    ...                              form="closed")
+    >>> fc.tau
+    Matrix([[2*_qdd0 + 20*cos(t)]])
     """
     from ..systems.linkage import Mechanism
 
@@ -122,8 +160,10 @@ def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
     if missing:
         raise ValueError("symbols: the mechanism's configuration has the symbols "
                          f"{sorted(map(str, missing))} not among them")
+    form = check_choice(form, "form", FORMS)
     return _functions(mech, tuple(int(a) if isinstance(a, int) else a for a in acts),
-                      tuple(syms), ImmutableMatrix(g), backend, check_count(budget, "budget"))
+                      tuple(syms), ImmutableMatrix(g), backend, check_count(budget, "budget"),
+                      form)
 
 
 def _free_symbols(mech: Any) -> set:

@@ -15,7 +15,7 @@ import shutil
 
 import numpy as np
 import pytest
-from sympy import Rational, cos, diag, sin, symbols
+from sympy import Float, Rational, cos, diag, sin, symbols
 
 from screwsym.core.inertia import SpatialInertia
 from screwsym.numeric import loop_dynamics_functions
@@ -56,21 +56,37 @@ def test_generated_loop_dynamics_agree_with_the_lagrangian_and_the_closed_form(b
         pytest.skip("no C compiler")
     mech = parallelogram()
     f = loop_dynamics_functions(mech, [0], [t], gravity=(0, -9.81, 0),
-                                backend=backend)
+                                backend=backend)  # the straight-line programs (the default)
     rng = np.random.default_rng(35)
     q = rng.uniform(0.2, 2.9, (50, 1))  # off sin(t) = 0, where the parallelogram folds
     qd, qdd = rng.normal(size=(50, 1)), rng.normal(size=(50, 1))
     truth, H = lagrangian(q, qd, qdd)
     np.testing.assert_allclose(f.inverse_dynamics(q, qd, qdd), truth, rtol=1e-12, atol=1e-12)
     np.testing.assert_allclose(f.mass_matrix(q), np.full((50, 1, 1), H), rtol=1e-12)
-    # the exact closed form at a few of the states, evaluated at 30 digits
+    # the program evaluated by SymPy at a few of the states agrees with the compiled one
     for i in range(3):
-        subs = {t: q[i, 0], f.rates[0]: qd[i, 0], f.accelerations[0]: qdd[i, 0]}
-        assert abs(float(f.tau[0].evalf(30, subs=subs)) - f.inverse_dynamics(q[i], qd[i], qdd[i])[0]) < 1e-12
+        value = f.tau.evaluate([Float(q[i, 0], 30)], [qd[i, 0]], [qdd[i, 0]])[0]
+        assert abs(float(value) - f.inverse_dynamics(q[i], qd[i], qdd[i])[0]) < 1e-12
+    # folded flat (t = 0, an actuation singularity): nan, not a number
+    assert np.isnan(f.inverse_dynamics(np.zeros(1), np.ones(1), np.ones(1))).all()
+    assert np.isnan(f.mass_matrix(np.zeros(1))).all()
     # the checker rejects a heavier coupler
     heavier = loop_dynamics_functions(parallelogram((MASSES[0], 2.001, MASSES[2])), [0], [t],
                                       gravity=(0, -9.81, 0), backend=backend)
     assert np.abs(heavier.inverse_dynamics(q, qd, qdd) - truth).max() > 1e-4
+
+
+def test_the_closed_forms_agree_with_the_lagrangian():
+    f = loop_dynamics_functions(parallelogram(), [0], [t], gravity=(0, -9.81, 0),
+                                backend="numpy", form="closed")
+    rng = np.random.default_rng(36)
+    q = rng.uniform(0.2, 2.9, (20, 1))
+    qd, qdd = rng.normal(size=(20, 1)), rng.normal(size=(20, 1))
+    truth, H = lagrangian(q, qd, qdd)
+    np.testing.assert_allclose(f.inverse_dynamics(q, qd, qdd), truth, rtol=1e-12, atol=1e-12)
+    for i in range(3):  # the exact closed form at 30 digits
+        subs = {t: q[i, 0], f.rates[0]: qd[i, 0], f.accelerations[0]: qdd[i, 0]}
+        assert abs(float(f.tau[0].evalf(30, subs=subs)) - truth[i, 0]) < 1e-12
 
 
 def test_bad_input_is_refused_clearly():
@@ -83,6 +99,8 @@ def test_bad_input_is_refused_clearly():
         loop_dynamics_functions(mech, [0], ["t"])
     with pytest.raises(ValueError, match="gravity"):
         loop_dynamics_functions(mech, [0], [t], gravity=(0, 0, -t))
+    with pytest.raises(ValueError, match="form"):
+        loop_dynamics_functions(mech, [0], [t], form="closed-form")
     bare = Mechanism(list(mech.joints), base="ground")
     with pytest.raises(ValueError, match="no inertias"):
         loop_dynamics_functions(bare, [0], [t])
