@@ -19,7 +19,10 @@ manipulators ...", 126 (2004) 101-108; *Type Synthesis of Parallel Mechanisms*, 
 2007) could not be read here: they are not in the stored corpora searched for this work (docs,
 pages, code, issues: the titles, "Table", the leg names such as "PRRR", "RRRRR", "UPU",
 "CRR").  For them the tests compare with the families those works *name* (and Tsai's,
-Clavel's, Pierrot's, Merlet's); for 3R no published enumeration with numbers was found.
+Clavel's, Pierrot's, Merlet's).  For 3R the one published count found, 73 non-redundant limb
+types (Nigatu, Li, Shi, Lu, Dong, "Unveiling the complete variant of spherical robots", arXiv
+2403.03505, 2024), could be read only in its abstract, not its list or its restrictions (joint
+kinds, limb length), so it is not compared.
 benchmarks/bench_synthesis.py prints the full table of counts (limb types by length and
 certified mechanisms, per motion pattern and grammar).
 """
@@ -490,10 +493,11 @@ def test_mixed_designs_of_unequal_limbs_are_certified_too():
 
 # ------------------------------------------------------------ against Schappler's database
 # M. Schappler, robsynth-parroblib (github.com/SchapplM/robsynth-parroblib, MIT licence,
-# commit 01c8d77 of 2025-03-03): the parallel robots of his structural synthesis
-# (Schappler, Tappe, Ortmaier, "Exploiting dynamics parameter linearity for design
-# optimization in combined structural and dimensional robot synthesis", Robotics 10(2)
-# (2021) 64, sec. 2; the 3T1R legs of Kong & Gosselin 2007 added in 2024).  Per motion
+# commit 01c8d77 of 2025-03-03): the parallel robots of his combined structural and
+# dimensional synthesis (robsynth-structdimsynth; Schappler, Tappe, Ortmaier, "Exploiting
+# dynamics parameter linearity for design optimization in combined structural and
+# dimensional robot synthesis", IFToMM World Congress 2019; Ramirez, dissertation, Hannover
+# 2018; 3T1R legs of Kong & Gosselin 2007 added in 2024).  Per motion
 # pattern, sym_<aTbR>/sym_<aTbR>_list.csv lists each robot with its leg chain and its
 # "Gelenkgruppen" (which joint axes are parallel: joints with one number are parallel),
 # and P*/actuation.csv its "Rangverlust Plattform-FG" (0: a working robot).  The rows
