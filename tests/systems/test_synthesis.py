@@ -704,10 +704,10 @@ def test_3t1r_legs_against_schappler_database():
     direction of the platform's rotation is not in the list (it is the robot's base and
     platform coupling), so a leg counts as found if, with one of its groups of parallel
     revolutes along z, its type is among the 152 that limbs() finds with at most five
-    joints: all 79 are, and they are 37 of the 152 types.  Found here beyond them (115): 73
-    legs with two or more slides (status 1 in the database, as for 3T), the 13 legs of four
-    joints (the database's working 3T1R robots all have 5-joint legs), and 39 five-joint legs
-    with one slide, relabellings of database families with their U placed, or their groups
+    joints: all 79 are, and they are 37 of the 152 types.  Found here beyond them (115): the
+    13 legs of four joints (the database's working 3T1R robots all have 5-joint legs), 63
+    five-joint legs with two or more slides (status 1 in the database, as for 3T), and 39
+    five-joint legs with at most one slide, relabellings of database families with their U placed, or their groups
     turned about, where no robot of the database has them, among them the URU with its outer
     axes along z of Fang & Tsai (2002) and Kong & Gosselin (2007) (the database has the URU
     chain S5RRRRR7V1 among its 3T robots, not among its working 3T1R robots).
@@ -728,8 +728,9 @@ def test_3t1r_legs_against_schappler_database():
     assert {"RRRRR (1∥2∥3∥z, 4∥5)", "RRRRR (1∥5∥z, 2∥3∥4)"} <= names
     assert len(covered) == 37
     extra = [t for t in five_joint_limbs("3T1R") if t.joints not in covered]
-    slides = [t for t in extra if t.letters.count("P") + t.letters.count("C") >= 2]
-    assert (len(extra), len(slides), sum(t.freedom == 4 for t in extra)) == (115, 73, 13)
+    four = [t for t in extra if t.freedom == 4]
+    slides = [t for t in extra if t.freedom == 5 and t.letters.count("P") + t.letters.count("C") >= 2]
+    assert (len(extra), len(four), len(slides)) == (115, 13, 63)
     # among the one-slide five-joint legs found beyond the database: the URU of Fang & Tsai
     # (IJRR 21(9) 2002) and Kong & Gosselin (2007), and the UPU with the same axes
     assert {"URU (1∥5∥z, 2∥3∥4)", "UPU (1∥5∥z, 2∥3∥4)"} <= {t.name for t in extra}
