@@ -10,16 +10,43 @@ twist system ``T_L`` contains ``T_M``; a mechanism of such limbs has the wanted
 motion iff the limbs' constraints together span ``W_M``.
 
 What is enumerated (:func:`limbs`) is a finite grammar of *limb types*: a
-sequence of ``kinds`` (R and P joints, at most ``max_joints``) with, for each
-joint, an axis direction label (joints with one label are parallel; a label may
-be one of the motion's own directions, the ``z`` of 3T1R; a prismatic joint's may
-be normal to it, "⊥z", kept only where the type with a generic direction there is
-not valid: the in-plane slides of planar chains) and, for each
+sequence of ``kinds`` (R and P joints and parallelograms Pa, at most ``max_joints``)
+with, for each joint, an axis direction label (joints with one label are parallel; a
+label may be one of the motion's own directions, the ``z`` of 3T1R; a prismatic joint's
+or a parallelogram's may be normal to it, "⊥z", kept only where the type with a generic
+direction there is not valid: the in-plane slides of planar chains) and, for each
 revolute, where its axis passes: anywhere, through the motion's centre (3R), or
-through the previous revolute's point (two such axes make a U joint).  Two types
+through the previous revolute's point (two such axes make a U joint).  With
+``perpendicular=True``, a sequence that fails with generic directions is tried again
+with one or two pairs of its labels made perpendicular ("4⟂1": joint 4's axis normal
+to joint 1's; "3⟂1, 3⟂2": joint 3's axis normal to the plane of joints 1 and 2; "2⟂z"),
+and kept with the fewest pairs that make it pass, so that a relation is named only
+where the motion needs it (the slides of Kong & Gosselin's spherical legs, normal to
+the axes of a planar sub-chain).  Two types
 are the same when a relabelling, the reversal of the limb (the same twists read
-from the platform), or a reordering of adjacent prismatic joints (translations
-commute) maps one to the other.  Every candidate is **checked**, not looked up:
+from the platform), or a reordering of adjacent prismatic joints and parallelograms
+(translations commute) maps one to the other.
+
+**Parallelograms.**  A planar parallelogram loop (four hinges along ``h``, two equal
+rods) moves its output bar on a *circular translation*: its orientation is kept and
+each point runs on a circle in the plane normal to ``h`` (Kong & Gosselin, *Type
+Synthesis of Parallel Mechanisms*, Springer 2007, who list the Pa among the joints of
+their limbs; the forearms of Clavel's Delta, "DELTA, a fast robot with parallel geometry",
+18th ISIR 1988, and of the H4, Pierrot & Company, "H4: a new family of 4-dof parallel
+robots", AIM 1999).  So a Pa is modelled as the library's compound pair
+:class:`~screwsym.systems.joints.Parallelogram`: one freedom, its twist at the instance
+the translation ``v = n x rod`` normal to ``h`` and to the rods, and a label that is the
+hinges' direction ``h``.  At first order it is the prismatic joint along ``v``; unlike
+one, ``v`` turns with the angle (``dv = n x v`` per unit angle), and that term enters
+the second-order check below (and :meth:`Mechanism.second_order`), so a Pa is accepted
+only where the turning of its translation stays inside the wanted motion.  The finite
+argument is the classical one: the output's orientation never changes, so a limb with
+a Pa has at every pose the twist system of the same type (shown in the tests by a
+parallelogram closed numerically a finite step away, its coupler's rotation the
+identity).  The Delta's (SS)² rod pairs are this Pa with the two rods' spins, idle
+freedoms that move no link but the rods.
+
+Every candidate is **checked**, not looked up:
 it is instantiated at a random integer (generic) geometry and kept iff, exactly,
 
 1. its twists are independent (no passive freedom) and contain ``T_M``;
@@ -27,9 +54,10 @@ it is instantiated at a random integer (generic) geometry and kept iff, exactly,
    is active iff ``T_M`` with the other joints' twists has the limb's rank);
 3. the motion extends to second order within ``T_M``: for every joint rate
    ``qdot`` with ``J qdot`` in ``T_M`` and every constraint wrench ``w`` of the
-   limb, ``sum_{i<j} w o [$_i, $_j] qdot_i qdot_j = 0`` (the derivative of the
-   spatial twist of a serial chain is ``J qddot + sum_{i<j} [$_i, $_j] qdot_i
-   qdot_j``, and a path in the subgroup has its derivative in ``T_M``).  This
+   limb, ``sum_{i<j} w o [$_i, $_j] qdot_i qdot_j + sum_k w o dv_k qdot_k^2 = 0``
+   (the derivative of the spatial twist of a serial chain is ``J qddot +
+   sum_{i<j} [$_i, $_j] qdot_i qdot_j``, plus ``dv_k qdot_k^2`` for a parallelogram
+   ``k``, and a path in the subgroup has its derivative in ``T_M``).  This
    rejects arrangements that have the motion only at the configuration drawn
    (an R_a R_b R_a R_b chain is 3T there and not a finite step away).
 
@@ -49,11 +77,11 @@ same in every limb, the one nearest the base that works) for which the
 Jacobian of :func:`~screwsym.systems.actuation.jacobian` is invertible at the
 instance (no actuation singularity there).
 
-What is not in the grammar: perpendicular relations between revolute axes and other
-angles, lines through two joints' points (a P along the line of two U centres), helical
-joints, parallelograms and other closed sub-chains (the Delta's), virtual
-chains for motions that are not subgroups (2R1T, 1T2R, 3T2R); see the notes of
-the functions.
+What is not in the grammar: angles other than parallel and perpendicular, three
+mutually perpendicular directions (at most two pairs are tried), lines through two
+joints' points (a P along the line of two U centres), helical joints, closed sub-chains
+other than the parallelogram, virtual chains for motions that are not subgroups (2R1T,
+1T2R, 3T2R); see the notes of the functions.
 
 References
 ==========
@@ -84,7 +112,7 @@ from sympy.polys.matrices import DomainMatrix
 from ..algebra.budget import BUDGET, bounded, charge
 from ..core.twist import Twist
 from .actuation import jacobian
-from .joints import Prismatic, Revolute
+from .joints import Joint, Parallelogram, Prismatic, Revolute
 from .linkage import Mechanism
 from .parallel import Limb, Mobility, ParallelMechanism
 from .screw_system import ScrewSystem
@@ -244,21 +272,25 @@ def _reciprocal(w: tuple, t: tuple) -> Any:
 _Joint = tuple
 
 
-def _relabel(seq: tuple, special: int) -> tuple:
+def _relabel(seq: tuple, special: int, perp: tuple | None = None) -> Any:
     """The direction labels renumbered in order of first appearance (labels below ``special``,
-    the motion's own directions, kept)."""
+    the motion's own directions, kept).  With ``perp`` (pairs of perpendicular labels): the
+    pair ``(sequence, pairs)``, the pairs renumbered alike, each sorted, in order."""
     names: dict = {}
-    perp: dict = {}
+    perps: dict = {}
     out = []
     for kind, d, p in seq:
         if d < 0:  # normal to the motion's first direction: numbered -1, -2, ...
-            perp.setdefault(d, -1 - len(perp))
-            out.append((kind, perp[d], p))
+            perps.setdefault(d, -1 - len(perps))
+            out.append((kind, perps[d], p))
             continue
         if d >= special and d not in names:
             names[d] = special + len(names)
         out.append((kind, d if d < special else names[d], p))
-    return tuple(out)
+    if perp is None:
+        return tuple(out)
+    pairs = (tuple(sorted(names.get(x, x) for x in pair)) for pair in perp)
+    return tuple(out), tuple(sorted(pairs))
 
 
 def _reversed(seq: tuple) -> tuple:
@@ -281,8 +313,8 @@ def _swaps(seq: tuple) -> list:
     for k in range(len(seq) - 1):
         a, b = seq[k], seq[k + 1]
         after = seq[k + 2] if k + 2 < len(seq) else None
-        if a[0] == b[0] == "P":
-            ok = True
+        if a[0] in ("P", "Pa") and b[0] in ("P", "Pa"):
+            ok = True  # translations commute (a parallelogram's too: its output only translates)
         elif {a[0], b[0]} == {"R", "P"} and a[1] == b[1]:
             r = a if a[0] == "R" else b
             ok = r[2] != "u" and not (b[0] == "R" and after is not None and after[2] == "u")
@@ -304,11 +336,13 @@ def _variants(seq: tuple) -> list:
     return list(seen)
 
 
-def _canonical(seq: tuple, special: int) -> tuple:
+def _canonical(seq: tuple, special: int, perp: Any = None) -> Any:
+    """The least equivalent sequence; with ``perp`` (a tuple of pairs of perpendicular labels),
+    the least equivalent ``(sequence, pairs)``."""
     forms = []
     for s in (seq, _reversed(seq)):
         for v in _variants(s):
-            forms.append(_relabel(v, special))
+            forms.append(_relabel(v, special, perp))
     return min(forms)
 
 
@@ -348,14 +382,15 @@ def _candidates(kinds: tuple, n: int, special: int, center: bool):
         for kind in kinds:
             # a prismatic joint may also be normal to the motion's direction (in the plane
             # of a planar motion): labels -1, -2, ...
-            extra = range(-1, -normal - 2, -1) if kind == "P" and special else ()
+            # (a parallelogram's label is its hinges' direction)
+            extra = range(-1, -normal - 2, -1) if kind in ("P", "Pa") and special else ()
             for d in [*range(special + used + 1), *extra]:
                 new = used + (d == special + used)
-                if kind == "P":
+                if kind in ("P", "Pa"):
                     # two prismatic joints along one direction: one passive freedom
-                    if any(j[0] == "P" and j[1] == d for j in prefix):
+                    if kind == "P" and any(j[0] == "P" and j[1] == d for j in prefix):
                         continue
-                    yield from seqs(prefix + (("P", d, "-"),), new, normal + (d == -normal - 1))
+                    yield from seqs(prefix + ((kind, d, "-"),), new, normal + (d == -normal - 1))
                     continue
                 points = ["g"] + (["c"] if center else [])
                 last_r = prefix[-1] if prefix and prefix[-1][0] == "R" else None
@@ -371,8 +406,10 @@ def _candidates(kinds: tuple, n: int, special: int, center: bool):
 
 
 # ------------------------------------------------------------------ a generic instance
-def _geometry(seq: tuple, mo: Motion, seed: int) -> list:
-    """Integer joint geometry: per joint (kind, direction, point or None)."""
+def _geometry(seq: tuple, mo: Motion, seed: int, perp: tuple = ()) -> list:
+    """Integer joint geometry: per joint (kind, direction, point or None); a parallelogram's
+    entry is ("Pa", its output's translation v, (p1, bar, rod)) (:func:`_parallelogram`).
+    A label in pairs of ``perp`` is drawn normal to the labels drawn before it."""
     rnd = random.Random(seed)
     dirs: dict = {i: d for i, d in enumerate(mo.directions)}
 
@@ -382,16 +419,39 @@ def _geometry(seq: tuple, mo: Motion, seed: int) -> list:
             if any(v):
                 return v
 
+    def normal_to(e: tuple) -> tuple:
+        while True:
+            v = _cross(e, vec())
+            if any(v):
+                return v
+
     out: list[tuple[str, tuple, Any]] = []
     last: Any = None
     for kind, d, p in seq:
         if d not in dirs:
-            dirs[d] = _cross(mo.directions[0], vec()) if d < 0 else vec()
-            while not any(dirs[d]):  # pragma: no cover - a draw along the direction itself
-                dirs[d] = _cross(mo.directions[0], vec())
+            partners = [dirs[e] for pair in perp if d in pair for e in pair if e != d and e in dirs]
+            if d < 0:
+                dirs[d] = normal_to(mo.directions[0])
+            elif not partners:
+                dirs[d] = vec()
+            elif len(partners) == 1:
+                dirs[d] = normal_to(partners[0])
+            elif len(partners) == 2 and any(_cross(*partners)):
+                dirs[d] = _cross(*partners)
+            else:
+                raise ValueError("perpendicular: a direction normal to three directions, or to "
+                                 "two parallel ones, is not drawn generically")
         u = dirs[d]
         if kind == "P":
             out.append(("P", u, None))
+            continue
+        if kind == "Pa":
+            bar = normal_to(u)
+            rod = normal_to(u)
+            while not any(_cross(bar, rod)):  # pragma: no cover - a flat draw
+                rod = normal_to(u)
+            p1 = vec(-200, 200)
+            out.append(("Pa", _cross(_cross(bar, rod), rod), (p1, bar, rod)))
             continue
         if p == "c":
             pt = mo.center
@@ -407,16 +467,28 @@ def _geometry(seq: tuple, mo: Motion, seed: int) -> list:
 def _twist_rows(geom: list) -> list:
     rows = []
     for kind, u, pt in geom:
-        rows.append((0, 0, 0) + u if kind == "P" else u + _cross(pt, u))
+        rows.append(u + _cross(pt, u) if kind == "R" else (0, 0, 0) + u)
     return rows
+
+
+def _acc_rows(geom: list) -> dict:
+    """A parallelogram's own term of the second order: its output's translation ``v = n x rod``
+    turns with its angle, ``dv = n x v`` (:class:`~screwsym.systems.joints.Parallelogram`)."""
+    out = {}
+    for k, (kind, v, extra) in enumerate(geom):
+        if kind == "Pa":
+            n = _cross(extra[1], extra[2])
+            out[k] = (0, 0, 0) + _cross(n, v)
+    return out
 
 
 def _motion_rows(mo: Motion) -> list:
     return [tuple(int(x) for x in t.matrix) for t in mo.twists]
 
 
-def _check_rows(J: list, G: list) -> str | None:
-    """Why the joint twists ``J`` (integer 6-tuples) do not give the motion ``G``, or None."""
+def _check_rows(J: list, G: list, acc: dict | None = None) -> str | None:
+    """Why the joint twists ``J`` (integer 6-tuples) do not give the motion ``G``, or None;
+    ``acc``: the derivative of joint ``k``'s twist along its own path (a parallelogram's)."""
     n, m = len(J), len(G)
     if _rank(J) < n:
         return "its joint twists are dependent (a passive freedom)"
@@ -437,10 +509,12 @@ def _check_rows(J: list, G: list) -> str | None:
         for i in range(n):
             for j in range(i + 1, n):
                 S[i][j] = Fraction(_reciprocal(w, _bracket(J[i], J[j])))
+        D = {k: Fraction(_reciprocal(w, t)) for k, t in (acc or {}).items()}
         for a in K:
             for b in K:
                 val = sum(S[i][j] * (a[i] * b[j] + b[i] * a[j]) for i in range(n)
                           for j in range(i + 1, n))
+                val += sum(2 * d * a[k] * b[k] for k, d in D.items())
                 if val:
                     return "its motion does not extend to second order within the wanted motion"
     return None
@@ -455,14 +529,19 @@ def _null_rows(rows: list) -> list:
 class LimbType(NamedTuple):
     """A limb type: joints with relations between their axes, for a wanted motion (:func:`limbs`).
 
-    ``joints`` holds, per joint, ``(kind, direction label, point label)``: joints with one
-    direction label are parallel (labels below ``len(motion.directions)`` are the motion's
-    own directions, negative labels directions normal to its first one); a revolute's point label is ``"g"`` (anywhere), ``"c"`` (through the
-    motion's centre) or ``"u"`` (through the previous revolute's point).
+    ``joints`` holds, per joint, ``(kind, direction label, point label)``: the kind ``"R"``,
+    ``"P"`` or ``"Pa"`` (a parallelogram, whose label is its hinges' direction); joints
+    with one direction label are parallel (labels below ``len(motion.directions)`` are the
+    motion's own directions, negative labels directions normal to its first one); a
+    revolute's point label is ``"g"`` (anywhere), ``"c"`` (through the motion's centre) or
+    ``"u"`` (through the previous revolute's point).  ``perpendicular`` holds pairs of
+    labels whose directions are normal to each other (a label in two pairs is normal to a
+    plane).
     """
 
     motion: Motion
     joints: tuple
+    perpendicular: tuple = ()
 
     @property
     def freedom(self) -> int:
@@ -524,6 +603,14 @@ class LimbType(NamedTuple):
                 parts.append("∥".join(idx) + f"∥{label}")
             elif len(idx) > 1:
                 parts.append("∥".join(idx))
+        first = {d: idx[0] for d, idx in groups.items()}
+        for a, b in self.perpendicular:  # each label named by its first joint, z by its name
+            if a < special:
+                axis = self.motion.directions[a]
+                label = names[axis.index(1)] if sorted(axis) == [0, 0, 1] else str(axis)
+                parts.append(f"{first[b]}⟂{label}")
+            else:
+                parts.append(f"{first[b]}⟂{first[a]}")
         through = [str(i) for i, j in enumerate(self.joints, 1) if j[2] == "c"]
         if through:
             parts.append(",".join(through) + " through O")
@@ -547,30 +634,50 @@ class LimbType(NamedTuple):
         >>> t.name, leg.freedom, leg.constraints.rank
         ('PRRR (2∥3∥4)', 4, 2)
         """
+        geom = self._generic(seed)
+        joints: list[Joint] = []
+        for k, u, p in geom:
+            if k == "P":
+                joints.append(Prismatic(list(u)))
+            elif k == "Pa":  # the compound pair: its twist is the translation u
+                p1, bar, rod = p
+                joints.append(Parallelogram(list(p1), [x + y for x, y in zip(p1, bar, strict=True)],
+                                            [x + y for x, y in zip(p1, rod, strict=True)]))
+            else:
+                joints.append(Revolute(list(p), list(u)))
+        return Limb(*joints, actuated=actuated)
+
+    def _generic(self, seed: int) -> list:
         G = _motion_rows(self.motion)
         for attempt in range(20):  # a random point is generic but on a proper subset
-            geom = _geometry(self.joints, self.motion, 7919 * seed + attempt)
-            if _check_rows(_twist_rows(geom), G) is None:
-                break
-        else:  # pragma: no cover - twenty random points on the subset: not a limb type of the motion
-            raise ValueError(f"seed: no generic instance of {self.name} found for {self.motion.name}")
-        joints = [Prismatic(list(u)) if k == "P" else Revolute(list(p), list(u))
-                  for k, u, p in geom]
-        return Limb(*joints, actuated=actuated)
+            geom = _geometry(self.joints, self.motion, 7919 * seed + attempt, self.perpendicular)
+            if _check_rows(_twist_rows(geom), G, _acc_rows(geom)) is None:
+                return geom
+        # twenty random points on the subset: not a limb type of the motion
+        raise ValueError(f"seed: no generic instance of {self.name} found for {self.motion.name}")
 
     def build(self, seed: int = 0, actuated: Any = None) -> Limb:
         """The same as :meth:`instance`."""
         return self.instance(seed, actuated)
 
 
-def _limb_rows(limb: Limb) -> list:
-    rows = []
-    for t in limb.twists:
-        if not all(isinstance(x, Rational) for x in t.matrix):
-            raise ValueError("obj: expected rational geometry (no symbols, no roots): the "
-                             "checks are made at numbers; substitute values first")
-        rows.append(tuple(Fraction(int(x.p), int(x.q)) for x in t.matrix))
-    return rows
+def _rational_row(t: Twist) -> tuple:
+    if not all(isinstance(x, Rational) for x in t.matrix):
+        raise ValueError("obj: expected rational geometry (no symbols, no roots): the "
+                         "checks are made at numbers; substitute values first")
+    return tuple(Fraction(int(x.p), int(x.q)) for x in t.matrix)
+
+
+def _limb_rows(limb: Limb) -> tuple[list, dict]:
+    """The limb's joint twists as rational rows, and the parallelograms' own terms (by row)."""
+    rows: list = []
+    acc: dict = {}
+    for j in limb.joints:
+        for t, a in zip(j.twists, j._accelerations(), strict=True):
+            if a is not None:
+                acc[len(rows)] = _rational_row(a)
+            rows.append(_rational_row(t))
+    return rows, acc
 
 
 def refusals(obj: Limb | ParallelMechanism, mo: Motion) -> tuple[str, ...]:
@@ -593,7 +700,8 @@ def refusals(obj: Limb | ParallelMechanism, mo: Motion) -> tuple[str, ...]:
     if not isinstance(mo, Motion):
         raise TypeError(f"mo: expected a Motion (synthesis.motion('3T')), got {type(mo).__name__}")
     if isinstance(obj, Limb):
-        why = _check_rows(_limb_rows(obj), _motion_rows(mo))
+        rows, acc = _limb_rows(obj)
+        why = _check_rows(rows, _motion_rows(mo), acc)
         return () if why is None else (f"limb: {why}",)
     if not isinstance(obj, ParallelMechanism):
         raise TypeError(f"obj: expected a Limb or a ParallelMechanism, got {type(obj).__name__}")
@@ -627,26 +735,73 @@ def _mechanism_refusals(mob: Mobility, mo: Motion) -> list[str]:
     return out
 
 
+def _verdict(seq: tuple, mo: Motion, G: list, seed: int, perp: tuple = ()) -> tuple[bool, Any]:
+    """The verdict of two of three random points (a generic type passes at a random point but
+    on a proper algebraic subset), and the reason the first point gave."""
+    passes = fails = 0
+    first: Any = False
+    for s in (1, 2, 3):
+        geom = _geometry(seq, mo, 1000 * seed + s, perp)
+        why = _check_rows(_twist_rows(geom), G, _acc_rows(geom))
+        if first is False:
+            first = why
+        passes += why is None
+        fails += why is not None
+        if passes == 2 or fails == 2:
+            break
+    return passes == 2, first
+
+
+#: the failures a perpendicular relation may cure; ranks only drop on a special geometry, so a
+#: generic type whose twists are dependent, or whose joint is locked, stays so
+_CURABLE = ("its twists do not contain the wanted motion",
+            "its motion does not extend to second order within the wanted motion")
+
+
+def _perpendicular_sets(seq: tuple, special: int) -> list:
+    """Sets of one or two pairs of perpendicular labels of ``seq`` (each pair with a label of
+    the limb's own; the motion's directions may be the other), sets of one first."""
+    labels = sorted({d for _, d, _ in seq if d >= special} | set(range(special)))
+    turning = {d for k, d, _ in seq if k == "R"}
+    # a slide or a parallelogram normal to the motion's direction is a label of its own (-1)
+    pairs = [(a, b) for i, a in enumerate(labels) for b in labels[i + 1:]
+             if b >= special and (a >= special or b in turning)]
+    ones = [(p,) for p in pairs]
+    twos = [(p, q) for i, p in enumerate(pairs) for q in pairs[i + 1:]]
+    return ones + twos
+
+
 def limbs(mo: Motion, kinds: tuple = ("R", "P"), max_joints: int = 5, min_joints: int | None = None,
-          *, seed: int = 0, budget: int = BUDGET) -> tuple[LimbType, ...]:
+          *, seed: int = 0, perpendicular: bool = False, budget: int = BUDGET) -> tuple[LimbType, ...]:
     """Every limb type of the grammar (module docstring) whose limbs give the motion ``mo``.
 
     Limbs of ``min_joints`` (default: the motion's dimension) to ``max_joints`` one-freedom
-    joints of ``kinds`` (``"R"``, ``"P"``), each type checked exactly at two random
-    instances (``seed``) and by the library's screw systems, one per equivalence class
-    (relabelling, reversal, adjacent prismatic joints reordered), sorted by length then name.
+    joints of ``kinds`` (``"R"``, ``"P"``, ``"Pa"``: a parallelogram), each type checked
+    exactly at two random instances (``seed``) and by the library's screw systems, one per
+    equivalence class (relabelling, reversal, adjacent prismatic joints and parallelograms
+    reordered), sorted by length then name.  With ``perpendicular``, a sequence that fails
+    with generic directions is tried again with one or two pairs of its directions made
+    perpendicular (an axis normal to another, or to a plane), kept with the fewest pairs
+    that make it pass: a relation is named only where it is needed.
     At most ``budget`` units (a ``ValueError`` naming ``limbs`` beyond).
 
     >>> [t.name for t in limbs(motion("3R"), max_joints=3)]
     ['RRR (1,2,3 through O)']
     >>> [t.name for t in limbs(motion("3T"), max_joints=3)]
     ['PPP']
+
+    The Delta's limb (Clavel 1988): a revolute, a parallelogram, two revolutes parallel to
+    the first (the parallelogram's hinges in any direction; the Delta's are normal to it):
+
+    >>> [t.name for t in limbs(motion("3T"), kinds=("R", "Pa"), max_joints=4)
+    ...  if t.letters == "RPaRR"]
+    ['RPaRR (1∥3∥4)']
     """
     if not isinstance(mo, Motion):
         raise TypeError(f"mo: expected a Motion (synthesis.motion('3T')), got {type(mo).__name__}")
     kinds = tuple(kinds)
-    if not kinds or any(k not in ("R", "P") for k in kinds):
-        raise ValueError(f"kinds: expected a non-empty tuple of 'R' and 'P', got {kinds!r}")
+    if not kinds or any(k not in ("R", "P", "Pa") for k in kinds):
+        raise ValueError(f"kinds: expected a non-empty tuple of 'R', 'P' and 'Pa', got {kinds!r}")
     lo = mo.dimension if min_joints is None else min_joints
     if not isinstance(max_joints, int) or not 1 <= max_joints <= 6:
         raise ValueError(f"max_joints: expected an integer from 1 to 6, got {max_joints!r}")
@@ -655,6 +810,7 @@ def limbs(mo: Motion, kinds: tuple = ("R", "P"), max_joints: int = 5, min_joints
     special = len(mo.directions)
     G = _motion_rows(mo)
     found: dict = {}
+    special_cases: dict = {}
     with bounded(budget, "limbs", _MSG):
         for n in range(max(lo, mo.dimension), max_joints + 1):
             for seq in _candidates(kinds, n, special, mo.center is not None):
@@ -662,12 +818,28 @@ def limbs(mo: Motion, kinds: tuple = ("R", "P"), max_joints: int = 5, min_joints
                 key = _canonical(seq, special)
                 if key in found or key != seq:
                     continue
-                # a generic type passes at a random point but on a proper algebraic subset:
-                # the verdict of two of three random points
-                ok = sum(_check_rows(_twist_rows(_geometry(seq, mo, 1000 * seed + s)), G) is None
-                         for s in (1, 2, 3)) >= 2
+                ok, why = _verdict(seq, mo, G, seed)
                 if ok:
                     found[key] = LimbType(mo, key)
+                    continue
+                if not perpendicular or why not in _CURABLE:
+                    continue
+                cured: list = []
+                for rel in _perpendicular_sets(seq, special):
+                    if len(rel) == 2 and any((p,) in cured for p in rel):
+                        continue  # not the fewest pairs
+                    charge(200 * n)
+                    pkey = _canonical(seq, special, rel)
+                    if pkey in special_cases:
+                        cured.append(rel)
+                        continue
+                    try:
+                        ok, _ = _verdict(seq, mo, G, seed, rel)
+                    except ValueError:  # a label normal to two parallel ones: not drawn
+                        continue
+                    if ok:
+                        cured.append(rel)
+                        special_cases[pkey] = LimbType(mo, *pkey)
         # a prismatic joint normal to the motion's direction is kept only where it is needed:
         # the type with that relation dropped (a generic direction) is not found
         valid = set(found)
@@ -679,7 +851,7 @@ def limbs(mo: Motion, kinds: tuple = ("R", "P"), max_joints: int = 5, min_joints
                     del found[key]
                     break
         out = []
-        for t in found.values():
+        for t in [*found.values(), *special_cases.values()]:
             charge(20_000)
             leg = t.instance(seed)
             T = leg.twists
@@ -705,6 +877,9 @@ class Design(NamedTuple):
     #: its motions to second order (:meth:`Mechanism.second_order`): all of
     #: ``mobility.mobility``, one branch
     second_order: SecondOrder
+    #: every joint index that, actuated in every limb, makes the Jacobian invertible at the
+    #: instance (``mechanisms(..., every_actuation=True)``; otherwise ``actuated`` alone)
+    actuations: tuple = ()
 
     @property
     def name(self) -> str:
@@ -739,10 +914,12 @@ def _placement(mo: Motion, rnd: random.Random) -> tuple[ImmutableMatrix, Immutab
 
 
 def _placed(leg: Limb, Rm: ImmutableMatrix, shift: ImmutableMatrix, actuated: Any) -> Limb:
-    joints: list[Prismatic | Revolute] = []
+    joints: list[Joint] = []
     for j in leg.joints:
         if isinstance(j, Prismatic):
             joints.append(Prismatic(Rm * j.args[0]))
+        elif isinstance(j, Parallelogram):
+            joints.append(Parallelogram(*(Rm * x + shift for x in j.args)))
         else:
             joints.append(Revolute(Rm * j.args[0] + shift, Rm * j.args[1]))
     return Limb(*joints, actuated=actuated)
@@ -767,6 +944,7 @@ def _actuation_ok(mech: ParallelMechanism) -> bool:
 
 def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = ("R", "P"),
                max_joints: int = 5, seed: int = 0, actuate: bool = True,
+               perpendicular: bool = False, every_actuation: bool = False,
                budget: int = BUDGET) -> tuple[Design, ...]:
     """Symmetrical mechanisms of ``limbs`` equal limbs that give the motion ``mo``, certified.
 
@@ -777,7 +955,9 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     motions extend to second order in one branch
     (:meth:`~screwsym.systems.linkage.Mechanism.second_order`, Müller 2016).  With
     ``actuate``, the first joint index (from the base) that, actuated in every limb,
-    makes the Jacobian invertible at the instance is named (``None`` if none does).
+    makes the Jacobian invertible at the instance is named (``None`` if none does); with
+    ``every_actuation``, every such index is tried and listed in ``Design.actuations``.
+    ``perpendicular`` is passed to :func:`limbs`.
     At most ``budget`` units (a ``ValueError`` naming ``mechanisms`` beyond); each design is
     charged 200,000 units (its analysis takes about 0.1 s), so the default covers about a
     hundred limb types: the 152 of 3T1R with five joints need ``budget=10**8``.
@@ -795,6 +975,7 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     out = []
     with bounded(budget, "mechanisms", _MSG):
         pool = types if types is not None else _limbs(mo, kinds, max_joints, seed=seed,
+                                                          perpendicular=perpendicular,
                                                           budget=budget)
         for t in pool:
             if not isinstance(t, LimbType) or t.motion != mo:
@@ -807,15 +988,17 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
             so = Mechanism.from_parallel(mech).second_order()
             if _second_order_refusals(so, mo):
                 continue
-            act = None
-            if actuate and limbs * 1 + (6 - mo.dimension) == 6:
+            works: list[int] = []
+            if actuate and limbs == mo.dimension:  # one actuated joint per limb
                 for k in range(t.freedom):
                     charge(100_000)
                     if _actuation_ok(_mechanism(t, limbs, seed, k)):
-                        act = k
-                        break
+                        works.append(k)
+                        if not every_actuation:
+                            break
+            act = works[0] if works else None
             final = _mechanism(t, limbs, seed, act) if act is not None else mech
-            out.append(Design(t, final, mob, act, so))
+            out.append(Design(t, final, mob, act, so, tuple(works)))
     return tuple(out)
 
 

@@ -281,3 +281,165 @@ def test_2t1r_the_planar_chains():
 def test_budget_stops_the_enumeration():
     with pytest.raises(ValueError, match="limbs: the enumeration passed its budget of 10"):
         limbs(motion("3T"), max_joints=4, budget=10)
+
+
+# ------------------------------------------------------------ parallelograms (Pa)
+def test_a_parallelogram_keeps_its_coupler_turned_nowhere_a_finite_step_away():
+    # the finite argument for the Pa (Kong & Gosselin 2007; Clavel 1988): a parallelogram
+    # loop moves its output bar on a circular translation.  Checked independently: the Pa of
+    # a generic Delta-type limb instance (the library's compound pair) opened into its four
+    # revolutes, the loop closed by modern_robotics' inverse kinematics with the first
+    # revolute turned by 0.3 rad; the coupler does not turn, and moves by (Rot(h, 0.3) - I) rod
+    from screwsym.systems.joints import Parallelogram
+    (t,) = [t for t in limbs(motion("3T"), kinds=("R", "Pa"), max_joints=4)
+            if t.name == "RPaRR (1∥3∥4)"]
+    leg = t.instance(seed=5)
+    (pa,) = [j for j in leg.joints if isinstance(j, Parallelogram)]
+    p1, p2, q1 = (np.array([float(x) for x in v]) for v in pa.args)
+    # (the loop in a frame at p1, lengths divided by the rod's: a similarity, which keeps
+    # whether the coupler turns, and keeps modern_robotics' absolute tolerance meaningful)
+    size = np.linalg.norm(q1 - p1)
+    a, b, c = np.zeros(3), (p2 - p1) / size, (q1 - p1) / size
+    h = np.cross(b, c)
+    h /= np.linalg.norm(h)
+
+    def screw(p):  # the revolute about h through p, (omega; p x omega)
+        return np.r_[h, np.cross(p, h)]
+
+    loop = [screw(p) for p in (a, c, c + b, b)]  # bar a -> rod 1 -> bar b -> rod 2 -> bar a
+    first = mr.MatrixExp6(mr.VecTose3(0.3 * loop[0]))
+    rest = np.array(loop[1:]).T
+    th, _ = mr.IKinSpace(rest, np.eye(4), mr.TransInv(first), np.zeros(3), 1e-14, 1e-14)
+    closure = first @ mr.FKinSpace(np.eye(4), rest, th)
+    assert np.abs(closure - np.eye(4)).max() < 1e-12  # the loop is closed
+    coupler = first @ mr.MatrixExp6(mr.VecTose3(th[0] * loop[1]))
+    turned = mr.MatrixExp3(mr.VecToso3(0.3 * h))
+    assert np.abs(coupler[:3, :3] - np.eye(3)).max() < 1e-12  # orientation kept
+    assert np.allclose(coupler[:3, 3], (turned - np.eye(3)) @ c, atol=1e-12)
+    assert np.linalg.norm(coupler[:3, 3]) > 0.1  # and it did move
+    # the compound pair's twist is that circle's tangent at rest: n x (q1 - p1)
+    (tw,) = pa.twists
+    assert np.allclose(np.cross(np.cross(p2 - p1, q1 - p1), q1 - p1),
+                       [float(x) for x in tw.matrix[3:]])
+
+
+def test_the_delta_type_limbs_and_mechanism_are_found():
+    # Clavel's Delta (1988): legs R-R-Pa-R, the arm, the elbow and the wrist revolutes
+    # parallel; read from the platform it is R-Pa-R-R, Kong & Gosselin's (2007) notation
+    # with the three revolutes parallel.  The grammar leaves the hinges' direction free (the
+    # Delta's, normal to the arm, is one instance; a relation not needed is not named).
+    mo = motion("3T")
+    found = limbs(mo, kinds=("R", "Pa"), max_joints=4)
+    assert "RPaRR (1∥3∥4)" in names(found)
+    assert len(found) == 17  # every 3T limb of R and Pa with at most 4 joints (the table)
+    (t,) = [t for t in found if t.name == "RPaRR (1∥3∥4)"]
+    (d,) = mechanisms(mo, types=[t], every_actuation=True)
+    assert d.name == "3-RPaRR (1∥3∥4)"
+    assert (d.mobility.mobility, d.mobility.motion, d.mobility.passive) == (3, "3T", 0)
+    assert d.second_order[:4] == (3, 3, 1, False)  # with the Pa's own term (the turning rods)
+    assert d.actuated == 0 and 0 in d.actuations  # the base revolute, the Delta's motor
+    # the Delta's own leg, by hand (the bar along the arm's axis u, so the hinges are
+    # normal to u), passes; with the hinges along u it has a passive freedom
+    from screwsym.systems.joints import Parallelogram
+    u = [0, 1, 0]
+    delta_leg = Limb(R([2, 0, 0], u), R([3, 0, -1], u),
+                     Parallelogram([3, 0, -1], [3, 1, -1], [1, 0, -3]), R([1, 0, -3], u))
+    assert refusals(delta_leg, mo) == ()
+    flat = Limb(R([2, 0, 0], u), R([3, 0, -1], u),
+                Parallelogram([3, 0, -1], [4, 0, -1], [1, 0, -3]), R([1, 0, -3], u))
+    assert refusals(flat, mo) == ("limb: its joint twists are dependent (a passive freedom)",)
+
+
+def test_the_delta_with_rod_pairs_has_only_idle_extra_freedoms():
+    # the Delta as built, (R)(SS)^2 per leg (Clavel 1988): mobility 9 by the exact analysis
+    # of the linkage, 3 translations of the platform and 6 passive freedoms, the rods' spins
+    from _linkages import DELTA_RADIAL, HALF, add, scale
+
+    from screwsym.systems.joints import S
+    from screwsym.systems.linkage import Mechanism
+
+    def leg(i, e):
+        u = [-e[1], e[0], 0]
+        elbow, attach = add(scale(3, e), [0, 0, -1]), add([0, 0, -3], e)
+        return [("base", f"arm{i}", R(scale(2, e), u))] + [
+            t for k, w in enumerate((scale(HALF, u), scale(-HALF, u)))
+            for t in ((f"arm{i}", f"rod{i}{k}", S(add(elbow, w))),
+                      (f"rod{i}{k}", "platform", S(add(attach, w))))]
+
+    m = Mechanism([t for i, e in enumerate(DELTA_RADIAL) for t in leg(i, e)], base="base")
+    mob = m.mobility()
+    assert (mob.mobility, mob.passive) == (9, 6) and m.motion("platform") == "3T"
+
+
+def test_the_h4_type_limb_with_the_plate_revolute_folded_in():
+    # the H4 (Pierrot & Company 1999): Delta legs R-R-Pa-R on an articulated plate whose
+    # revolute about z gives the fourth freedom.  With a rigid platform, that revolute goes
+    # into each limb: R_u R_u Pa R_u R_z, read from the platform "RRPaRR (1∥z, 2∥4∥5)";
+    # four of them give the Schoenflies motion.  (The full enumeration of 3T1R limbs of R
+    # and Pa with five joints, benchmarks/bench_synthesis.py, finds it among 235.)
+    mo = motion("3T1R")
+    h4 = LimbType(mo, (("R", 0, "g"), ("R", 1, "g"), ("Pa", 2, "-"), ("R", 1, "g"),
+                       ("R", 1, "g")))
+    assert h4.name == "RRPaRR (1∥z, 2∥4∥5)"
+    (d,) = mechanisms(mo, 4, types=[h4], every_actuation=True)
+    assert (d.mobility.mobility, d.mobility.motion, d.mobility.passive) == (4, "3T1R", 0)
+    assert d.actuations == (1, 2, 3, 4)  # the revolute about z alone cannot drive it
+    # and a Pa in a planar chain about z: the 4-joint Schoenflies limb R_z Pa R_z R_z
+    found = limbs(mo, kinds=("R", "Pa"), max_joints=4)
+    assert "RPaRR (1∥3∥4∥z)" in names(found) and len(found) == 29
+
+
+def test_a_parallelogram_is_refused_where_its_turning_leaves_the_motion():
+    # a spherical leg R(O) R_b X R_b R(O) (Kong & Gosselin 2004, 3-DOF spherical PMs: a
+    # planar chain normal to b between two axes through the centre): a slide X normal to b
+    # passes; a parallelogram whose output moves normal to b at the instance passes only
+    # with its hinges along b (its translation then turns in the plane normal to b);
+    # hinges normal to b turn the translation out of that plane: refused at second order
+    from screwsym.systems.joints import Parallelogram
+    mo, z = motion("3R"), [0, 0, 1]
+
+    def leg(mid):
+        return Limb(R(O3, [1, 2, 3]), R([5, 1, 0], z), mid, R([1, -4, 2], z), R(O3, [2, -1, 1]))
+
+    assert refusals(leg(P([0, -1, 0])), mo) == ()
+    assert refusals(leg(Parallelogram(O3, [1, 0, 0], [0, 1, 0])), mo) == ()
+    tilted = Parallelogram(O3, [0, 1, 1], [0, 0, 1])  # its twist (0; 0, -1, 0) too
+    (tw,) = tilted.twists
+    assert list(tw.matrix) == [0, 0, 0, 0, -1, 0]
+    assert refusals(leg(tilted), mo) == (
+        "limb: its motion does not extend to second order within the wanted motion",)
+    assert refusals(leg(P([1, -1, 2])), mo) == (
+        "limb: its twists do not contain the wanted motion",)
+
+
+# ------------------------------------------------------------ perpendicular relations
+def test_spherical_legs_with_a_slide_need_a_perpendicular_relation():
+    # Kong & Gosselin, "Type synthesis of 3-DOF spherical parallel manipulators based on
+    # screw theory", ASME J. Mech. Des. 126 (2004) 101-108: legs with one constraint force
+    # through the centre, e.g. two axes through O around a planar chain whose slide is
+    # normal to its revolutes.  The grammar names the relation "3⟂2"
+    mo = motion("3R")
+    seq = (("R", 0, "c"), ("R", 1, "g"), ("P", 2, "-"), ("R", 1, "g"), ("R", 3, "c"))
+    leg = LimbType(mo, seq, ((1, 2),))
+    assert leg.name == "RRPRR (2∥4, 3⟂2, 1,5 through O)"
+    assert refusals(leg.instance(seed=2), mo) == ()
+    with pytest.raises(ValueError, match="seed: no generic instance"):
+        LimbType(mo, seq).instance()  # without the relation: not a spherical leg
+    (d,) = mechanisms(mo, types=[leg])
+    assert (d.mobility.mobility, d.mobility.motion, d.mobility.passive) == (3, "3R", 0)
+    assert d.second_order[:4] == (3, 3, 1, False) and d.actuated == 0
+    # a slide normal to a plane (two relations): P P R with R normal to both slides
+    plane = LimbType(mo, (("P", 0, "-"), ("P", 1, "-"), ("R", 2, "g"), ("R", 3, "c"),
+                          ("R", 4, "c")), ((0, 2), (1, 2)))
+    assert plane.name == "PPRRR (3⟂1, 3⟂2, 4,5 through O)"
+    assert refusals(plane.instance(), mo) == ()
+
+
+def test_perpendicular_relations_are_named_only_where_needed():
+    # with perpendicular=True nothing changes where the generic types pass: the planar
+    # chains of 2T1R (Merlet 2006) keep their "⊥z" slides, no "⟂z" twin; and 3T limbs of
+    # four joints need no perpendicular relation (Kong & Gosselin 2004 name none)
+    assert names(limbs(motion("2T1R"), max_joints=3, perpendicular=True)) == \
+        names(limbs(motion("2T1R"), max_joints=3))
+    assert names(limbs(motion("3T"), max_joints=4, perpendicular=True)) == \
+        names(limbs(motion("3T"), max_joints=4))
