@@ -75,7 +75,9 @@ rotations about the centre for 3R, rotations about ``z`` and translations for
 twist system with no passive freedom; it names an actuated joint per limb (the
 same in every limb, the one nearest the base that works) for which the
 Jacobian of :func:`~screwsym.systems.actuation.jacobian` is invertible at the
-instance (no actuation singularity there).
+instance (no actuation singularity there), or every such joint
+(``every_actuation=True``).  With ``mixed=True`` it assembles unequal limbs instead
+(every multiset of the limb types, not all equal), certified the same way.
 
 What is not in the grammar: angles other than parallel and perpendicular, three
 mutually perpendicular directions (at most two pairs are tried), lines through two
@@ -103,14 +105,17 @@ from __future__ import annotations
 
 import random
 from fractions import Fraction
-from math import gcd
+from itertools import combinations_with_replacement
 from typing import Any, NamedTuple
 
 from sympy import ImmutableMatrix, Integer, Rational
 from sympy.polys.matrices import DomainMatrix
 
 from ..algebra.budget import BUDGET, bounded, charge
+from ..core.screw import Screw
 from ..core.twist import Twist
+from ._synthesis_exact import check_rows as _check_rows
+from ._synthesis_exact import cross as _cross
 from .actuation import jacobian
 from .joints import Joint, Parallelogram, Prismatic, Revolute
 from .linkage import Mechanism
@@ -183,87 +188,6 @@ def motion(name: str) -> Motion:
                          f"are subgroups), got {name!r}")
     tw, dirs, center, turns, shifts = table[name]
     return Motion(name, ScrewSystem(*tw), dirs, center, turns, shifts)
-
-
-# ------------------------------------------------------------------ exact integer linear algebra
-# Written here rather than through SymPy's DomainMatrix (or the library's ScrewSystem, lie_bracket
-# and reciprocal product) because the screening runs them on thousands of small integer matrices:
-# with DomainMatrix over QQ for _rank and _null, limbs() took 3-9x longer (3R 1.8 -> 16 s, 3T1R
-# 11 -> 31 s) for the same limb types.  The kept types are re-checked by ScrewSystem (limbs()).
-def _rank(rows: list) -> int:
-    """The rank of a list of rational vectors, by fraction-free elimination over Z (exact)."""
-    m = []
-    for r in rows:
-        if all(type(x) is int for x in r):
-            m.append(list(r))
-            continue
-        den = 1
-        for x in r:
-            den = den * Fraction(x).denominator // gcd(den, Fraction(x).denominator)
-        m.append([int(Fraction(x) * den) for x in r])
-    rank, cols = 0, len(m[0]) if m else 0
-    for c in range(cols):
-        piv = next((i for i in range(rank, len(m)) if m[i][c]), None)
-        if piv is None:
-            continue
-        m[rank], m[piv] = m[piv], m[rank]
-        p = m[rank]
-        for i in range(rank + 1, len(m)):
-            a = m[i][c]
-            if a:
-                row = [p[c] * x - a * y for x, y in zip(m[i], p, strict=True)]
-                g = 0
-                for x in row:
-                    g = gcd(g, x)
-                m[i] = [x // g for x in row] if g > 1 else row
-        rank += 1
-    return rank
-
-
-def _null(cols: list) -> list:
-    """A basis of ``{x : sum x_i cols[i] = 0}`` (the columns as vectors), exact over Q."""
-    n = len(cols)
-    rows = [[Fraction(c[k]) for c in cols] for k in range(len(cols[0]))]
-    pivots: list = []
-    r = 0
-    for c in range(n):
-        piv = next((i for i in range(r, len(rows)) if rows[i][c]), None)
-        if piv is None:
-            continue
-        rows[r], rows[piv] = rows[piv], rows[r]
-        p = rows[r][c]
-        rows[r] = [a / p for a in rows[r]]
-        for i in range(len(rows)):
-            if i != r and rows[i][c]:
-                f = rows[i][c]
-                rows[i] = [a - f * b for a, b in zip(rows[i], rows[r], strict=True)]
-        pivots.append(c)
-        r += 1
-    basis = []
-    for free in (c for c in range(n) if c not in pivots):
-        x = [Fraction(0)] * n
-        x[free] = Fraction(1)
-        for i, c in enumerate(pivots):
-            x[c] = -rows[i][free]
-        basis.append(x)
-    return basis
-
-
-def _cross(a: tuple, b: tuple) -> tuple:
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
-def _bracket(a: tuple, b: tuple) -> tuple:
-    """``ad_a b`` in ray order (the formula of :func:`~screwsym.systems.second_order.lie_bracket`)."""
-    wa, va, wb, vb = a[:3], a[3:], b[:3], b[3:]
-    w = _cross(wa, wb)
-    v = tuple(x - y for x, y in zip(_cross(wa, vb), _cross(wb, va), strict=True))
-    return w + v
-
-
-def _reciprocal(w: tuple, t: tuple) -> Any:
-    """``w o t = f . v + m . omega`` (1.45), ``w = (f; m)``, ``t = (omega; v)``."""
-    return sum(w[i] * t[i + 3] + w[i + 3] * t[i] for i in range(3))
 
 
 # ------------------------------------------------------------------ the grammar
@@ -486,45 +410,6 @@ def _motion_rows(mo: Motion) -> list:
     return [tuple(int(x) for x in t.matrix) for t in mo.twists]
 
 
-def _check_rows(J: list, G: list, acc: dict | None = None) -> str | None:
-    """Why the joint twists ``J`` (integer 6-tuples) do not give the motion ``G``, or None;
-    ``acc``: the derivative of joint ``k``'s twist along its own path (a parallelogram's)."""
-    n, m = len(J), len(G)
-    if _rank(J) < n:
-        return "its joint twists are dependent (a passive freedom)"
-    if _rank(J + G) > n:
-        return "its twists do not contain the wanted motion"
-    for k in range(n):
-        if _rank(J[:k] + J[k + 1:] + G) < n:
-            return f"joint {k + 1} (from the base) is locked in the wanted motion"
-    if n == 6:
-        return None
-    # rates qdot with J qdot in T_M: the x parts of the null vectors of [J | G]
-    K = [x[:n] for x in _null(J + G)]
-    assert len(K) == m
-    # the constraint wrenches: reciprocal to every row of J (the rows with halves swapped)
-    W = _null_rows([r[3:] + r[:3] for r in J])
-    for w in W:
-        S = [[Fraction(0)] * n for _ in range(n)]
-        for i in range(n):
-            for j in range(i + 1, n):
-                S[i][j] = Fraction(_reciprocal(w, _bracket(J[i], J[j])))
-        D = {k: Fraction(_reciprocal(w, t)) for k, t in (acc or {}).items()}
-        for a in K:
-            for b in K:
-                val = sum(S[i][j] * (a[i] * b[j] + b[i] * a[j]) for i in range(n)
-                          for j in range(i + 1, n))
-                val += sum(2 * d * a[k] * b[k] for k, d in D.items())
-                if val:
-                    return "its motion does not extend to second order within the wanted motion"
-    return None
-
-
-def _null_rows(rows: list) -> list:
-    """A basis of ``{x : r . x = 0 for every row r}``."""
-    return _null([list(c) for c in zip(*rows, strict=True)])
-
-
 # ------------------------------------------------------------------ limb types
 class LimbType(NamedTuple):
     """A limb type: joints with relations between their axes, for a wanted motion (:func:`limbs`).
@@ -633,6 +518,20 @@ class LimbType(NamedTuple):
         >>> leg = t.instance(seed=3)
         >>> t.name, leg.freedom, leg.constraints.rank
         ('PRRR (2∥3∥4)', 4, 2)
+
+        A parallelogram is built as the compound pair
+        :class:`~screwsym.systems.joints.Parallelogram` (its hinges along its label's
+        direction, its twist the translation of its output bar); a perpendicular relation
+        is kept:
+
+        >>> delta = LimbType(motion("3T"), (("R", 0, "g"), ("Pa", 1, "-"), ("R", 0, "g"),
+        ...                                 ("R", 0, "g")), ((0, 1),))
+        >>> leg = delta.instance()
+        >>> delta.name, [type(j).__name__ for j in leg.joints]
+        ('RPaRR (1∥3∥4, 2⟂1)', ['Revolute', 'Parallelogram', 'Revolute', 'Revolute'])
+        >>> pa, u = leg.joints[1], leg.joints[0].args[1]
+        >>> pa.normal.dot(u)     # the Delta's hinges, normal to the arm's axis
+        0
         """
         geom = self._generic(seed)
         joints: list[Joint] = []
@@ -648,6 +547,12 @@ class LimbType(NamedTuple):
         return Limb(*joints, actuated=actuated)
 
     def _generic(self, seed: int) -> list:
+        own = {d for _, d, _ in self.joints if d >= 0}
+        for pair in self.perpendicular:
+            if (len(pair) != 2 or not set(pair) <= own | set(range(len(self.motion.directions)))
+                    or not set(pair) & own or pair[0] == pair[1]):
+                raise ValueError(f"perpendicular: expected pairs of two direction labels of the "
+                                 f"joints (or of the motion's), got {pair!r}")
         G = _motion_rows(self.motion)
         for attempt in range(20):  # a random point is generic but on a proper subset
             geom = _geometry(self.joints, self.motion, 7919 * seed + attempt, self.perpendicular)
@@ -661,7 +566,7 @@ class LimbType(NamedTuple):
         return self.instance(seed, actuated)
 
 
-def _rational_row(t: Twist) -> tuple:
+def _rational_row(t: Screw) -> tuple:
     if not all(isinstance(x, Rational) for x in t.matrix):
         raise ValueError("obj: expected rational geometry (no symbols, no roots): the "
                          "checks are made at numbers; substitute values first")
@@ -880,11 +785,20 @@ class Design(NamedTuple):
     #: every joint index that, actuated in every limb, makes the Jacobian invertible at the
     #: instance (``mechanisms(..., every_actuation=True)``; otherwise ``actuated`` alone)
     actuations: tuple = ()
+    #: the limb types, base limb first, of a design of unequal limbs
+    #: (``mechanisms(..., mixed=True)``); ``()`` when every limb is ``limb``
+    limb_types: tuple = ()
 
     @property
     def name(self) -> str:
-        """``"3-UPU (1∥5, 2∥4)"``: the number of limbs and the limb type."""
-        return f"{len(self.mechanism.limbs)}-{self.limb.name}"
+        """``"3-UPU (1∥5, 2∥4)"``: the number of limbs and the limb type; for unequal limbs,
+        each type with its number, ``"2-PPP + 1-CRR (1∥2∥3∥4)"``."""
+        if not self.limb_types:
+            return f"{len(self.mechanism.limbs)}-{self.limb.name}"
+        counts: dict = {}
+        for t in self.limb_types:
+            counts[t.name] = counts.get(t.name, 0) + 1
+        return " + ".join(f"{k}-{n}" for n, k in counts.items())
 
     def __repr__(self) -> str:
         return f"Design({self.name}, actuated={self.actuated})"
@@ -925,11 +839,14 @@ def _placed(leg: Limb, Rm: ImmutableMatrix, shift: ImmutableMatrix, actuated: An
     return Limb(*joints, actuated=actuated)
 
 
-def _mechanism(t: LimbType, count: int, seed: int, actuated: Any) -> ParallelMechanism:
+def _mechanism(t: LimbType | tuple, count: int, seed: int, actuated: Any) -> ParallelMechanism:
+    """``count`` copies of ``t``, or the limbs of the types ``t`` (a tuple), each after the
+    first carried by a random placement that keeps the motion."""
+    kinds = t if isinstance(t, tuple) and not isinstance(t, LimbType) else (t,) * count
     rnd = random.Random(seed)
-    leg = t.instance(seed)
-    legs = [leg if i == 0 else _placed(leg, *_placement(t.motion, rnd), None)
-            for i in range(count)]
+    first = {k: k.instance(seed) for k in set(kinds)}
+    legs = [first[k] if i == 0 else _placed(first[k], *_placement(k.motion, rnd), None)
+            for i, k in enumerate(kinds)]
     if actuated is not None:
         legs = [Limb(*x.joints, actuated=actuated) for x in legs]
     return ParallelMechanism(*legs)
@@ -945,7 +862,7 @@ def _actuation_ok(mech: ParallelMechanism) -> bool:
 def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = ("R", "P"),
                max_joints: int = 5, seed: int = 0, actuate: bool = True,
                perpendicular: bool = False, every_actuation: bool = False,
-               budget: int = BUDGET) -> tuple[Design, ...]:
+               mixed: bool = False, budget: int = BUDGET) -> tuple[Design, ...]:
     """Symmetrical mechanisms of ``limbs`` equal limbs that give the motion ``mo``, certified.
 
     ``types`` are the limb types to try (default: :func:`limbs` of ``mo``, ``kinds`` and
@@ -957,7 +874,9 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
     ``actuate``, the first joint index (from the base) that, actuated in every limb,
     makes the Jacobian invertible at the instance is named (``None`` if none does); with
     ``every_actuation``, every such index is tried and listed in ``Design.actuations``.
-    ``perpendicular`` is passed to :func:`limbs`.
+    ``perpendicular`` is passed to :func:`limbs`.  With ``mixed``, the designs are the
+    asymmetric ones instead: every multiset of ``limbs`` of the types, not all equal
+    (``Design.limb_types``; the actuated joint, the same index in every limb).
     At most ``budget`` units (a ``ValueError`` naming ``mechanisms`` beyond); each design is
     charged 200,000 units (its analysis takes about 0.1 s), so the default covers about a
     hundred limb types: the 152 of 3T1R with five joints need ``budget=10**8``.
@@ -977,11 +896,17 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
         pool = types if types is not None else _limbs(mo, kinds, max_joints, seed=seed,
                                                           perpendicular=perpendicular,
                                                           budget=budget)
+        pool = tuple(pool)
         for t in pool:
             if not isinstance(t, LimbType) or t.motion != mo:
                 raise TypeError(f"types: expected limb types of the motion {mo.name}, got {t!r}")
+        combos: Any = pool
+        if mixed:
+            combos = [c for c in combinations_with_replacement(pool, limbs) if len(set(c)) > 1]
+        for combo in combos:
+            t = combo[0] if mixed else combo
             charge(200_000)
-            mech = _mechanism(t, limbs, seed, None)
+            mech = _mechanism(combo, limbs, seed, None)
             mob = mech.mobility()
             if _mechanism_refusals(mob, mo):
                 continue
@@ -990,15 +915,15 @@ def mechanisms(mo: Motion, limbs: int = 3, *, types: Any = None, kinds: tuple = 
                 continue
             works: list[int] = []
             if actuate and limbs == mo.dimension:  # one actuated joint per limb
-                for k in range(t.freedom):
+                for k in range(min(x.freedom for x in combo) if mixed else t.freedom):
                     charge(100_000)
-                    if _actuation_ok(_mechanism(t, limbs, seed, k)):
+                    if _actuation_ok(_mechanism(combo, limbs, seed, k)):
                         works.append(k)
                         if not every_actuation:
                             break
             act = works[0] if works else None
-            final = _mechanism(t, limbs, seed, act) if act is not None else mech
-            out.append(Design(t, final, mob, act, so, tuple(works)))
+            final = _mechanism(combo, limbs, seed, act) if act is not None else mech
+            out.append(Design(t, final, mob, act, so, tuple(works), combo if mixed else ()))
     return tuple(out)
 
 

@@ -4,6 +4,16 @@ Each family the literature lists is looked for by name in what the enumeration f
 finite motion of a found design is checked independently by modern_robotics (the inverse
 kinematics of each limb, a product of exponentials, solved to a platform pose a finite step
 away inside the wanted motion, and the limb's twists there still containing the motion).
+
+The published tables themselves (Kong & Gosselin, "Type synthesis of 3-DOF translational
+parallel manipulators based on screw theory", ASME J. Mech. Des. 126(1) (2004) 83-92; "...
+spherical parallel manipulators ...", 126 (2004) 101-108; *Type Synthesis of Parallel
+Mechanisms*, Springer 2007, the 3T, 3R and 3T1R chapters) could not be read here: they are
+not in the stored corpora searched for this work (docs, pages, code).  So the tests compare
+with the families those works *name* (and Tsai's, Clavel's, Pierrot's, Merlet's), not number
+for number with their tables; the counts asserted are what this grammar finds, and
+benchmarks/bench_synthesis.py prints the full table of them (limb types by length and
+certified mechanisms, per motion pattern and grammar).
 """
 
 from __future__ import annotations
@@ -383,7 +393,9 @@ def test_the_h4_type_limb_with_the_plate_revolute_folded_in():
     assert h4.name == "RRPaRR (1∥z, 2∥4∥5)"
     (d,) = mechanisms(mo, 4, types=[h4], every_actuation=True)
     assert (d.mobility.mobility, d.mobility.motion, d.mobility.passive) == (4, "3T1R", 0)
-    assert d.actuations == (1, 2, 3, 4)  # the revolute about z alone cannot drive it
+    # every joint but the revolute about z drives it; 4 is the H4's motor (the arm's revolute,
+    # on the base side of the leg: the type is read from the platform)
+    assert d.actuations == (1, 2, 3, 4)
     # and a Pa in a planar chain about z: the 4-joint Schoenflies limb R_z Pa R_z R_z
     found = limbs(mo, kinds=("R", "Pa"), max_joints=4)
     assert "RPaRR (1∥3∥4∥z)" in names(found) and len(found) == 29
@@ -433,6 +445,8 @@ def test_spherical_legs_with_a_slide_need_a_perpendicular_relation():
                           ("R", 4, "c")), ((0, 2), (1, 2)))
     assert plane.name == "PPRRR (3⟂1, 3⟂2, 4,5 through O)"
     assert refusals(plane.instance(), mo) == ()
+    with pytest.raises(ValueError, match="perpendicular: expected pairs of two direction"):
+        LimbType(mo, seq, ((1, 7),)).instance()  # no joint has the label 7
 
 
 def test_perpendicular_relations_are_named_only_where_needed():
@@ -443,3 +457,21 @@ def test_perpendicular_relations_are_named_only_where_needed():
         names(limbs(motion("2T1R"), max_joints=3))
     assert names(limbs(motion("3T"), max_joints=4, perpendicular=True)) == \
         names(limbs(motion("3T"), max_joints=4))
+
+
+# ------------------------------------------------------------ asymmetric designs
+def test_mixed_designs_of_unequal_limbs_are_certified_too():
+    # the 3T limbs combine freely: each supplies couples only, and three limbs in general
+    # position span all three (Kong & Gosselin 2004); so every multiset of three of PPP,
+    # the 3-CRR's limb and the Delta-type limb, not all equal, is a 3T design: 10 - 3 = 7
+    mo = motion("3T")
+    pool = [t for t in limbs(mo, kinds=("R", "P", "Pa"), max_joints=4)
+            if t.name in ("PPP", "CRR (1∥2∥3∥4)", "RPaRR (1∥3∥4)")]
+    designs = mechanisms(mo, types=pool, mixed=True)
+    assert len(pool) == 3 and len(designs) == 7
+    assert "1-PPP + 1-CRR (1∥2∥3∥4) + 1-RPaRR (1∥3∥4)" in {d.name for d in designs}
+    for d in designs:
+        assert len(set(d.limb_types)) > 1 and len(d.mechanism.limbs) == 3
+        assert (d.mobility.mobility, d.mobility.motion, d.mobility.passive) == (3, "3T", 0)
+        assert d.actuated is not None
+    assert refusals(designs[-1].mechanism, mo) == ()
