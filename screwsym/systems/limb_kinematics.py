@@ -69,10 +69,14 @@ from sympy import (
 )
 from sympy.logic.boolalg import Boolean
 
-from ..core.checks import check_matrix, describe
+from ..algebra.budget import BUDGET, case_budget, charge
+from ..core.checks import check_count, check_matrix, describe
 from ..core.decide import is_zero
 
 __all__ = ["LimbBranch", "limb_joint_values"]
+
+#: the budget units charged per branch (a few milliseconds of exact arithmetic)
+BRANCH_UNITS = 20_000
 
 
 class LimbBranch(NamedTuple):
@@ -138,6 +142,7 @@ def _planar(tw: list, T: ImmutableMatrix, k: int) -> tuple[LimbBranch, ...]:
             v = e + q2 * u
             theta1 = atan2(_cross2(v, g), _dot(v, g))
             cond = Gt(disc, 0) if not is_zero(disc) else Eq(disc, 0)
+            charge(BRANCH_UNITS)
             out.append(LimbBranch(cond, (theta1 / w1, q2, (phi - theta1) / w3)))
     elif kinds == "RRR":
         w2, b = axis(1)
@@ -153,6 +158,7 @@ def _planar(tw: list, T: ImmutableMatrix, k: int) -> tuple[LimbBranch, ...]:
             theta2 = atan2(s2, c2)
             theta1 = atan2(_cross2(m, g), _dot(m, g))
             cond = Gt(disc, 0) if not is_zero(disc) else Eq(disc, 0)
+            charge(BRANCH_UNITS)
             out.append(LimbBranch(cond, (theta1 / w1, theta2 / w2, (phi - theta1 - theta2) / w3)))
     else:
         raise ValueError(f"mechanism: limb {k} is a planar {kinds} chain: only R-P-R and R-R-R are solved")
@@ -201,6 +207,7 @@ def _ups(limb: Any, tw: list, T: ImmutableMatrix, k: int) -> tuple[LimbBranch, .
             z = a1 * n1 + a2 * n2 + s2 * sqrt(rad / n12.dot(n12)) * n12
             q2, cq2, sq2 = _sub1(n2, v, z)
             q1, cq1, sq1 = _sub1(n1, z, g)
+            charge(4 * BRANCH_UNITS)
             W = (_rodrigues(n1, cq1, sq1) * _rodrigues(n2, cq2, sq2)).T * R_T
             w13 = W[0, 2]
             if is_zero(w13**2 - 1):
@@ -216,7 +223,7 @@ def _ups(limb: Any, tw: list, T: ImmutableMatrix, k: int) -> tuple[LimbBranch, .
     return tuple(b for b in out if b.condition is not S.false)
 
 
-def limb_joint_values(mechanism: Any, pose: Any) -> tuple[tuple[LimbBranch, ...], ...]:
+def limb_joint_values(mechanism: Any, pose: Any, *, budget: int = BUDGET) -> tuple[tuple[LimbBranch, ...], ...]:
     r"""Every limb's joint values with the platform at ``pose``, exact: one tuple of
     :class:`LimbBranch` ``(condition, values)`` per limb (see the module docstring for the
     limbs solved and their branches).
@@ -224,6 +231,8 @@ def limb_joint_values(mechanism: Any, pose: Any) -> tuple[tuple[LimbBranch, ...]
     ``pose`` is the platform's displacement from the configuration the limbs' joints
     describe (a 4x4 rigid motion, or a ``Transform``); each limb's values ``q`` satisfy
     ``exp([$_1] q_1) ... exp([$_n] q_n) = pose``, its joints' twists in the limb's order.
+    ``budget`` bounds the exact arithmetic (:mod:`screwsym.algebra.budget`): past it a
+    ``ValueError`` naming ``limb_joint_values``.
 
     The planar 3-RPR with legs from ``(0, 0)``, ``(4, 0)``, ``(0, 4)`` to a platform
     triangle, translated by ``(1, 1)`` and turned by ``phi`` with ``cos phi = 3/5``: each leg
@@ -262,18 +271,21 @@ def limb_joint_values(mechanism: Any, pose: Any) -> tuple[tuple[LimbBranch, ...]
     if limbs is None:
         raise TypeError(f"mechanism: expected a ParallelMechanism, got {describe(mechanism)}")
     T = _pose(pose)
-    out = []
-    for k, limb in enumerate(limbs):
-        tw = _twists(limb)
-        planar = all(is_zero(w[0]) and is_zero(w[1]) and is_zero(v[2]) for w, v in tw)
-        names = "".join(type(j).__name__[0] for j in limb.joints)
-        if planar and len(tw) == 3:
-            out.append(_planar(tw, T, k))
-        elif names == "UPS":
-            out.append(_ups(limb, tw, T, k))
-        else:
-            raise ValueError(
-                f"mechanism: limb {k} ({names}, {len(tw)} freedoms) is not one solved here: "
-                "planar R-P-R or R-R-R, or U-P-S"
-            )
-    return tuple(out)
+    budget = check_count(budget, "budget")
+    with case_budget(budget, "limb_joint_values"):
+        return tuple(_limb(k, limb, T) for k, limb in enumerate(limbs))
+
+
+def _limb(k: int, limb: Any, T: ImmutableMatrix) -> tuple[LimbBranch, ...]:
+    """The branches of limb ``k``: the planar or the U-P-S closed forms."""
+    tw = _twists(limb)
+    planar = all(is_zero(w[0]) and is_zero(w[1]) and is_zero(v[2]) for w, v in tw)
+    names = "".join(type(j).__name__[0] for j in limb.joints)
+    if planar and len(tw) == 3:
+        return _planar(tw, T, k)
+    if names == "UPS":
+        return _ups(limb, tw, T, k)
+    raise ValueError(
+        f"mechanism: limb {k} ({names}, {len(tw)} freedoms) is not one solved here: "
+        "planar R-P-R or R-R-R, or U-P-S"
+    )

@@ -197,6 +197,8 @@ def test_bad_input_is_refused():
     spatial = ParallelMechanism(Limb(Revolute([0, 0, 0], [1, 0, 0]), Revolute([0, 0, 1], [0, 1, 0])))
     with pytest.raises(ValueError, match="limb 0 \\(RR, 2 freedoms\\) is not one solved here"):
         limb_joint_values(spatial, POSE)
+    with pytest.raises(ValueError, match="limb_joint_values: the case split needs more work than budget=1000"):
+        limb_joint_values(gough_stewart(), POSE, budget=1000)
     # the platform joint brought onto the base joint: the first joint is free
     leg = ParallelMechanism(Limb(Revolute([0, 0, 0], [0, 0, 1]), Prismatic([1, 0, 0]), Revolute([1, 0, 0], [0, 0, 1])))
     with pytest.raises(ValueError, match="the first joint is free"):
