@@ -62,6 +62,7 @@ from sympy import (
     Integer,
     Lt,
     Matrix,
+    Ne,
     S,
     atan2,
     eye,
@@ -141,7 +142,7 @@ def _planar(tw: list, T: ImmutableMatrix, k: int) -> tuple[LimbBranch, ...]:
             q2 = (-B_ + sign * sqrt(disc)) / A_
             v = e + q2 * u
             theta1 = atan2(_cross2(v, g), _dot(v, g))
-            cond = Gt(disc, 0) if not is_zero(disc) else Eq(disc, 0)
+            cond = And(Gt(disc, 0) if not is_zero(disc) else Eq(disc, 0), Ne(D2, 0))
             charge(BRANCH_UNITS)
             out.append(LimbBranch(cond, (theta1 / w1, q2, (phi - theta1) / w3)))
     elif kinds == "RRR":
@@ -157,7 +158,7 @@ def _planar(tw: list, T: ImmutableMatrix, k: int) -> tuple[LimbBranch, ...]:
             m = v + Matrix([c2 * w[0] - s2 * w[1], s2 * w[0] + c2 * w[1]])
             theta2 = atan2(s2, c2)
             theta1 = atan2(_cross2(m, g), _dot(m, g))
-            cond = Gt(disc, 0) if not is_zero(disc) else Eq(disc, 0)
+            cond = And(Gt(disc, 0) if not is_zero(disc) else Eq(disc, 0), Ne(D2, 0), Ne(r2, 0))
             charge(BRANCH_UNITS)
             out.append(LimbBranch(cond, (theta1 / w1, theta2 / w2, (phi - theta1 - theta2) / w3)))
     else:

@@ -203,3 +203,21 @@ def test_bad_input_is_refused():
     leg = ParallelMechanism(Limb(Revolute([0, 0, 0], [0, 0, 1]), Prismatic([1, 0, 0]), Revolute([1, 0, 0], [0, 0, 1])))
     with pytest.raises(ValueError, match="the first joint is free"):
         limb_joint_values(leg, planar(1, 0, -1, 0))
+
+
+def test_a_symbolic_pose_gives_closed_forms_with_their_conditions():
+    from sympy import symbols
+
+    x, y, phi = symbols("x y phi", real=True)
+    T = Matrix([[cos(phi), -sin(phi), 0, x], [sin(phi), cos(phi), 0, y], [0, 0, 1, 0], [0, 0, 0, 1]])
+    pm = ParallelMechanism(rrr_leg((0, 0), (2, 0), P345, P81517))
+    (branches,) = limb_joint_values(pm, T)
+    assert len(branches) == 2
+    for b in branches:
+        assert b.condition.free_symbols == {x, y, phi}  # the reach, a condition on the pose
+    # at POSE the closed forms give the numeric call's branches (30 digits)
+    at = {x: POSE[0, 3], y: POSE[1, 3], phi: atan2(POSE[1, 0], POSE[0, 0])}
+    (numeric,) = limb_joint_values(pm, POSE)
+    for b, n in zip(branches, numeric, strict=True):
+        assert bool(b.condition.xreplace(at)) is True
+        assert all(abs((u.xreplace(at) - v).evalf(30)) < Rational(1, 10**25) for u, v in zip(b.values, n.values, strict=True))
