@@ -33,11 +33,11 @@ where the condition holds.  The limbs solved, by their joint twists:
     the rotation ``(R_1 R_2)^T R_T = e^{[x] q_4} e^{[y] q_5} e^{[z] q_6}`` (two branches
     where ``|W_13| < 1``, ``W`` that matrix): up to 8 per leg.
 
-Branches on the degenerate boundaries (a discriminant zero: the two branches meet and are
-given once; a point on an axis, the spherical joint's middle axis at a right angle) are
-given where they are isolated; a pose where a joint is free (``T c = a`` for the planar
-limbs, the spherical joint's axes 4 and 6 aligned) is refused, not answered partly: a
-``ValueError`` says which.
+On a boundary where a discriminant is zero the two branches meet and are given once (their
+condition an ``Eq``).  A numeric pose where a joint is free (``T c = a`` for the planar limbs:
+the first joint; ``|W_13| = 1`` for the U-P-S: only ``q_4 + q_6`` is fixed, the spherical
+joint's axes 4 and 6 aligned) is refused, not answered partly: a ``ValueError`` says which.
+With a symbolic pose those places are excluded by the conditions (``Ne``, ``Lt``) instead.
 
 References
 ==========
