@@ -23,6 +23,7 @@ from .joints import (
     Spherical,
     Universal,
 )
+from .limb_kinematics import LimbBranch, limb_joint_values
 from .linkage import Mechanism, MechanismMobility
 from .motion_type import MotionType, motion_of, motion_type
 from .parallel import Degenerate, Limb, Mobility, ParallelMechanism
@@ -52,6 +53,8 @@ __all__ = [
     "lie_bracket",
     "direct_kinematics",
     "leg_lengths",
+    "limb_joint_values",
+    "LimbBranch",
     "AssemblyModes",
     "PlanarMode",
     "AssemblyFamily",

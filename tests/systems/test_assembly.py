@@ -618,3 +618,74 @@ def test_6_6_bad_input_and_budget():
         direct_kinematics(A, B[:5], L)
     with pytest.raises(ValueError, match="direct_kinematics: the case split needs more work"):
         direct_kinematics(A, B, L, budget=1000)
+
+
+# --------------------------------------------------------------------------------------
+# the published 3-RPR with six real assembly modes
+# --------------------------------------------------------------------------------------
+# Gosselin & Merlet, "The direct kinematics of planar parallel manipulators: special
+# architectures and number of solutions", Mech. Mach. Theory 29(8) (1994), and Merlet,
+# "Parallel Robots" (2nd ed., Springer 2006, the planar 3-RPR of the direct-kinematics
+# chapter): base joints A1 = (0, 0), A2 = (15.91, 0), A3 = (0, 10); platform joints B1 at the
+# platform's origin, B2 at 17.04 along its x axis, B3 at 20.84 from B1 at the angle
+# theta = 0.882603 rad from B1B2; leg lengths 14.98, 15.38, 12: six real assembly modes.
+# The same geometry is the one studied by Zein, Wenger & Chablat ("Non-singular
+# assembly-mode changing motions for 3-RPR parallel manipulators", Mech. Mach. Theory 43
+# (2008)), who give the platform by its sides 17.04, 16.54, 20.84.  The numbers were recalled
+# from these publications and confirmed in a public MATLAB script of this direct kinematics
+# (Gamma-0/3RPR_Plan on GitHub, MGD.m: the same base, sides, angle and leg lengths, six roots
+# sought), which cites no source; the papers themselves were not at hand.  What this test
+# compares with the publications: the geometry (the third side, 16.54, recomputed), the
+# number of real modes (six), and that each mode closes the legs.  The published table of the
+# six poses was not available (see the notes of issue 36), so the poses are checked
+# independently instead: mpmath at 50 digits, and a NumPy scan of the closure residual over
+# phi from the geometry alone.
+#
+# B3 = 20.84 (cos theta, sin theta) is irrational; it is taken to 6 decimals, the precision
+# of the published theta (a second B3, the exact binary values of the floats, gives six
+# modes too, at angles within 1e-6 rad).
+GM_BASE = [(0, 0), (Rational("15.91"), 0), (0, 10)]
+GM_B3 = (Rational("13.236375"), Rational("16.096707"))
+GM_PLATFORM = [(0, 0), (Rational("17.04"), 0), GM_B3]
+GM_LENGTHS = [Rational("14.98"), Rational("15.38"), 12]
+
+
+def test_gosselin_merlet_1994_six_real_modes():
+    # B3 is 20.84 (cos theta, sin theta) to 6 decimals
+    with mpmath.workdps(30):
+        th, l3 = mpmath.mpf("0.882603"), mpmath.mpf("20.84")
+        assert [mpmath.nstr(l3 * f(th), 8) for f in (mpmath.cos, mpmath.sin)] == ["13.236375", "16.096707"]
+    # the platform triangle of Zein, Wenger & Chablat: sides 17.04, 16.54, 20.84
+    B2B3 = sqrt((GM_B3[0] - Rational("17.04")) ** 2 + GM_B3[1] ** 2)
+    assert round(float(B2B3), 2) == 16.54
+    m = direct_kinematics(GM_BASE, GM_PLATFORM, GM_LENGTHS)
+    assert m.is_finite and m.polynomial.degree() == 6
+    assert len(m.modes) == 6  # the published count: all six modes real
+    for mode in m.modes:
+        assert mode.multiplicity == 1
+        assert m.closes(mode.pose)  # exact
+        got = mp_lengths(GM_BASE, GM_PLATFORM, mode.pose)
+        with mpmath.workdps(50):
+            assert all(abs(g - L) < mpmath.mpf(10) ** -30 for g, L in zip(got, GM_LENGTHS, strict=True))
+    # completeness from the geometry alone: six sign changes of the residual over phi
+    angles = residual_scan(GM_BASE, GM_PLATFORM, [float(L) ** 2 for L in GM_LENGTHS])
+    ours = sorted(float(mode.phi) for mode in m.modes)
+    assert len(angles) == 6 and np.allclose(sorted(angles), ours, atol=1e-4)
+    # the platform's angles, degrees, to 0.01 (computed here, not copied from the papers)
+    assert [round(v * 180 / np.pi, 2) for v in ours] == [-56.55, -2.71, 14.06, 33.56, 57.41, 122.21]
+    # the float data (B3 as the binary values of 20.84*cos, 20.84*sin) move them by < 1e-6
+    b3 = tuple(20.84 * f(0.882603) for f in (np.cos, np.sin))
+    m2 = direct_kinematics(GM_BASE, [(0, 0), (Rational("17.04"), 0), b3], GM_LENGTHS)
+    assert len(m2.modes) == 6
+    assert np.allclose(sorted(float(mode.phi) for mode in m2.modes), ours, atol=1e-6)
+
+
+def test_gosselin_merlet_1994_the_checker_rejects_a_wrong_mode():
+    m = direct_kinematics(GM_BASE, GM_PLATFORM, GM_LENGTHS)
+    mode, other = m.modes[0], m.modes[4]
+    eps = Rational(1, 10**30)
+    assert not m.closes((mode.x, mode.y + eps, mode.phi))
+    assert not m.closes((mode.x, mode.y, other.phi))  # one mode's position, another's angle
+    # a mode of the legs 14.98, 15.38, 12.01 closes those legs, not these
+    m3 = direct_kinematics(GM_BASE, GM_PLATFORM, GM_LENGTHS[:2] + [Rational("12.01")])
+    assert m3.closes(m3.modes[0].pose) and not m.closes(m3.modes[0].pose)
