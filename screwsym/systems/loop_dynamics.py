@@ -263,13 +263,22 @@ def _domain_matrix(M: Matrix) -> DomainMatrix:
     in SymPy's expression domain ``EX``, where every pivot's zero test is a minimal
     polynomial; the Delta with its legs 120 degrees apart (``sqrt(3)/2`` in its geometry)
     spent over 300 s in one elimination there, uninterrupted by the budget, against a
-    fraction of a second over ``QQ<sqrt(3)>``."""
+    fraction of a second over ``QQ<sqrt(3)>``.  With symbols beside the roots the
+    elimination stays in ``EX``, charged in advance as a fifth power of its size."""
     if not M.free_symbols:
         try:
             return field_matrix(M)
         except ValueError:  # pragma: no cover - a number outside a number field (pi, e)
             pass
-    return DomainMatrix.from_Matrix(M)
+    dm = DomainMatrix.from_Matrix(M)
+    if dm.domain.is_EX:
+        # roots beside symbols: SymPy's expression domain, whose eliminations are not
+        # interrupted and whose zero tests are minimal polynomials (the Delta with legs
+        # 120 degrees apart at a symbolic height ran past 150 s in one, and building the
+        # ring over QQ<sqrt(3)> instead took as long): charged as a fifth power, so that
+        # a budget refuses it at once
+        _charge_matrix(M, 5)
+    return dm
 
 
 def _solve(B: Matrix, C: Matrix) -> Matrix:

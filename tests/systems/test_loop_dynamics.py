@@ -772,7 +772,7 @@ def test_delta_in_the_platforms_coordinates_is_codoureys_model():
     assert heavier.platform_dynamics([0, 7, 14]).mass_matrix != Lam
 
 
-def delta_at(top):
+def delta_at(top, radial=DELTA_RADIAL):
     """The Delta link by link (as tests/_linkages.py's) with its platform at ``top``."""
 
     def leg(i, e):
@@ -790,7 +790,7 @@ def delta_at(top):
                 (r1, lower, R(plus[1], n)), (upper, r2, R(minus[0], n)), (r2, lower, R(minus[1], n)),
                 (lower, "platform", R(attach, u))]
 
-    return [t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)]
+    return [t for i, e in enumerate(radial) for t in leg(i + 1, e)]
 
 
 @pytest.mark.slow
@@ -1344,3 +1344,9 @@ def test_delta_with_legs_120_degrees_apart_answers_within_a_small_budget():
     assert same(ours, truth)
     heavier = codourey(qd, qdd, g, m_arm=2 + Rational(1, 100), radial=radial)[4]
     assert not same(ours, heavier)
+    # at a symbolic height the roots sit beside a symbol (SymPy's expression domain, its
+    # eliminations uninterruptible): refused by the budget at once, not run for minutes
+    z = symbols("z", real=True)
+    high = Mechanism(delta_at([0, 0, z], radial), base="base")
+    with pytest.raises(ValueError, match="actuation_condition: the exact arithmetic needs more"):
+        high.actuation_condition([0, 7, 14])
