@@ -112,6 +112,7 @@ from sympy import (
     Matrix,
     Ne,
     Poly,
+    Pow,
     Rational,
     S,
     Symbol,
@@ -271,7 +272,8 @@ def _domain_matrix(M: Matrix) -> DomainMatrix:
         except ValueError:  # pragma: no cover - a number outside a number field (pi, e)
             pass
     dm = DomainMatrix.from_Matrix(M)
-    if dm.domain.is_EX:
+    if dm.domain.is_EX and any(p.base.is_number and not p.exp.is_Integer
+                               for p in M.atoms(Pow)):
         # roots beside symbols: SymPy's expression domain, whose eliminations are not
         # interrupted and whose zero tests are minimal polynomials (the Delta with legs
         # 120 degrees apart at a symbolic height ran past 150 s in one, and building the
