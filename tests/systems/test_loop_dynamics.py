@@ -1350,3 +1350,19 @@ def test_delta_with_legs_120_degrees_apart_answers_within_a_small_budget():
     high = Mechanism(delta_at([0, 0, z], radial), base="base")
     with pytest.raises(ValueError, match="actuation_condition: the exact arithmetic needs more"):
         high.actuation_condition([0, 7, 14])
+    # the gallery's Delta (plot.models.delta) at its home pose x = y = 0, z = -3, the arms at
+    # pi/4 (sqrt(2) and sqrt(3) in its geometry): decided within the budget, and True is
+    # right: in floats the passive joints' columns of the network matrix (every joint a
+    # revolute, one column each) have full rank, their least singular value far from zero
+    from sympy import pi
+
+    from screwsym.plot.models import delta
+
+    d = delta()
+    home = d.mechanism.subs(dict(zip(d.variables, [0, 0, -3, pi / 4, pi / 4, pi / 4],
+                                     strict=True)))
+    assert home.actuation_condition([0, 7, 14], budget=2_000_000) is true
+    A = np.array(home.network_matrix().evalf(20).tolist(), dtype=float)
+    passive = np.delete(A, [0, 7, 14], axis=1)
+    smallest = np.linalg.svd(passive, compute_uv=False)[-1]
+    assert passive.shape[1] == 18 and smallest > 1e-3 * np.linalg.norm(A, 2)
