@@ -112,6 +112,7 @@ from sympy import (
     Matrix,
     Ne,
     Poly,
+    Pow,
     Rational,
     S,
     Symbol,
@@ -254,12 +255,40 @@ def _check_actuated(mech: Mechanism, actuated: Any) -> tuple:
     return tuple(out)
 
 
+def _domain_matrix(M: Matrix) -> DomainMatrix:
+    """``M`` as a ``DomainMatrix``: numbers over their field (QQ or a number field such as
+    ``QQ<sqrt(3)>``, :func:`~screwsym.algebra.linalg.field_matrix`), else over the
+    polynomial ring of the entries.
+
+    Why not ``DomainMatrix.from_Matrix`` for numbers too: it puts roots such as ``sqrt(3)``
+    in SymPy's expression domain ``EX``, where every pivot's zero test is a minimal
+    polynomial; the Delta with its legs 120 degrees apart (``sqrt(3)/2`` in its geometry)
+    spent over 300 s in one elimination there, uninterrupted by the budget, against a
+    fraction of a second over ``QQ<sqrt(3)>``.  With symbols beside the roots the
+    elimination stays in ``EX``, charged in advance as a fifth power of its size."""
+    if not M.free_symbols:
+        try:
+            return field_matrix(M)
+        except ValueError:  # pragma: no cover - a number outside a number field (pi, e)
+            pass
+    dm = DomainMatrix.from_Matrix(M)
+    if dm.domain.is_EX and any(p.base.is_number and not p.exp.is_Integer
+                               for p in M.atoms(Pow)):
+        # roots beside symbols: SymPy's expression domain, whose eliminations are not
+        # interrupted and whose zero tests are minimal polynomials (the Delta with legs
+        # 120 degrees apart at a symbolic height ran past 150 s in one, and building the
+        # ring over QQ<sqrt(3)> instead took as long): charged as a fifth power, so that
+        # a budget refuses it at once
+        _charge_matrix(M, 5)
+    return dm
+
+
 def _solve(B: Matrix, C: Matrix) -> Matrix:
     """``B^-1 C`` for a square ``B`` non-singular where the result is used: exact, fraction
     free in the polynomial ring of the entries (``sin(q)``, ``cos(q)`` and roots as its
     symbols: an identity there is one at every value), one denominator."""
     n = B.cols
-    dm = DomainMatrix.from_Matrix(Matrix.hstack(B, C))
+    dm = _domain_matrix(Matrix.hstack(B, C))
     K = dm.domain
     num, den = dm[:, :n].solve_den(dm[:, n:])
     d = K.to_sympy(den)
@@ -277,7 +306,7 @@ def _determinant(B: Matrix) -> tuple[Any, Any]:
     (``sin(q)``, ``cos(q)`` as independent symbols: a factorisation there holds on the
     circle too), or ``Ne(det, 0)`` where the ring is not a polynomial ring or the
     determinant has more than :data:`FACTOR_TERMS` terms."""
-    dm = DomainMatrix.from_Matrix(B)
+    dm = _domain_matrix(B)
     K = dm.domain
     d = dm.det()
     det = K.to_sympy(d)
@@ -469,6 +498,10 @@ def _matmul(X: Matrix, Y: Matrix) -> Matrix:
     times faster than SymPy's generic product), else SymPy's product."""
     if X.free_symbols:  # a geometry in symbols: SymPy's own product keeps its forms smaller
         return X * Y
+    if not Y.free_symbols:  # numbers: over their field, QQ or QQ<sqrt(3)> (not SymPy's EX)
+        both = _domain_matrix(Matrix.hstack(X.T, Y))
+        if both.domain.is_QQ or both.domain.is_AlgebraicField:
+            return (both[:, :X.rows].transpose() * both[:, X.rows:]).to_Matrix()
     dx, dy = DomainMatrix.from_Matrix(X), DomainMatrix.from_Matrix(Y)
     dx, dy = dx.unify(dy)
     K = dx.domain
@@ -675,7 +708,7 @@ def joint_reactions(mech: Mechanism, actuated: Any, rates: Any, accelerations: A
     K, r = _reaction_system(act, tau, balances)
     aug = Matrix.hstack(K, r)
     _charge_matrix(aug, 3)
-    dm = DomainMatrix.from_Matrix(aug).to_field()
+    dm = _domain_matrix(aug).to_field()
     reduced, pivots = dm.rref()
     if K.cols in pivots:  # pragma: no cover - tau is the virtual-power balance
         raise ValueError("the Newton-Euler balance of the links has no solution with these "

@@ -694,7 +694,7 @@ def test_3rpr_in_the_platforms_coordinates_is_tsais_virtual_work_model():
 
 
 # ------------------------------------------------------------------ the Delta robot (spatial)
-def codourey(qd, qdd, g, m_arm=2, m_p=3):
+def codourey(qd, qdd, g, m_arm=2, m_p=3, radial=DELTA_RADIAL):
     """Clavel's Delta link by link (17 links, 21 revolutes, 5 loops; the parallelogram
     forearms massless), its arms and platform with inertia, and Codourey's model of it
     (Codourey 1998, IJRR 17(12): the arms turning about fixed axes, the platform
@@ -702,11 +702,12 @@ def codourey(qd, qdd, g, m_arm=2, m_p=3):
     w_i`` (``s_i`` the rod, ``w_i`` the elbow's velocity) and, differentiated, ``s_i .
     pddot = s_i . a_i - |pdot - w_i|**2``.  Returns the mechanism, the platform's velocity
     and acceleration, ``Jp`` (``pdot = Jp qd``), the motor torques and Codourey's
-    Cartesian mass matrix ``m_p 1 + Jp^-T diag(I_axis) Jp^-1``."""
-    joints = [t for i, e in enumerate(DELTA_RADIAL) for t in delta_joints(i + 1, e)]
+    Cartesian mass matrix ``m_p 1 + Jp^-T diag(I_axis) Jp^-1``.  ``radial``: the legs'
+    directions from the centre (unit, horizontal)."""
+    joints = [t for i, e in enumerate(radial) for t in delta_joints(i + 1, e)]
     I_c = diag(Rational(1, 5), Rational(1, 4), Rational(1, 3))
     legs = []
-    for e in DELTA_RADIAL:
+    for e in radial:
         e = Matrix(e)
         u = Matrix([-e[1], e[0], 0])
         b = 2 * e
@@ -771,7 +772,7 @@ def test_delta_in_the_platforms_coordinates_is_codoureys_model():
     assert heavier.platform_dynamics([0, 7, 14]).mass_matrix != Lam
 
 
-def delta_at(top):
+def delta_at(top, radial=DELTA_RADIAL):
     """The Delta link by link (as tests/_linkages.py's) with its platform at ``top``."""
 
     def leg(i, e):
@@ -789,7 +790,7 @@ def delta_at(top):
                 (r1, lower, R(plus[1], n)), (upper, r2, R(minus[0], n)), (r2, lower, R(minus[1], n)),
                 (lower, "platform", R(attach, u))]
 
-    return [t for i, e in enumerate(DELTA_RADIAL) for t in leg(i + 1, e)]
+    return [t for i, e in enumerate(radial) for t in leg(i + 1, e)]
 
 
 @pytest.mark.slow
@@ -1321,3 +1322,47 @@ def _com_acceleration(mech, link, qd, qdd):
     c = mech.inertias[link].com
     w, v, wd, vd = V[:3, 0], V[3:, 0], A[:3, 0], A[3:, 0]
     return vd + wd.cross(c) + w.cross(v + w.cross(c))
+
+
+def test_delta_with_legs_120_degrees_apart_answers_within_a_small_budget():
+    """Clavel's Delta with its legs 120 degrees apart (``sqrt(3)/2`` in the geometry): the
+    actuation condition, once an uninterrupted elimination over SymPy's expression domain
+    past 300 s, is decided over ``QQ<sqrt(3)>`` within a budget of 2e6 units (about 2 s),
+    and the inverse dynamics at a moving state is Codourey's model (:func:`codourey`, the
+    same vector algebra on this geometry), exactly; the checker rejects a heavier arm."""
+    from sympy import radsimp, sqrt
+
+    radial = [[1, 0, 0], [Rational(-1, 2), sqrt(3) / 2, 0], [Rational(-1, 2), -sqrt(3) / 2, 0]]
+    qd, qdd, g = [1, -2, Rational(1, 2)], [Rational(1, 3), 0, -1], Matrix([0, 0, -10])
+    mech, _, _, _, truth, _ = codourey(qd, qdd, g, radial=radial)
+    assert mech.actuation_condition([0, 7, 14], budget=2_000_000) is true
+    ours = mech.inverse_dynamics([0, 7, 14], qd, qdd, list(g), budget=10_000_000)
+
+    def same(a, b):
+        return all(radsimp(x - y).expand() == 0 for x, y in zip(a, b, strict=True))
+
+    assert same(ours, truth)
+    heavier = codourey(qd, qdd, g, m_arm=2 + Rational(1, 100), radial=radial)[4]
+    assert not same(ours, heavier)
+    # at a symbolic height the roots sit beside a symbol (SymPy's expression domain, its
+    # eliminations uninterruptible): refused by the budget at once, not run for minutes
+    z = symbols("z", real=True)
+    high = Mechanism(delta_at([0, 0, z], radial), base="base")
+    with pytest.raises(ValueError, match="actuation_condition: the exact arithmetic needs more"):
+        high.actuation_condition([0, 7, 14])
+    # the gallery's Delta (plot.models.delta) at its home pose x = y = 0, z = -3, the arms at
+    # pi/4 (sqrt(2) and sqrt(3) in its geometry): decided within the budget, and True is
+    # right: in floats the passive joints' columns of the network matrix (every joint a
+    # revolute, one column each) have full rank, their least singular value far from zero
+    from sympy import pi
+
+    from screwsym.plot.models import delta
+
+    d = delta()
+    home = d.mechanism.subs(dict(zip(d.variables, [0, 0, -3, pi / 4, pi / 4, pi / 4],
+                                     strict=True)))
+    assert home.actuation_condition([0, 7, 14], budget=2_000_000) is true
+    A = np.array(home.network_matrix().evalf(20).tolist(), dtype=float)
+    passive = np.delete(A, [0, 7, 14], axis=1)
+    smallest = np.linalg.svd(passive, compute_uv=False)[-1]
+    assert passive.shape[1] == 18 and smallest > 1e-3 * np.linalg.norm(A, 2)
