@@ -30,13 +30,13 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Any, NamedTuple
 
-from sympy import Dummy, ImmutableMatrix, Matrix, Symbol
+from sympy import Dummy, ImmutableMatrix, Matrix
 
 from ..algebra.budget import BUDGET
 from ..codegen import lambdify
 from ..core.checks import check_choice, check_count, check_sequence, check_vector
 from ._batch import shaped
-from .loop_program import loop_dynamics_program
+from .loop_program import _check_symbols, loop_dynamics_program
 
 __all__ = ["LoopDynamicsFunctions", "loop_dynamics_functions"]
 
@@ -147,12 +147,7 @@ def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
         raise ValueError("mech: the mechanism has no inertias; build it with "
                          "Mechanism(..., inertias={link: SpatialInertia(...)})")
     acts = check_sequence(actuated, "actuated", "joint numbers")
-    syms = check_sequence(symbols, "symbols", "symbols")
-    for i, s in enumerate(syms):
-        if not isinstance(s, Symbol):
-            raise TypeError(f"symbols[{i}]: expected a Symbol, got {s!r}")
-    if len(set(syms)) != len(syms):
-        raise ValueError("symbols: a symbol is given twice")
+    syms = _check_symbols(symbols)
     g = check_vector(gravity, "gravity")
     if g.free_symbols:
         raise ValueError(f"gravity: expected numbers, got {list(g)}")

@@ -185,6 +185,23 @@ class LoopProgram(Program):
 
 
 # ---------------------------------------------------------------- writing
+def _check_symbols(symbols: Any) -> list:
+    """``symbols`` as a list of distinct ``Symbol``: a ``TypeError`` or ``ValueError`` naming
+    the entry otherwise (shared with :func:`~screwsym.numeric.loop_dynamics.loop_dynamics_functions`).
+
+    >>> from sympy import symbols
+    >>> _check_symbols(symbols("x y"))
+    [x, y]
+    """
+    syms = list(check_sequence(symbols, "symbols", "symbols"))
+    for i, s in enumerate(syms):
+        if not isinstance(s, Symbol):
+            raise TypeError(f"symbols[{i}]: expected a Symbol, got {s!r}")
+    if len(set(syms)) != len(syms):
+        raise ValueError("symbols: a symbol is given twice")
+    return syms
+
+
 class _Writer:
     """Appends assignments; a number, a symbol, its negative or a right-hand side seen before
     is not assigned again."""
@@ -789,12 +806,7 @@ def loop_dynamics_program(mech: Any, actuated: Any, symbols: Any,
             raise ValueError(f"actuated[{i}]: expected a joint number 0..{len(mech.joints) - 1}, "
                              f"got {a}")
         out.append(int(a))
-    syms = check_sequence(symbols, "symbols", "symbols")
-    for i, s in enumerate(syms):
-        if not isinstance(s, Symbol):
-            raise TypeError(f"symbols[{i}]: expected a Symbol, got {s!r}")
-    if len(set(syms)) != len(syms):
-        raise ValueError("symbols: a symbol is given twice")
+    syms = _check_symbols(symbols)
     g = check_vector((0, 0, -S(981) / 100) if gravity is None else gravity, "gravity")
     free: set = set()
     for _, _, j in mech.joints:
