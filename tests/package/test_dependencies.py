@@ -1,6 +1,6 @@
 """The dependency floor that pyproject declares is the one CI tests.
 
-``.ci/run`` ends with a run of the whole suite in a fresh environment holding
+``.ci/run`` ends with a run of the default suite (the tests not marked slow) in a fresh environment holding
 exactly the floors (``sympy==SYMPY_MIN``, ``numpy==NUMPY_MIN``, Python 3.10 where
 available); these tests keep its pins and pyproject's ``dependencies`` equal, so
 that raising or lowering one without the other fails.
