@@ -30,7 +30,9 @@ from __future__ import annotations
 
 import argparse
 import multiprocessing as mp
+import sys
 import time
+from pathlib import Path
 
 from sympy import Rational, expand, groebner, solve_poly_system, symbols
 
@@ -47,19 +49,13 @@ OCTA_PLATFORM = [B3[0], B3[0], B3[1], B3[1], B3[2], B3[2]]
 OCTA_LENGTHS = [5] * 6
 
 
-DIET_A = [(0, 0, 0), ("1.107915", 0, 0), ("0.549094", "0.756063", 0),
-          ("0.735077", "-0.223935", "0.525991"), ("0.514188", "-0.526063", "-0.368418"),
-          ("0.590473", "0.094733", "-0.205018")]
-DIET_B = [(0, 0, 0), ("0.542805", 0, 0), ("0.956919", "-0.528915", 0),
-          ("0.665885", "-0.353482", "1.402538"), ("0.478359", "1.158742", "0.107672"),
-          ("-0.137087", "-0.235121", "0.353913")]
-DIET_L = ["1", "0.645275", "1.086284", "1.503439", "1.281933", "0.771071"]
-
-
 def dietmaier():
-    A = [tuple(Rational(v) for v in p) for p in DIET_A]
-    B = [tuple(Rational(v) for v in p) for p in DIET_B]
-    return A, B, [Rational(v) for v in DIET_L]
+    """Dietmaier's (1998) platform as the tests hold it (tests/systems/test_assembly.py, with
+    its source: PHCpack's demo src/Demo/stewgou40): base points, platform points, lengths."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "systems"))
+    from test_assembly import dietmaier_input
+
+    return dietmaier_input()
 
 
 def best(fn, repeat: int) -> tuple[float, object]:

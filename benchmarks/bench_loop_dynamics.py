@@ -226,26 +226,9 @@ def symbolic_part(skip_z):
 
 def pinocchio_fourbar():
     import pinocchio as pin
-    from test_loop_dynamics import A0, B0, FOURBAR_BODIES, D, O
+    from test_loop_dynamics import pinocchio_fourbar as build
 
-    model = pin.Model()
-    pts = [np.array([float(p[0]), float(p[1]), 0.0]) for p in (O, A0, B0, D)]
-    parent, prev = 0, np.zeros(3)
-    for k, (name, m, c, I) in enumerate(FOURBAR_BODIES):
-        jid = model.addJoint(parent, pin.JointModelRZ(), pin.SE3(np.eye(3), pts[k] - prev), name)
-        com = np.array([float(c[0]), float(c[1]), 0.0]) - pts[k]
-        model.appendBodyToJoint(jid, pin.Inertia(float(m), com, np.array(I.tolist(), dtype=float)),
-                                pin.SE3.Identity())
-        parent, prev = jid, pts[k]
-    model.gravity.linear = np.array([0, -9.81, 0])
-    data = model.createData()
-    cm = pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, model, 3,
-                                  pin.SE3(np.eye(3), pts[3] - pts[2]), 0,
-                                  pin.SE3(np.eye(3), pts[3]), pin.ReferenceFrame.LOCAL)
-    cms, cds = pin.StdVec_RigidConstraintModel(), pin.StdVec_RigidConstraintData()
-    cms.append(cm)
-    cds.append(cm.createData())
-    pin.initConstraintDynamics(model, data, cms, cds)
+    model, data, cms, cds = build(pin)
     prox = pin.ProximalSettings(1e-12, 1e-10, 100)
     return pin, model, data, cms, cds, prox
 

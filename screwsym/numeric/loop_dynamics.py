@@ -36,7 +36,7 @@ from ..algebra.budget import BUDGET
 from ..codegen import lambdify
 from ..core.checks import check_choice, check_count, check_sequence, check_vector
 from ._batch import shaped
-from .loop_program import _check_symbols, loop_dynamics_program
+from .loop_program import _check_covered, _check_mechanism, _check_symbols, loop_dynamics_program
 
 __all__ = ["LoopDynamicsFunctions", "loop_dynamics_functions"]
 
@@ -139,32 +139,14 @@ def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
     >>> fc.tau
     Matrix([[2*_qdd0 + 20*cos(t)]])
     """
-    from ..systems.linkage import Mechanism
-
-    if not isinstance(mech, Mechanism):
-        raise TypeError(f"mech: expected a Mechanism, got {type(mech).__name__}")
-    if not mech.inertia_pairs:
-        raise ValueError("mech: the mechanism has no inertias; build it with "
-                         "Mechanism(..., inertias={link: SpatialInertia(...)})")
+    _check_mechanism(mech)
     acts = check_sequence(actuated, "actuated", "joint numbers")
     syms = _check_symbols(symbols)
     g = check_vector(gravity, "gravity")
     if g.free_symbols:
         raise ValueError(f"gravity: expected numbers, got {list(g)}")
-    missing = _free_symbols(mech) - set(syms)
-    if missing:
-        raise ValueError("symbols: the mechanism's configuration has the symbols "
-                         f"{sorted(map(str, missing))} not among them")
+    _check_covered(mech, syms)
     form = check_choice(form, "form", FORMS)
     return _functions(mech, tuple(int(a) if isinstance(a, int) else a for a in acts),
                       tuple(syms), ImmutableMatrix(g), backend, check_count(budget, "budget"),
                       form)
-
-
-def _free_symbols(mech: Any) -> set:
-    out: set = set()
-    for _, _, j in mech.joints:
-        out |= j.free_symbols
-    for p in mech.inertia_pairs:
-        out |= p.args[1].free_symbols
-    return out

@@ -202,13 +202,11 @@ def test_fourbar_inverse_dynamics_matches_the_lagrangian():
     assert not agrees(list(heavier), truth)
 
 
-def test_fourbar_against_pinocchios_constrained_dynamics():
-    """pinocchio's ``constraintDynamics`` (Carpentier et al., RSS 2021, the proximal
-    constrained dynamics) on the same four-bar: an open chain of three revolutes whose rocker
-    point D is held at D by a 3D point constraint.  Driven by our crank torque, at our joint
-    rates, it gives our joint accelerations (float precision); a torque off by 1e-6 does not."""
-    pin = pytest.importorskip("pinocchio")
-    mech = fourbar()
+def pinocchio_fourbar(pin):
+    """The four-bar of :func:`fourbar` in pinocchio (also benchmarks/bench_loop_dynamics.py):
+    an open chain of three revolutes about z whose rocker point D is held at D by a 3D point
+    constraint; ``(model, data, constraint models, constraint datas)``, initialised for
+    ``constraintDynamics``, gravity ``-9.81`` along y."""
     model = pin.Model()
     pts = [np.array([float(p[0]), float(p[1]), 0.0]) for p in (O, A0, B0, D)]
     parent, prev = 0, np.zeros(3)
@@ -227,6 +225,17 @@ def test_fourbar_against_pinocchios_constrained_dynamics():
     cms.append(cm)
     cds.append(cm.createData())
     pin.initConstraintDynamics(model, data, cms, cds)
+    return model, data, cms, cds
+
+
+def test_fourbar_against_pinocchios_constrained_dynamics():
+    """pinocchio's ``constraintDynamics`` (Carpentier et al., RSS 2021, the proximal
+    constrained dynamics) on the same four-bar: an open chain of three revolutes whose rocker
+    point D is held at D by a 3D point constraint.  Driven by our crank torque, at our joint
+    rates, it gives our joint accelerations (float precision); a torque off by 1e-6 does not."""
+    pin = pytest.importorskip("pinocchio")
+    mech = fourbar()
+    model, data, cms, cds = pinocchio_fourbar(pin)
     qd, qdd = Rational(3, 2), Rational(-2, 3)
     v = np.array([float(x) for x in mech.joint_rates([0], [qd])[:3]])
     tau = float(mech.inverse_dynamics([0], [qd], [qdd], [0, Rational(-981, 100), 0])[0])
@@ -883,15 +892,21 @@ def test_actuation_singularity_is_a_clear_error():
         mech.mass_matrix([0, 3])
 
 
+def fourbar_at(x, y):
+    """The four-bar of the docstrings (point masses 1 at the crank pin ``(1, 2, 0)`` and 2 at
+    the rocker's pin) with its coupler-rocker joint at ``(x, y)``."""
+    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
+             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
+    return Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
+                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
+                     base="ground", inertias=inert)
+
+
 def test_symbolic_configuration_gives_the_generic_result_and_its_condition():
     """The coupler joint at (x, y): the result holds where the coupler and rocker are not in
     line; ``conds="piecewise"`` says so; numbers put in agree with the numeric mechanism."""
     x, y = symbols("x y", real=True)
-    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
-    mech = Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
-                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
-                     base="ground", inertias=inert)
+    mech = fourbar_at(x, y)
     cond = mech.actuation_condition([0])
     # (5/2, 1) lies on the line from the crank pin (1, 2) to the rocker pivot (4, 0)
     assert cond is not true and cond.subs({x: Rational(5, 2), y: 1}) == false_()
@@ -917,11 +932,7 @@ def test_platform_coordinates_symbolic_and_bad_input():
     agree with the numeric four-bar of the docstring (``J = -7/5``, ``Lambda = 17``).
     Coordinates that miss the motion, bad names and half a state are refused clearly."""
     x, y = symbols("x y", real=True)
-    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
-    mech = Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
-                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
-                     base="ground", inertias=inert)
+    mech = fourbar_at(x, y)
     pd = mech.platform_dynamics([0], platform="coupler")
     assert pd.coordinates == ("wz",)
     assert pd.jacobian.subs({x: 3, y: 3}) == Matrix([[Rational(-7, 5)]])
@@ -1241,11 +1252,7 @@ def test_joint_reactions_piecewise_with_symbols():
     ``(x, y)`` hold where the crank drives it (``nan`` where coupler and rocker are in line),
     as columns in ray order; numbers put in give the numeric four-bar's wrenches."""
     x, y = symbols("x y", real=True)
-    inert = {"crank": SpatialInertia.point_mass(1, [1, 2, 0]),
-             "rocker": SpatialInertia.point_mass(2, [x, y, 0])}
-    mech = Mechanism([("ground", "crank", R([0, 0, 0], Z)), ("crank", "coupler", R([1, 2, 0], Z)),
-                      ("coupler", "rocker", R([x, y, 0], Z)), ("rocker", "ground", R([4, 0, 0], Z))],
-                     base="ground", inertias=inert)
+    mech = fourbar_at(x, y)
     pw = mech.joint_reactions([0], [0], [0], [0, -10, 0], conds="piecewise")
     assert all(c.shape == (6, 1) for c in pw)
     assert any(isinstance(e, Piecewise) for e in pw[0])
