@@ -36,7 +36,8 @@ from ..algebra.budget import BUDGET
 from ..codegen import lambdify
 from ..core.checks import check_choice, check_count, check_sequence, check_vector
 from ._batch import shaped
-from .loop_program import _check_covered, _check_mechanism, _check_symbols, loop_dynamics_program
+from ._loop_input import check_covered, check_mechanism, check_symbols
+from .loop_program import loop_dynamics_program
 
 __all__ = ["LoopDynamicsFunctions", "loop_dynamics_functions"]
 
@@ -139,13 +140,13 @@ def loop_dynamics_functions(mech: Any, actuated: Any, symbols: Any,
     >>> fc.tau
     Matrix([[2*_qdd0 + 20*cos(t)]])
     """
-    _check_mechanism(mech)
+    check_mechanism(mech)
     acts = check_sequence(actuated, "actuated", "joint numbers")
-    syms = _check_symbols(symbols)
+    syms = check_symbols(symbols)
     g = check_vector(gravity, "gravity")
     if g.free_symbols:
         raise ValueError(f"gravity: expected numbers, got {list(g)}")
-    _check_covered(mech, syms)
+    check_covered(mech, syms)
     form = check_choice(form, "form", FORMS)
     return _functions(mech, tuple(int(a) if isinstance(a, int) else a for a in acts),
                       tuple(syms), ImmutableMatrix(g), backend, check_count(budget, "budget"),

@@ -110,6 +110,7 @@ from ..core.checks import check_choice, check_count, check_scalar, check_sequenc
 from ..core.formulas import bracket
 from ..motion.newton_euler import Program
 from ..systems.topology import bare_network, spanning_tree
+from ._loop_input import check_covered, check_mechanism, check_symbols
 
 __all__ = ["LoopProgram", "loop_dynamics_program"]
 
@@ -185,50 +186,6 @@ class LoopProgram(Program):
 
 
 # ---------------------------------------------------------------- writing
-def _check_mechanism(mech: Any) -> None:
-    """``mech`` a :class:`~screwsym.systems.linkage.Mechanism` with inertias, or a clear
-    ``TypeError``/``ValueError`` (shared with
-    :func:`~screwsym.numeric.loop_dynamics.loop_dynamics_functions`)."""
-    from ..systems.linkage import Mechanism
-
-    if not isinstance(mech, Mechanism):
-        raise TypeError(f"mech: expected a Mechanism, got {type(mech).__name__}")
-    if not mech.inertia_pairs:
-        raise ValueError("mech: the mechanism has no inertias; build it with "
-                         "Mechanism(..., inertias={link: SpatialInertia(...)})")
-
-
-def _check_symbols(symbols: Any) -> list:
-    """``symbols`` as a list of distinct ``Symbol``: a ``TypeError`` or ``ValueError`` naming
-    the entry otherwise (shared with :func:`~screwsym.numeric.loop_dynamics.loop_dynamics_functions`).
-
-    >>> from sympy import symbols
-    >>> _check_symbols(symbols("x y"))
-    [x, y]
-    """
-    syms = list(check_sequence(symbols, "symbols", "symbols"))
-    for i, s in enumerate(syms):
-        if not isinstance(s, Symbol):
-            raise TypeError(f"symbols[{i}]: expected a Symbol, got {s!r}")
-    if len(set(syms)) != len(syms):
-        raise ValueError("symbols: a symbol is given twice")
-    return syms
-
-
-def _check_covered(mech: Any, syms: list, also: Any = frozenset()) -> None:
-    """A ``ValueError`` naming the symbols of ``mech``'s joints and inertias (and of
-    ``also``) that are not among ``syms``."""
-    free: set = set(also)
-    for _, _, j in mech.joints:
-        free |= j.free_symbols
-    for p in mech.inertia_pairs:
-        free |= p.args[1].free_symbols
-    missing = free - set(syms)
-    if missing:
-        raise ValueError("symbols: the mechanism's configuration has the symbols "
-                         f"{sorted(map(str, missing))} not among them")
-
-
 class _Writer:
     """Appends assignments; a number, a symbol, its negative or a right-hand side seen before
     is not assigned again."""
@@ -816,7 +773,7 @@ def loop_dynamics_program(mech: Any, actuated: Any, symbols: Any,
 
     screwsym.motion.newton_euler.dynamics_program, screwsym.numeric.loop_dynamics_functions
     """
-    _check_mechanism(mech)
+    check_mechanism(mech)
     what = check_choice(what, "what", WHATS)
     acts = check_sequence(actuated, "actuated", "joint numbers")
     out = []
@@ -827,9 +784,9 @@ def loop_dynamics_program(mech: Any, actuated: Any, symbols: Any,
             raise ValueError(f"actuated[{i}]: expected a joint number 0..{len(mech.joints) - 1}, "
                              f"got {a}")
         out.append(int(a))
-    syms = _check_symbols(symbols)
+    syms = check_symbols(symbols)
     g = check_vector((0, 0, -S(981) / 100) if gravity is None else gravity, "gravity")
-    _check_covered(mech, syms, g.free_symbols)
+    check_covered(mech, syms, g.free_symbols)
     budget = check_count(budget, "budget")
     spanning_tree(mech)  # a disconnected mechanism is refused here, with its message
     if at is not None:
